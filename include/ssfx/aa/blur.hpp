@@ -1,0 +1,21 @@
+// blur: 3x3 truncated Gaussian, the baseline of the DDAA paper (Klein, section 3.1; spec
+// ppaa.md "blur"). Speed reports normalise to it (blur = 100).
+#pragma once
+
+#include "ssfx/core/image.hpp"
+#include "ssfx/core/parallel.hpp"
+
+namespace ssfx::aa {
+
+struct BlurParams {
+    float sigma = 0.6f;  //!< Gaussian sigma in pixels, (0.05, 10]; 0.6 gives w1 = 0.2493522
+};
+
+//! Blurs RGB; alpha is copied from the centre pixel. Clamp-to-edge at the borders.
+ImageRgba8 blur(ImageView<const Rgba8> in, const BlurParams& params = {}, const Exec& exec = {});
+//! Writes into `out` (same size as `in`, must not alias it).
+void blur(ImageView<const Rgba8> in, ImageView<Rgba8> out, const BlurParams& params = {}, const Exec& exec = {});
+//! Scalar oracle: one pixel at a time, single-threaded.
+ImageRgba8 blurReference(ImageView<const Rgba8> in, const BlurParams& params = {});
+
+}  // namespace ssfx::aa

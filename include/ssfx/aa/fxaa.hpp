@@ -1,0 +1,44 @@
+// FXAA 3.11 (T. Lottes, NVIDIA 2009/2011), the two variants the DDAA paper compares with:
+// fxaa3c ("console", no edge search) and fxaa3d ("desktop"/quality, edge search with
+// 12 iterations). Semantics: spec ppaa.md section 2, which fixes the details of the
+// shaders used for the paper's numbers.
+#pragma once
+
+#include "ssfx/aa/presets.hpp"
+#include "ssfx/core/image.hpp"
+#include "ssfx/core/parallel.hpp"
+#include "ssfx/core/sample.hpp"
+
+namespace ssfx::aa {
+
+struct Fxaa3cParams {
+    float edgeThresholdMin = 0.0625f;  //!< [0, 1] absolute luma contrast needed (preset "medium")
+    float edgeThreshold = 0.166f;      //!< [0, 1] contrast relative to the local max luma
+    float edgeSharpness = 8.0f;        //!< [1, 64] FXAA console sharpness: limits the long taps
+    float diagonalOffset = 1.0f;       //!< (0, 2] px; 1 as in the DDAA paper, 0.5 in Lottes' shader
+    Filtering filtering = Filtering::Gpu;
+};
+
+struct Fxaa3dParams {
+    float edgeThresholdMin = 0.0625f;  //!< [0, 1] absolute luma contrast needed (preset "medium")
+    float edgeThreshold = 0.166f;      //!< [0, 1] contrast relative to the local max luma
+    float subpix = 0.75f;              //!< [0, 1] FXAA's sub-pixel aliasing removal amount
+    //! The shader of the paper's comparison steps back one pixel on side 2 after its first
+    //! read (spec ppaa.md fxaa3d step 4). true reproduces the paper; false gives FXAA 3.11
+    //! as Lottes wrote it.
+    bool paperSearchQuirk = true;
+    Filtering filtering = Filtering::Gpu;
+};
+
+Fxaa3cParams fxaa3cParamsFor(Preset p);
+Fxaa3dParams fxaa3dParamsFor(Preset p);
+
+ImageRgba8 fxaa3c(ImageView<const Rgba8> in, const Fxaa3cParams& params = {}, const Exec& exec = {});
+void fxaa3c(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Fxaa3cParams& params = {}, const Exec& exec = {});
+ImageRgba8 fxaa3cReference(ImageView<const Rgba8> in, const Fxaa3cParams& params = {});
+
+ImageRgba8 fxaa3d(ImageView<const Rgba8> in, const Fxaa3dParams& params = {}, const Exec& exec = {});
+void fxaa3d(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Fxaa3dParams& params = {}, const Exec& exec = {});
+ImageRgba8 fxaa3dReference(ImageView<const Rgba8> in, const Fxaa3dParams& params = {});
+
+}  // namespace ssfx::aa

@@ -1,0 +1,38 @@
+// Supersampling resolve and resampling with the Mitchell-Netravali cubic (D. Mitchell and
+// A. Netravali, "Reconstruction Filters in Computer Graphics", SIGGRAPH 1988), evaluated the
+// way the DDAA paper's reference shaders do (spec ppaa.md, "ssaax2, ssaax4" and "Upsampling").
+#pragma once
+
+#include "ssfx/core/image.hpp"
+#include "ssfx/core/parallel.hpp"
+#include "ssfx/core/sample.hpp"
+
+namespace ssfx::aa {
+
+struct MitchellParams {
+    float B = 1.0f / 3.0f;  //!< [0, 1] Mitchell-Netravali B (blur); 1/3 is their recommendation
+    float C = 1.0f / 3.0f;  //!< [0, 1] Mitchell-Netravali C (ringing)
+};
+
+//! The 1-D Mitchell-Netravali kernel k(t) (support |t| < 2).
+float mitchell(float t, float B, float C);
+
+//! ssaax2: the 12-tap bilinear resolve of a 2x image (even sizes) to half its size.
+//! Its tap positions and weights are fixed for B = C = 1/3 (spec), so it takes no params.
+ImageRgba8 ssaax2(ImageView<const Rgba8> in2x, Filtering filtering = Filtering::Gpu, const Exec& exec = {});
+//! ssaax4: direct-tap Mitchell resolve of a 4x image (sizes divisible by 4).
+ImageRgba8 ssaax4(ImageView<const Rgba8> in4x, const MitchellParams& params = {}, const Exec& exec = {});
+
+//! Mitchell resampling by an integer factor: factor > 1 shrinks (`in` size divisible by
+//! factor), factor < -1 magnifies by -factor (e.g. -8 is the evaluation's x8 upscale).
+//! Direct taps at texel centres, clamp-to-edge (spec "x4 and other factors").
+ImageRgba8 resampleMitchell(ImageView<const Rgba8> in, int factor, const MitchellParams& params = {},
+                            const Exec& exec = {});
+//! Convenience: magnify by an integer factor >= 1.
+ImageRgba8 upscaleMitchell(ImageView<const Rgba8> in, int factor, const MitchellParams& params = {},
+                           const Exec& exec = {});
+//! Convenience: shrink by an integer factor >= 1.
+ImageRgba8 downscaleMitchell(ImageView<const Rgba8> in, int factor, const MitchellParams& params = {},
+                             const Exec& exec = {});
+
+}  // namespace ssfx::aa

@@ -1,0 +1,32 @@
+// Luma and 8-bit quantisation shared by the anti-aliasing methods (spec ppaa.md section 1).
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+
+#include "ssfx/core/image.hpp"
+#include "ssfx/core/sample.hpp"
+
+namespace ssfx {
+
+//! Perceptual luma of the PPAA methods: sqrt(0.299 r + 0.587 g + 0.114 b) on unorm values
+//! (Rec. 601 weights; the square root approximates lightness). Evaluated left to right in
+//! float32 without fused multiply-add, as the reference shaders are.
+inline float luma(float r, float g, float b) {
+    return std::sqrt(0.299f * r + 0.587f * g + 0.114f * b);
+}
+inline float luma(const Rgb& c) { return luma(c.r, c.g, c.b); }
+
+//! Float in [0, 1] (clamped; NaN gives 0) to the nearest 8-bit level. The product v * 255
+//! is rounded exactly (in double, where it is exact), not after a float32 rounding: GPUs
+//! convert this way, and a float32 product turns values just below k + 0.5 into ties.
+inline std::uint8_t toUnorm8(float v) {
+    if (!(v > 0.0f)) return 0;
+    if (v >= 1.0f) return 255;
+    return static_cast<std::uint8_t>(double(v) * 255.0 + 0.5);
+}
+
+//! Luma plane of an RGBA8 image (one float per pixel; reads at pixel centres become lookups).
+ImageF lumaPlane(ImageView<const Rgba8> image);
+
+}  // namespace ssfx

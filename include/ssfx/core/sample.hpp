@@ -1,0 +1,108 @@
+// Texture reads with clamp-to-edge addressing, as a GPU sampler does them.
+//
+// Coordinates are texture coordinates in [0, 1]: pixel (x, y) has its centre at
+// ((x + 0.5) / W, (y + 0.5) / H) (spec ppaa.md section 1). A read may add an *integer texel
+// offset* (the GPU's sample-with-offset), which is added to the texel index after the floor.
+//
+// Two filtering models:
+//  - Filtering::Gpu (default): the filter unit of real GPUs. The texel-space position
+//    u * W - 0.5 (float32) is split into floor and fraction; the fraction is rounded to the
+//    nearest 1/256 (8 sub-texel bits; it may round up to 1); the four 8-bit texels are
+//    weighted exactly and the sum is rounded half-up to 1/16 of an 8-bit level, so every
+//    channel is k / (255 * 16) for an integer k. Exact in integer arithmetic; it reproduces
+//    the reference GPU outputs bit for bit (spec ppaa.md, "GPU sampling model").
+//  - Filtering::Exact: float32 bilinear interpolation with the unrounded fraction.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+
+#include "ssfx/core/image.hpp"
+
+namespace ssfx {
+
+enum class Filtering : std::uint8_t {
+    Gpu,    //!< 8-bit sub-texel weights, 1/16-level results (default; matches GPUs)
+    Exact,  //!< float32 bilinear weights, no quantisation
+};
+
+namespace detail {
+constexpr std::array<float, 256> makeUnormTable() {
+    std::array<float, 256> t{};
+    for (int i = 0; i < 256; ++i) t[i] = static_cast<float>(i) / 255.0f;
+    return t;
+}
+}  // namespace detail
+
+//! 8-bit unorm to float: v / 255 rounded to float32 (what a GPU returns for rgba8unorm).
+inline constexpr std::array<float, 256> kUnorm8 = detail::makeUnormTable();
+
+struct Rgb {
+    float r = 0, g = 0, b = 0;
+};
+
+//! An RGBA8 image seen as a texture (RGB channels; alpha is never filtered in ssfx).
+class Texture {
+public:
+    Texture(ImageView<const Rgba8> image, Filtering filtering)
+        : img_(image),
+          w_(image.width()),
+          h_(image.height()),
+          fw_(static_cast<float>(image.width())),
+          fh_(static_cast<float>(image.height())),
+          invW_(1.0f / static_cast<float>(image.width())),
+          invH_(1.0f / static_cast<float>(image.height())),
+          filtering_(filtering) {}
+
+    int width() const { return w_; }
+    int height() const { return h_; }
+    //! 1/W and 1/H rounded to float32 once (spec: offsets are added as `u + d * (1/W)`).
+    float invW() const { return invW_; }
+    float invH() const { return invH_; }
+    Filtering filtering() const { return filtering_; }
+    ImageView<const Rgba8> image() const { return img_; }
+
+    //! Texture coordinate of pixel x's centre: (x + 0.5) / W in float32.
+    float centreU(int x) const { return (static_cast<float>(x) + 0.5f) / fw_; }
+    float centreV(int y) const { return (static_cast<float>(y) + 0.5f) / fh_; }
+
+    //! Exact texel value with clamp-to-edge (a read at a pixel centre).
+    Rgb texel(int x, int y) const {
+        const Rgba8 p = img_.clamped(x, y);
+        return {kUnorm8[p.r], kUnorm8[p.g], kUnorm8[p.b]};
+    }
+
+    //! Bilinear read at texture coordinate (u, v) plus an integer texel offset (ox, oy).
+    Rgb sample(float u, float v, int ox = 0, int oy = 0) const {
+        return filtering_ == Filtering::Gpu ? sampleGpu(u, v, ox, oy) : sampleExact(u, v, ox, oy);
+    }
+
+private:
+    struct Axis {
+        int i0, i1;  // clamped texel indices
+        float frac;  // exact fraction (Exact model)
+        int w;       // fraction in 1/256 steps, 0..256 (Gpu model)
+    };
+    static Axis axis(float coord, float size, int n, int offset) {
+        const float t = coord * size - 0.5f;
+        const float fl = std::floor(t);
+        // Clamp before converting: coordinates far outside the texture read the edge anyway.
+        const float flc = fl < -4.0f ? -4.0f : (fl > static_cast<float>(n) + 4.0f ? static_cast<float>(n) + 4.0f : fl);
+        const int i = static_cast<int>(flc) + offset;
+        const float frac = t - fl;
+        const int w = static_cast<int>(frac * 256.0f + 0.5f);  // round half up to 1/256
+        const int i0 = i < 0 ? 0 : (i >= n ? n - 1 : i);
+        const int i1 = i + 1 < 0 ? 0 : (i + 1 >= n ? n - 1 : i + 1);
+        return {i0, i1, frac, w};
+    }
+    Rgb sampleGpu(float u, float v, int ox, int oy) const;
+    Rgb sampleExact(float u, float v, int ox, int oy) const;
+
+    ImageView<const Rgba8> img_;
+    int w_, h_;
+    float fw_, fh_, invW_, invH_;
+    Filtering filtering_;
+};
+
+}  // namespace ssfx

@@ -1,0 +1,59 @@
+// The explicit method registry (STYLE.md section 2): one table in src/registry.cpp lists
+// every method with its stable id, parameters and run functions. The CLI, benchmarks,
+// evaluation and property tests iterate methods(); --help text is generated from ParamInfo.
+#pragma once
+
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "ssfx/aa/presets.hpp"
+#include "ssfx/core/image.hpp"
+#include "ssfx/core/parallel.hpp"
+#include "ssfx/core/sample.hpp"
+
+namespace ssfx {
+
+enum class ParamKind { Float, Int, Bool };
+
+struct ParamInfo {
+    std::string_view name;  //!< as in the params struct (paper's names)
+    std::string_view unit;
+    double defaultValue;
+    double min, max;  //!< allowed range, inclusive (values outside are rejected)
+    ParamKind kind;
+    std::string_view doc;
+};
+
+//! How a method is configured at run time: a preset (threshold methods), then named overrides.
+struct MethodSettings {
+    std::optional<aa::Preset> preset;
+    std::vector<std::pair<std::string, double>> params;  //!< name -> value, applied in order
+    Filtering filtering = Filtering::Gpu;
+};
+
+using RunFn = ImageRgba8 (*)(ImageView<const Rgba8> input, const MethodSettings& settings, const Exec& exec);
+
+struct MethodInfo {
+    std::string_view id;        //!< stable public name (CLI, files, reports, spec)
+    std::string_view family;    //!< "ppaa", "resolve", ...
+    std::string_view summary;   //!< one line
+    std::string_view citation;  //!< paper and section
+    std::span<const ParamInfo> params;
+    bool usesPresets;  //!< accepts the edge-threshold presets
+    //! The input is the scene rendered at this scale (1; 2 for ssaax2/ddaa2p; 4 for ssaax4);
+    //! the output is always at scale 1.
+    int inputScale;
+    RunFn run;        //!< the fast path (SIMD, threads)
+    RunFn reference;  //!< the scalar oracle (ignores Exec)
+};
+
+std::span<const MethodInfo> methods();
+const MethodInfo* findMethod(std::string_view id);
+//! Like findMethod, but throws ssfx::Error listing the known ids.
+const MethodInfo& methodById(std::string_view id);
+
+}  // namespace ssfx

@@ -1,0 +1,51 @@
+// blur: 3x3 truncated Gaussian (DDAA paper section 3.1, the "poor result" baseline and the
+// speed baseline: every timing is reported relative to it). Spec ppaa.md "blur".
+#include "ssfx/aa/blur.hpp"
+
+#include <cmath>
+
+#include "blur_kernel.hpp"
+#include "ppaa_common.hpp"
+
+namespace ssfx::aa {
+
+namespace detail {
+
+BlurWeights blurWeights(const BlurParams& p) {
+    checkParam("blur", "sigma", p.sigma, 0.05, 10.0);
+    BlurWeights w;
+    w.w1 = std::exp(-1.0f / (2.0f * p.sigma * p.sigma));  // sigma 0.6: 0.2493522
+    w.w2 = w.w1 * w.w1;
+    // Normalisation by multiplying with the reciprocal of the weight sum (spec).
+    w.norm = 1.0f / (1.0f + 4.0f * w.w1 + 4.0f * w.w2);
+    return w;
+}
+
+}  // namespace detail
+
+ImageRgba8 blurReference(ImageView<const Rgba8> in, const BlurParams& params) {
+    detail::checkInput("blur", in);
+    const detail::BlurWeights w = detail::blurWeights(params);
+    ImageRgba8 out(in.width(), in.height());
+    for (int y = 0; y < in.height(); ++y)
+        for (int x = 0; x < in.width(); ++x) out(x, y) = detail::blurPixel(in, x, y, w);
+    return out;
+}
+
+void blur(ImageView<const Rgba8> in, ImageView<Rgba8> out, const BlurParams& params, const Exec& exec) {
+    detail::checkInput("blur", in);
+    detail::checkOutput("blur", in, out);
+    const detail::BlurWeights w = detail::blurWeights(params);
+    parallelRows(in.height(), exec, [&](int y0, int y1) {
+        for (int y = y0; y < y1; ++y) detail::blurRow(in, out, y, w);
+    });
+}
+
+ImageRgba8 blur(ImageView<const Rgba8> in, const BlurParams& params, const Exec& exec) {
+    detail::checkInput("blur", in);
+    ImageRgba8 out(in.width(), in.height());
+    blur(in, out.view(), params, exec);
+    return out;
+}
+
+}  // namespace ssfx::aa

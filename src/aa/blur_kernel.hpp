@@ -1,0 +1,41 @@
+// The blur's per-pixel formula, shared by the scalar reference and the SIMD row kernel's
+// borders. Float operations in one fixed order so that every path gives the same bits.
+#pragma once
+
+#include "ppaa_common.hpp"
+#include "ssfx/aa/blur.hpp"
+
+namespace ssfx::aa::detail {
+
+struct BlurWeights {
+    float w1;    //!< direct neighbours: exp(-1 / (2 sigma^2))
+    float w2;    //!< corners: w1^2
+    float norm;  //!< 1 / (1 + 4 w1 + 4 w2)
+};
+
+BlurWeights blurWeights(const BlurParams& p);
+
+//! Sum order: centre, then the direct neighbours W, E, S, N, then the corners.
+inline float blurChannel(float c, float w, float e, float s, float n, float sw, float se, float nw, float ne,
+                         const BlurWeights& k) {
+    const float direct = ((w + e) + (s + n)) * k.w1;
+    const float corner = ((sw + se) + (nw + ne)) * k.w2;
+    return ((c + direct) + corner) * k.norm;
+}
+
+inline Rgba8 blurPixel(ImageView<const Rgba8> in, int x, int y, const BlurWeights& k) {
+    const Rgba8 c = in(x, y), w = in.clamped(x - 1, y), e = in.clamped(x + 1, y);
+    const Rgba8 s = in.clamped(x, y - 1), n = in.clamped(x, y + 1);
+    const Rgba8 sw = in.clamped(x - 1, y - 1), se = in.clamped(x + 1, y - 1);
+    const Rgba8 nw = in.clamped(x - 1, y + 1), ne = in.clamped(x + 1, y + 1);
+    auto ch = [&](std::uint8_t Rgba8::*m) {
+        return toUnorm8(blurChannel(kUnorm8[c.*m], kUnorm8[w.*m], kUnorm8[e.*m], kUnorm8[s.*m], kUnorm8[n.*m],
+                                    kUnorm8[sw.*m], kUnorm8[se.*m], kUnorm8[nw.*m], kUnorm8[ne.*m], k));
+    };
+    return {ch(&Rgba8::r), ch(&Rgba8::g), ch(&Rgba8::b), c.a};
+}
+
+//! One output row (SIMD in the interior, blurPixel at the borders). In blur_simd.cpp.
+void blurRow(ImageView<const Rgba8> in, ImageView<Rgba8> out, int y, const BlurWeights& k);
+
+}  // namespace ssfx::aa::detail

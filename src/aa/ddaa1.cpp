@@ -1,0 +1,58 @@
+// ddaa1: directional diffusion without edge search (Klein, DDAA, sections 2.1-2.2;
+// spec ppaa.md "ddaa1"). The per-pixel pieces are in ddaa_kernel.hpp, shared with ddaa2.
+#include "ddaa_kernel.hpp"
+#include "luma_driver.hpp"
+#include "ssfx/aa/ddaa.hpp"
+
+namespace ssfx::aa {
+
+namespace detail {
+
+void validateDdaa1(const char* method, const Ddaa1Params& p) {
+    checkParam(method, "edgeThresholdMin", p.edgeThresholdMin, 0.0, 1.0);
+    checkParam(method, "edgeThreshold", p.edgeThreshold, 0.0, 1.0);
+    checkParam(method, "strength", p.strength, 0.0, 100.0);
+    checkParam(method, "maxDiffusion", p.maxDiffusion, 0.0, 1.0);
+    checkParam(method, "ridgeFactor", p.ridgeFactor, 0.0, 1000.0);
+}
+
+namespace {
+void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Ddaa1Params& p, const Exec& exec, bool reference) {
+    checkInput("ddaa1", in);
+    checkOutput("ddaa1", in, out);
+    validateDdaa1("ddaa1", p);
+    const Texture tex(in, p.filtering);
+    const ImageF L = reference ? lumaPlaneReference(in) : lumaPlane(in);
+    runLumaMethod(in, out, L, p.edgeThresholdMin, p.edgeThreshold, exec, reference,
+                  [&](int x, int y, const Luma3x3& n, float) {
+                      const Diffusion d = diffusion(n, edgeSides(n), p);
+                      return diffuse(tex, x, y, d, p.maxDiffusion, 0.0f, 0.0f);
+                  });
+}
+}  // namespace
+}  // namespace detail
+
+Ddaa1Params ddaa1ParamsFor(Preset preset) {
+    Ddaa1Params p;
+    p.edgeThresholdMin = thresholdsFor(preset).edgeThresholdMin;
+    p.edgeThreshold = thresholdsFor(preset).edgeThreshold;
+    return p;
+}
+
+void ddaa1(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Ddaa1Params& p, const Exec& exec) {
+    detail::run(in, out, p, exec, false);
+}
+ImageRgba8 ddaa1(ImageView<const Rgba8> in, const Ddaa1Params& p, const Exec& exec) {
+    detail::checkInput("ddaa1", in);
+    ImageRgba8 out(in.width(), in.height());
+    ddaa1(in, out.view(), p, exec);
+    return out;
+}
+ImageRgba8 ddaa1Reference(ImageView<const Rgba8> in, const Ddaa1Params& p) {
+    detail::checkInput("ddaa1", in);
+    ImageRgba8 out(in.width(), in.height());
+    detail::run(in, out.view(), p, Exec{1}, true);
+    return out;
+}
+
+}  // namespace ssfx::aa

@@ -1,0 +1,144 @@
+// ddaa2: directional diffusion combined with a clean edge search (Klein, DDAA, sections
+// 2.3-2.5; spec ppaa.md "ddaa2"). The diffusion comes from ddaa_kernel.hpp (ddaa1).
+//
+// The edge search walks along the edge half a pixel towards the steeper side, one pixel
+// per step (no skipping, unlike FXAA: skipping misses obstructions and leaves stipples,
+// paper Fig. 7), 3 reads per round ("batched sampling", section 2.5: one texture
+// coordinate plus integer texel offsets, so a GPU issues them together). The first
+// position of each side is computed from lumas already known (section 2.5, last paragraph).
+#include "ddaa_kernel.hpp"
+#include "luma_driver.hpp"
+#include "ssfx/aa/ddaa.hpp"
+
+namespace ssfx::aa {
+
+namespace detail {
+namespace {
+
+constexpr int kBatch = 3;  // samples per round: EDGE_STEP_LIST = [3, 3, 3, 3, 3]
+
+struct SideResult {
+    float distance;  // pixels to the end of the edge (maxDistance + 1 when not found)
+    float delta;     // luma - localAverage at the end (or at the last read)
+};
+
+// Offset across the edge, in pixels (signed: towards the steep side), from the distances
+// to both ends of the edge (FXAA 3.11 quality's span rule, without skipping).
+float edgeSearchOffset(const Texture& tex, int x, int y, const Luma3x3& n, const EdgeSides& s, int rounds) {
+    const bool steep2 = std::fabs(s.g2) > std::fabs(s.g1);  // ties go to side 1
+    const float lumaSteep = steep2 ? s.luma2 : s.luma1;
+    const float gradientScaled = 0.25f * std::fmax(std::fabs(s.g1), std::fabs(s.g2));
+    const float localAverage = (lumaSteep + n.C) * 0.5f;
+    const int across = steep2 ? 1 : -1;
+
+    // First positions, free: the neighbours along the edge and their diagonals on the steep side.
+    float first1, first2;
+    if (s.horizontal) {
+        first1 = (n.W + (steep2 ? n.NW : n.SW)) * 0.5f;
+        first2 = (n.E + (steep2 ? n.NE : n.SE)) * 0.5f;
+    } else {
+        first1 = (n.S + (steep2 ? n.SE : n.SW)) * 0.5f;
+        first2 = (n.N + (steep2 ? n.NE : n.NW)) * 0.5f;
+    }
+
+    // c: centre moved half a pixel across, towards the steep side.
+    float cu = tex.centreU(x), cv = tex.centreV(y);
+    if (s.horizontal)
+        cv += float(across) * 0.5f * tex.invH();
+    else
+        cu += float(across) * 0.5f * tex.invW();
+    const float invAlong = s.horizontal ? tex.invW() : tex.invH();
+
+    // Delta of a read at float position (c moved `move` texture units along the edge) plus
+    // an integer texel offset along the edge.
+    auto deltaAt = [&](float move, int texelOffset) {
+        const Rgb c = s.horizontal ? tex.sample(cu + move, cv, texelOffset, 0) : tex.sample(cu, cv + move, 0, texelOffset);
+        return luma(c) - localAverage;
+    };
+
+    const int maxDistance = kBatch * rounds;
+    auto searchSide = [&](int sign, float first) -> SideResult {
+        // Round 0: the free position 1, then reads at texel offsets 2 and 3 from c.
+        float delta = first;
+        if (std::fabs(delta) >= gradientScaled) return {1.0f, delta};
+        for (int k = 2; k <= kBatch; ++k) {
+            delta = deltaAt(0.0f, sign * k);
+            if (std::fabs(delta) >= gradientScaled) return {float(k), delta};
+        }
+        // Later rounds: one coordinate (c moved offset + 2 pixels) and texel offsets
+        // -1, 0, +1 around it, nearest position first.
+        for (int r = 1; r < rounds; ++r) {
+            const int offset = kBatch * r;
+            const float move = float(sign) * (float(offset + 2) * invAlong);
+            for (int k = -1; k <= 1; ++k) {
+                delta = deltaAt(move, sign * k);
+                if (std::fabs(delta) >= gradientScaled) return {float(offset + 2 + k), delta};
+            }
+        }
+        return {float(maxDistance + 1), delta};
+    };
+    const SideResult side1 = searchSide(-1, first1 - localAverage);
+    const SideResult side2 = searchSide(+1, first2 - localAverage);
+
+    const float d1 = side1.distance, d2 = side2.distance;
+    const float pixelOffset = 0.5f - std::fmin(d1, d2) / (d1 + d2);
+    const float deltaNear = d1 < d2 ? side1.delta : side2.delta;  // ties: side 2
+    // "Correct variation": the luma at the nearer end lies on the other side of the
+    // local average than the centre, so the edge really ends there.
+    const bool correct = (deltaNear < 0.0f) != (n.C < localAverage);
+    return correct ? pixelOffset * float(across) : 0.0f;
+}
+
+void validate(const Ddaa2Params& p) {
+    validateDdaa1("ddaa2", p);
+    checkParam("ddaa2", "searchRounds", p.searchRounds, 1, 5);
+}
+
+void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Ddaa2Params& p, const Exec& exec, bool reference) {
+    checkInput("ddaa2", in);
+    checkOutput("ddaa2", in, out);
+    validate(p);
+    const Texture tex(in, p.filtering);
+    const ImageF L = reference ? lumaPlaneReference(in) : lumaPlane(in);
+    runLumaMethod(in, out, L, p.edgeThresholdMin, p.edgeThreshold, exec, reference,
+                  [&](int x, int y, const Luma3x3& n, float) {
+                      const EdgeSides s = edgeSides(n);
+                      Diffusion d = diffusion(n, s, p);
+                      const float offset = edgeSearchOffset(tex, x, y, n, s, p.searchRounds);
+                      // Combination (section 2.3): the search offset moves both diffusion
+                      // reads, and a large offset (near an edge's end) weakens the diffusion.
+                      const float edgeStrength = std::fmin(1.0f, 2.0f * std::fabs(offset));
+                      d.strength *= 1.0f - edgeStrength;
+                      const float offU = s.horizontal ? 0.0f : offset * tex.invW();
+                      const float offV = s.horizontal ? offset * tex.invH() : 0.0f;
+                      return diffuse(tex, x, y, d, p.maxDiffusion, offU, offV);
+                  });
+}
+
+}  // namespace
+}  // namespace detail
+
+Ddaa2Params ddaa2ParamsFor(Preset preset) {
+    Ddaa2Params p;
+    p.edgeThresholdMin = thresholdsFor(preset).edgeThresholdMin;
+    p.edgeThreshold = thresholdsFor(preset).edgeThreshold;
+    return p;
+}
+
+void ddaa2(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Ddaa2Params& p, const Exec& exec) {
+    detail::run(in, out, p, exec, false);
+}
+ImageRgba8 ddaa2(ImageView<const Rgba8> in, const Ddaa2Params& p, const Exec& exec) {
+    detail::checkInput("ddaa2", in);
+    ImageRgba8 out(in.width(), in.height());
+    ddaa2(in, out.view(), p, exec);
+    return out;
+}
+ImageRgba8 ddaa2Reference(ImageView<const Rgba8> in, const Ddaa2Params& p) {
+    detail::checkInput("ddaa2", in);
+    ImageRgba8 out(in.width(), in.height());
+    detail::run(in, out.view(), p, Exec{1}, true);
+    return out;
+}
+
+}  // namespace ssfx::aa

@@ -1,0 +1,97 @@
+// fxaa3c: FXAA 3.11 "console" (T. Lottes, NVIDIA 2011): direction from the four diagonal
+// lumas, two short and two long taps along it, no edge search (spec ppaa.md "fxaa3c").
+// Deviation from Lottes' shader, as in the DDAA paper: diagonals at +-1 pixel, not +-0.5
+// (Fxaa3cParams::diagonalOffset).
+#include "ppaa_common.hpp"
+#include "ssfx/aa/fxaa.hpp"
+
+namespace ssfx::aa {
+
+namespace detail {
+namespace {
+
+Rgb scale(const Rgb& a, float k) { return {a.r * k, a.g * k, a.b * k}; }
+Rgb add(const Rgb& a, const Rgb& b) { return {a.r + b.r, a.g + b.g, a.b + b.b}; }
+
+void validate(const Fxaa3cParams& p) {
+    checkParam("fxaa3c", "edgeThresholdMin", p.edgeThresholdMin, 0.0, 1.0);
+    checkParam("fxaa3c", "edgeThreshold", p.edgeThreshold, 0.0, 1.0);
+    checkParam("fxaa3c", "edgeSharpness", p.edgeSharpness, 1.0, 64.0);
+    checkParam("fxaa3c", "diagonalOffset", p.diagonalOffset, 1e-3, 2.0);
+}
+
+void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Fxaa3cParams& p, const Exec& exec, bool reference) {
+    checkInput("fxaa3c", in);
+    checkOutput("fxaa3c", in, out);
+    validate(p);
+    const Texture tex(in, p.filtering);
+    const ImageF L = reference ? lumaPlaneReference(in) : lumaPlane(in);
+    // At +-1 pixel the diagonal reads land on pixel centres, which return the pixel
+    // (spec section 1): luma plane lookups.
+    const bool centres = p.diagonalOffset == 1.0f;
+    const float du = p.diagonalOffset * tex.invW(), dv = p.diagonalOffset * tex.invH();
+    forEachPixel(out, exec, [&](int x, int y) -> Rgba8 {
+        const Rgba8 m = in(x, y);
+        const float u = tex.centreU(x), v = tex.centreV(y);
+        auto diag = [&](int sx, int sy) {
+            return centres ? L(std::clamp(x + sx, 0, in.width() - 1), std::clamp(y + sy, 0, in.height() - 1))
+                           : luma(tex.sample(u + float(sx) * du, v + float(sy) * dv));
+        };
+        const float lumaNW = diag(-1, -1), lumaSW = diag(-1, +1), lumaSE = diag(+1, +1);
+        const float lumaNE = diag(+1, -1) + 1.0f / 384.0f;  // FXAA: keeps dir from being 0
+        const float lumaM = L(x, y);
+        const float lumaMax = std::fmax(std::fmax(lumaNE, lumaSE), std::fmax(lumaNW, lumaSW));
+        const float lumaMin = std::fmin(std::fmin(lumaNE, lumaSE), std::fmin(lumaNW, lumaSW));
+        if (std::fmax(lumaMax, lumaM) - std::fmin(lumaMin, lumaM) <
+            std::fmax(p.edgeThresholdMin, lumaMax * p.edgeThreshold))
+            return m;
+
+        const float swMinusNe = lumaSW - lumaNE, seMinusNw = lumaSE - lumaNW;
+        const float dirX = swMinusNe + seMinusNw, dirY = swMinusNe - seMinusNw;
+        const float len = std::sqrt(dirX * dirX + dirY * dirY);
+        const float d1x = dirX / len, d1y = dirY / len;
+
+        const float h = 0.5f;  // first pair of taps at +-0.5 px along the edge
+        const Rgb n1 = tex.sample(u - d1x * h * tex.invW(), v - d1y * h * tex.invH());
+        const Rgb p1 = tex.sample(u + d1x * h * tex.invW(), v + d1y * h * tex.invH());
+        const float minAbs = std::fmin(std::fabs(d1x), std::fabs(d1y)) * p.edgeSharpness;
+        // fmax/fmin return the non-NaN operand, as GPU clamp does for 0/0.
+        const float d2x = std::fmin(std::fmax(d1x / minAbs, -2.0f), 2.0f);
+        const float d2y = std::fmin(std::fmax(d1y / minAbs, -2.0f), 2.0f);
+        const Rgb n2 = tex.sample(u - d2x * 2.0f * tex.invW(), v - d2y * 2.0f * tex.invH());
+        const Rgb p2 = tex.sample(u + d2x * 2.0f * tex.invW(), v + d2y * 2.0f * tex.invH());
+        const Rgb A = add(n1, p1);
+        const Rgb B = add(scale(add(n2, p2), 0.25f), scale(A, 0.25f));
+        const float lumaB = luma(B);
+        const Rgb result = (lumaB < lumaMin || lumaB > lumaMax) ? scale(A, 0.5f) : B;
+        return toRgba8(result, m.a);
+    });
+}
+
+}  // namespace
+}  // namespace detail
+
+Fxaa3cParams fxaa3cParamsFor(Preset preset) {
+    Fxaa3cParams p;
+    p.edgeThresholdMin = thresholdsFor(preset).edgeThresholdMin;
+    p.edgeThreshold = thresholdsFor(preset).edgeThreshold;
+    return p;
+}
+
+void fxaa3c(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Fxaa3cParams& p, const Exec& exec) {
+    detail::run(in, out, p, exec, false);
+}
+ImageRgba8 fxaa3c(ImageView<const Rgba8> in, const Fxaa3cParams& p, const Exec& exec) {
+    detail::checkInput("fxaa3c", in);
+    ImageRgba8 out(in.width(), in.height());
+    fxaa3c(in, out.view(), p, exec);
+    return out;
+}
+ImageRgba8 fxaa3cReference(ImageView<const Rgba8> in, const Fxaa3cParams& p) {
+    detail::checkInput("fxaa3c", in);
+    ImageRgba8 out(in.width(), in.height());
+    detail::run(in, out.view(), p, Exec{1}, true);
+    return out;
+}
+
+}  // namespace ssfx::aa

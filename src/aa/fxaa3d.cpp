@@ -1,0 +1,120 @@
+// fxaa3d: FXAA 3.11 "desktop"/quality with a 12-iteration edge search (T. Lottes, NVIDIA
+// 2011; FXAA_QUALITY__PRESET 39 step list), as used in the DDAA paper's comparison
+// (spec ppaa.md "fxaa3d").
+//
+// Deviation switch: Fxaa3dParams::paperSearchQuirk (default on) reproduces the paper's
+// shader, which steps side 2 back one pixel after its first read.
+#include "luma_driver.hpp"
+#include "ssfx/aa/fxaa.hpp"
+
+namespace ssfx::aa {
+
+namespace detail {
+namespace {
+
+// Step after each unsuccessful read, in pixels: 1 for the first five, then skipping.
+// Skipping is what gives FXAA its stipple artifacts (DDAA paper Fig. 7); kept: baseline.
+constexpr float kSteps[12] = {1.0f, 1.0f, 1.0f, 1.0f, 1.0f, 1.5f, 2.0f, 2.0f, 2.0f, 2.0f, 4.0f, 8.0f};
+
+Rgb fxaa3dPixel(const Texture& tex, int x, int y, const Luma3x3& n, float range, const Fxaa3dParams& p) {
+    const EdgeSides s = edgeSides(n);
+    const bool pair1 = std::fabs(s.g1) >= std::fabs(s.g2);  // steeper side; ties go to side 1
+    const float lumaSteep = pair1 ? s.luma1 : s.luma2;
+    const float gradientScaled = 0.25f * std::fmax(std::fabs(s.g1), std::fabs(s.g2));
+    const float localAverage = (lumaSteep + n.C) * 0.5f;
+    float lengthSign = s.horizontal ? tex.invH() : tex.invW();
+    if (pair1) lengthSign = -lengthSign;
+
+    const float u = tex.centreU(x), v = tex.centreV(y);
+    // posB: half a pixel across, towards the steep side; offNP: one pixel along the edge.
+    float bu = u, bv = v;
+    if (s.horizontal)
+        bv += lengthSign * 0.5f;
+    else
+        bu += lengthSign * 0.5f;
+    const float offU = s.horizontal ? tex.invW() : 0.0f;
+    const float offV = s.horizontal ? 0.0f : tex.invH();
+
+    float nU = bu - offU * kSteps[0], nV = bv - offV * kSteps[0];
+    float pU = bu + offU * kSteps[0], pV = bv + offV * kSteps[0];
+    float endN = luma(tex.sample(nU, nV)) - localAverage;
+    float endP = luma(tex.sample(pU, pV)) - localAverage;
+    bool doneN = std::fabs(endN) >= gradientScaled;
+    bool doneP = std::fabs(endP) >= gradientScaled;
+    for (int i = 1; i < 12; ++i) {
+        if (!doneN) nU -= offU * kSteps[i], nV -= offV * kSteps[i];
+        if (!doneP) {
+            if (i == 1 && p.paperSearchQuirk)
+                pU -= offU * kSteps[i], pV -= offV * kSteps[i];
+            else
+                pU += offU * kSteps[i], pV += offV * kSteps[i];
+        }
+        if ((doneN && doneP) || i == 11) break;  // after the last step there is no read
+        if (!doneN) endN = luma(tex.sample(nU, nV)) - localAverage;
+        if (!doneP) endP = luma(tex.sample(pU, pV)) - localAverage;
+        doneN = doneN || std::fabs(endN) >= gradientScaled;
+        doneP = doneP || std::fabs(endP) >= gradientScaled;
+    }
+
+    const float dstN = s.horizontal ? u - nU : v - nV;
+    const float dstP = s.horizontal ? pU - u : pV - v;
+    const bool centreBelow = n.C - localAverage < 0.0f;
+    const bool goodSpanN = (endN < 0.0f) != centreBelow;
+    const bool goodSpanP = (endP < 0.0f) != centreBelow;
+    const bool directionN = dstN < dstP;
+    const float pixelOffset = 0.5f - std::fmin(dstN, dstP) / (dstN + dstP);
+    const bool goodSpan = directionN ? goodSpanN : goodSpanP;
+
+    // Sub-pixel aliasing term (FXAA 3.11 subpix, spec step 6).
+    const float avg = (1.0f / 12.0f) * (2.0f * ((n.S + n.N) + (n.W + n.E)) + (n.SW + n.NW) + (n.SE + n.NE));
+    float sp = std::fmin(std::fmax(std::fabs(avg - n.C) / range, 0.0f), 1.0f);
+    sp = (-2.0f * sp + 3.0f) * sp * sp;
+    const float sub = sp * sp * p.subpix;
+
+    const float offset = std::fmax(goodSpan ? pixelOffset : 0.0f, sub);
+    return s.horizontal ? tex.sample(u, v + offset * lengthSign) : tex.sample(u + offset * lengthSign, v);
+}
+
+void validate(const Fxaa3dParams& p) {
+    checkParam("fxaa3d", "edgeThresholdMin", p.edgeThresholdMin, 0.0, 1.0);
+    checkParam("fxaa3d", "edgeThreshold", p.edgeThreshold, 0.0, 1.0);
+    checkParam("fxaa3d", "subpix", p.subpix, 0.0, 1.0);
+}
+
+void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Fxaa3dParams& p, const Exec& exec, bool reference) {
+    checkInput("fxaa3d", in);
+    checkOutput("fxaa3d", in, out);
+    validate(p);
+    const Texture tex(in, p.filtering);
+    const ImageF L = reference ? lumaPlaneReference(in) : lumaPlane(in);
+    runLumaMethod(in, out, L, p.edgeThresholdMin, p.edgeThreshold, exec, reference,
+                  [&](int x, int y, const Luma3x3& n, float range) { return fxaa3dPixel(tex, x, y, n, range, p); });
+}
+
+}  // namespace
+}  // namespace detail
+
+Fxaa3dParams fxaa3dParamsFor(Preset preset) {
+    Fxaa3dParams p;
+    p.edgeThresholdMin = thresholdsFor(preset).edgeThresholdMin;
+    p.edgeThreshold = thresholdsFor(preset).edgeThreshold;
+    return p;
+}
+
+void fxaa3d(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Fxaa3dParams& p, const Exec& exec) {
+    detail::run(in, out, p, exec, false);
+}
+ImageRgba8 fxaa3d(ImageView<const Rgba8> in, const Fxaa3dParams& p, const Exec& exec) {
+    detail::checkInput("fxaa3d", in);
+    ImageRgba8 out(in.width(), in.height());
+    fxaa3d(in, out.view(), p, exec);
+    return out;
+}
+ImageRgba8 fxaa3dReference(ImageView<const Rgba8> in, const Fxaa3dParams& p) {
+    detail::checkInput("fxaa3d", in);
+    ImageRgba8 out(in.width(), in.height());
+    detail::run(in, out.view(), p, Exec{1}, true);
+    return out;
+}
+
+}  // namespace ssfx::aa

@@ -1,0 +1,45 @@
+// Driver shared by fxaa3d, ddaa1 and ddaa2: luma plane, early exit (spec section 1), then
+// the method's per-pixel kernel for the pixels that pass it.
+//
+// The reference path evaluates everything one pixel at a time. The fast path computes the
+// luma plane and the early-exit mask with Highway (same float operations per lane, so the
+// same bits) and runs the kernel only where the mask says so, in parallel row blocks.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "ppaa_common.hpp"
+
+namespace ssfx::aa::detail {
+
+//! exitMask[x] = 1 where pixel (x, y) is below the edge threshold (SIMD, in early_exit.cpp).
+void earlyExitRow(const ImageF& L, int y, float thresholdMin, float threshold, std::uint8_t* exitMask);
+
+template <class PixelFn>
+void runLumaMethod(ImageView<const Rgba8> in, ImageView<Rgba8> out, const ImageF& L, float thresholdMin,
+                   float threshold, const Exec& exec, bool reference, const PixelFn& pixel) {
+    parallelRows(in.height(), exec, [&](int y0, int y1) {
+        std::vector<std::uint8_t> mask(std::size_t(in.width()));
+        for (int y = y0; y < y1; ++y) {
+            const Rgba8* src = in.row(y);
+            Rgba8* dst = out.row(y);
+            if (!reference) earlyExitRow(L, y, thresholdMin, threshold, mask.data());
+            for (int x = 0; x < in.width(); ++x) {
+                if (!reference && mask[std::size_t(x)]) {
+                    dst[x] = src[x];
+                    continue;
+                }
+                const Luma3x3 n = neighbourhood(L, x, y);
+                float range;
+                if (belowEdgeThreshold(n, thresholdMin, threshold, &range)) {
+                    dst[x] = src[x];
+                    continue;
+                }
+                dst[x] = toRgba8(pixel(x, y, n, range), src[x].a);
+            }
+        }
+    });
+}
+
+}  // namespace ssfx::aa::detail

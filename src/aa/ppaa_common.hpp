@@ -1,0 +1,114 @@
+// Pieces shared by the luma-based PPAA methods (fxaa3c, fxaa3d, ddaa1, ddaa2): parameter
+// validation, the 3x3 luma neighbourhood, the early exit and the edge orientation test
+// (spec ppaa.md section 1 and fxaa3d steps 2-3).
+#pragma once
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <string>
+
+#include "ssfx/core/color.hpp"
+#include "ssfx/core/image.hpp"
+#include "ssfx/core/parallel.hpp"
+#include "ssfx/core/sample.hpp"
+
+namespace ssfx::aa::detail {
+
+//! Rejects (never clamps) a parameter outside [lo, hi]; NaN is outside every range.
+inline void checkParam(const char* method, const char* name, double value, double lo, double hi) {
+    if (!(value >= lo && value <= hi))
+        throw Error(fmt::format("{}: parameter {} = {} is outside the allowed range [{}, {}]", method, name, value,
+                                lo, hi));
+}
+
+inline void checkInput(const char* method, ImageView<const Rgba8> in) {
+    checkDimensions(in.width(), in.height(), fmt::format("{} input", method));
+}
+
+inline void checkOutput(const char* method, ImageView<const Rgba8> in, ImageView<Rgba8> out, int factorNum = 1,
+                        int factorDen = 1) {
+    const int ew = in.width() * factorNum / factorDen, eh = in.height() * factorNum / factorDen;
+    if (out.width() != ew || out.height() != eh)
+        throw Error(fmt::format("{}: output is {}x{}, expected {}x{}", method, out.width(), out.height(), ew, eh));
+    const auto* ib = reinterpret_cast<const char*>(in.data());
+    const auto* ob = reinterpret_cast<const char*>(out.data());
+    const auto* ie = reinterpret_cast<const char*>(in.row(in.height() - 1) + in.width());
+    const auto* oe = reinterpret_cast<const char*>(out.row(out.height() - 1) + out.width());
+    if (ob < ie && ib < oe) throw Error(fmt::format("{}: output must not overlap the input", method));
+}
+
+inline Rgba8 toRgba8(const Rgb& c, std::uint8_t alpha) {
+    return {toUnorm8(c.r), toUnorm8(c.g), toUnorm8(c.b), alpha};
+}
+
+//! Luma of the 3x3 neighbourhood. Names as in the reference shader (spec section 1):
+//! S = (0, -1) is the row above, N = (0, +1) the row below.
+struct Luma3x3 {
+    float C, W, E, S, N, SW, NW, SE, NE;
+};
+
+inline Luma3x3 neighbourhood(const ImageF& L, int x, int y) {
+    const int w = L.width(), h = L.height();
+    const int xm = x > 0 ? x - 1 : 0, xp = x + 1 < w ? x + 1 : w - 1;
+    const int ym = y > 0 ? y - 1 : 0, yp = y + 1 < h ? y + 1 : h - 1;
+    const float* ra = L.data() + std::size_t(ym) * w;
+    const float* rc = L.data() + std::size_t(y) * w;
+    const float* rb = L.data() + std::size_t(yp) * w;
+    return {rc[x], rc[xm], rc[xp], ra[x], rb[x], ra[xm], rb[xm], ra[xp], rb[xp]};
+}
+
+//! Early exit of section 1: true when the pixel is left unchanged. `range` receives
+//! lumaMax - lumaMin over the centre and its four direct neighbours.
+inline bool belowEdgeThreshold(const Luma3x3& n, float thresholdMin, float threshold, float* range) {
+    const float lumaMax = std::fmax(std::fmax(std::fmax(n.S, n.N), std::fmax(n.W, n.E)), n.C);
+    const float lumaMin = std::fmin(std::fmin(std::fmin(n.S, n.N), std::fmin(n.W, n.E)), n.C);
+    *range = lumaMax - lumaMin;
+    return *range < std::fmax(thresholdMin, lumaMax * threshold);
+}
+
+//! Edge orientation (FXAA 3.11 quality, spec fxaa3d steps 2-3). Sums left to right as
+//! written in the spec. Side 1 is the negative direction across the edge (S or W).
+struct EdgeSides {
+    bool horizontal;  //!< the edge runs along x; "across" is y
+    float luma1, luma2;
+    float g1, g2;  //!< luma1 - C, luma2 - C
+};
+
+inline EdgeSides edgeSides(const Luma3x3& n) {
+    const float edgeH = std::fabs(-2.0f * n.W + (n.SW + n.NW)) + std::fabs(-2.0f * n.C + (n.S + n.N)) * 2.0f +
+                        std::fabs(-2.0f * n.E + (n.SE + n.NE));
+    const float edgeV = std::fabs(-2.0f * n.N + (n.NE + n.NW)) + std::fabs(-2.0f * n.C + (n.W + n.E)) * 2.0f +
+                        std::fabs(-2.0f * n.S + (n.SW + n.SE));
+    EdgeSides s;
+    s.horizontal = edgeH >= edgeV;
+    s.luma1 = s.horizontal ? n.S : n.W;
+    s.luma2 = s.horizontal ? n.N : n.E;
+    s.g1 = s.luma1 - n.C;
+    s.g2 = s.luma2 - n.C;
+    return s;
+}
+
+//! Runs kernel(x, y) -> Rgba8 for every pixel, rows in parallel blocks.
+template <class Kernel>
+void forEachPixel(ImageView<Rgba8> out, const Exec& exec, const Kernel& kernel) {
+    parallelRows(out.height(), exec, [&](int y0, int y1) {
+        for (int y = y0; y < y1; ++y) {
+            Rgba8* row = out.row(y);
+            for (int x = 0; x < out.width(); ++x) row[x] = kernel(x, y);
+        }
+    });
+}
+
+//! Luma plane computed one pixel at a time (the scalar oracle of lumaPlane()).
+inline ImageF lumaPlaneReference(ImageView<const Rgba8> in) {
+    ImageF L(in.width(), in.height());
+    for (int y = 0; y < in.height(); ++y)
+        for (int x = 0; x < in.width(); ++x) {
+            const Rgba8 p = in(x, y);
+            L(x, y) = luma(kUnorm8[p.r], kUnorm8[p.g], kUnorm8[p.b]);
+        }
+    return L;
+}
+
+}  // namespace ssfx::aa::detail

@@ -1,0 +1,34 @@
+#include "ssfx/core/parallel.hpp"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <thread>
+
+namespace ssfx {
+
+int resolvedThreads(const Exec& exec) {
+    if (exec.threads > 0) return exec.threads;
+    return std::max(1, tbb::this_task_arena::max_concurrency());
+}
+
+void parallelRows(int height, const Exec& exec, const std::function<void(int, int)>& fn) {
+    if (height <= 0) return;
+    const int blocks = (height + kRowBlock - 1) / kRowBlock;
+    const int threads = resolvedThreads(exec);
+    auto runBlock = [&](int b) { fn(b * kRowBlock, std::min(height, (b + 1) * kRowBlock)); };
+    if (threads == 1 || blocks == 1) {
+        for (int b = 0; b < blocks; ++b) runBlock(b);
+        return;
+    }
+    tbb::task_arena arena(threads);
+    arena.execute([&] {
+        tbb::parallel_for(tbb::blocked_range<int>(0, blocks, 1), [&](const tbb::blocked_range<int>& r) {
+            for (int b = r.begin(); b != r.end(); ++b) runBlock(b);
+        });
+    });
+}
+
+}  // namespace ssfx

@@ -1,0 +1,248 @@
+// The one explicit table of methods (STYLE.md section 2). Adding a method: header, source,
+// registry line here, doc note in docs/methods/<id>.md, unit test, golden, bench entry; the
+// property tests and the CLI pick it up from this table.
+#include "ssfx/registry.hpp"
+
+#include <fmt/format.h>
+
+#include <array>
+#include <cmath>
+#include <variant>
+
+#include "ssfx/aa/blur.hpp"
+#include "ssfx/aa/ddaa.hpp"
+#include "ssfx/aa/fxaa.hpp"
+#include "ssfx/aa/resolve.hpp"
+
+namespace ssfx {
+
+namespace {
+
+using namespace aa;
+
+// Binds a ParamInfo row to a params-struct member of the same name.
+template <class P>
+using Member = std::variant<float P::*, int P::*, bool P::*>;
+
+template <class P, std::size_t N>
+P applySettings(std::string_view id, P params, const std::array<ParamInfo, N>& infos,
+                const std::array<Member<P>, N>& members, const MethodSettings& s) {
+    for (const auto& [name, value] : s.params) {
+        std::size_t i = 0;
+        while (i < N && infos[i].name != name) ++i;
+        if (i == N) {
+            std::string known;
+            for (const auto& p : infos) known += fmt::format("{}{}", known.empty() ? "" : ", ", p.name);
+            throw Error(fmt::format("{}: unknown parameter '{}' (parameters: {})", id, name,
+                                    known.empty() ? "none" : known));
+        }
+        const ParamInfo& info = infos[i];
+        if (!(value >= info.min && value <= info.max))
+            throw Error(fmt::format("{}: parameter {} = {} is outside the allowed range [{}, {}]", id, name, value,
+                                    info.min, info.max));
+        if (info.kind != ParamKind::Float && value != std::floor(value))
+            throw Error(fmt::format("{}: parameter {} = {} must be an integer", id, name, value));
+        std::visit(
+            [&](auto member) {
+                using T = std::remove_reference_t<decltype(params.*member)>;
+                params.*member = static_cast<T>(value);
+            },
+            members[i]);
+    }
+    return params;
+}
+
+void rejectParams(std::string_view id, const MethodSettings& s) {
+    if (!s.params.empty()) throw Error(fmt::format("{}: unknown parameter '{}' (this method has none)", id, s.params[0].first));
+}
+
+void rejectPreset(std::string_view id, const MethodSettings& s) {
+    if (s.preset) throw Error(fmt::format("{}: this method has no edge-threshold presets", id));
+}
+
+// ---- parameter tables (names as in the params structs) ------------------------------
+constexpr ParamInfo kThrMin{"edgeThresholdMin", "luma", 0.0625, 0, 1, ParamKind::Float,
+                            "absolute luma contrast below which a pixel is left unchanged"};
+constexpr ParamInfo kThr{"edgeThreshold", "ratio", 0.166, 0, 1, ParamKind::Float,
+                         "contrast threshold relative to the local maximum luma"};
+
+constexpr std::array<ParamInfo, 1> kBlurInfo{{{"sigma", "px", 0.6, 0.05, 10, ParamKind::Float, "Gaussian sigma"}}};
+const std::array<Member<BlurParams>, 1> kBlurMembers{&BlurParams::sigma};
+
+constexpr std::array<ParamInfo, 4> kFxaa3cInfo{{
+    kThrMin, kThr,
+    {"edgeSharpness", "", 8, 1, 64, ParamKind::Float, "FXAA console sharpness (limits the long taps)"},
+    {"diagonalOffset", "px", 1, 1e-3, 2, ParamKind::Float, "offset of the diagonal reads (Lottes: 0.5)"},
+}};
+const std::array<Member<Fxaa3cParams>, 4> kFxaa3cMembers{&Fxaa3cParams::edgeThresholdMin,
+                                                         &Fxaa3cParams::edgeThreshold, &Fxaa3cParams::edgeSharpness,
+                                                         &Fxaa3cParams::diagonalOffset};
+
+constexpr std::array<ParamInfo, 4> kFxaa3dInfo{{
+    kThrMin, kThr,
+    {"subpix", "", 0.75, 0, 1, ParamKind::Float, "sub-pixel aliasing removal amount"},
+    {"paperSearchQuirk", "bool", 1, 0, 1, ParamKind::Bool,
+     "1: side 2 steps back after its first read, as in the paper's shader; 0: FXAA 3.11 as written"},
+}};
+const std::array<Member<Fxaa3dParams>, 4> kFxaa3dMembers{&Fxaa3dParams::edgeThresholdMin,
+                                                         &Fxaa3dParams::edgeThreshold, &Fxaa3dParams::subpix,
+                                                         &Fxaa3dParams::paperSearchQuirk};
+
+constexpr ParamInfo kStrength{"strength", "", 3, 0, 100, ParamKind::Float,
+                              "DDAA_STRENGTH: diffusion = min(1, strength * sqrt(|gradient|))"};
+constexpr ParamInfo kMaxDiff{"maxDiffusion", "px", 0.51, 0, 1, ParamKind::Float, "largest diffusion offset"};
+constexpr ParamInfo kRidge{"ridgeFactor", "", 10, 0, 1000, ParamKind::Float,
+                           "small-structure preservation: ridges/valleys diffuse less"};
+constexpr std::array<ParamInfo, 5> kDdaa1Info{{kThrMin, kThr, kStrength, kMaxDiff, kRidge}};
+const std::array<Member<Ddaa1Params>, 5> kDdaa1Members{&Ddaa1Params::edgeThresholdMin, &Ddaa1Params::edgeThreshold,
+                                                       &Ddaa1Params::strength, &Ddaa1Params::maxDiffusion,
+                                                       &Ddaa1Params::ridgeFactor};
+constexpr std::array<ParamInfo, 6> kDdaa2Info{
+    {kThrMin, kThr, kStrength, kMaxDiff, kRidge,
+     {"searchRounds", "", 5, 1, 5, ParamKind::Int, "edge-search rounds of 3 pixels per side"}}};
+const std::array<Member<Ddaa2Params>, 6> kDdaa2Members{
+    &Ddaa2Params::edgeThresholdMin, &Ddaa2Params::edgeThreshold, &Ddaa2Params::strength,
+    &Ddaa2Params::maxDiffusion,     &Ddaa2Params::ridgeFactor,   &Ddaa2Params::searchRounds};
+
+constexpr std::array<ParamInfo, 2> kMitchellInfo{{
+    {"B", "", 1.0 / 3.0, 0, 1, ParamKind::Float, "Mitchell-Netravali B"},
+    {"C", "", 1.0 / 3.0, 0, 1, ParamKind::Float, "Mitchell-Netravali C"},
+}};
+const std::array<Member<MitchellParams>, 2> kMitchellMembers{&MitchellParams::B, &MitchellParams::C};
+
+template <class P>
+P withFiltering(P p, const MethodSettings& s) {
+    p.filtering = s.filtering;
+    return p;
+}
+
+// ---- run adapters -------------------------------------------------------------------
+ImageRgba8 runNoaa(ImageView<const Rgba8> in, const MethodSettings& s, const Exec&) {
+    rejectPreset("noaa", s);
+    rejectParams("noaa", s);
+    checkDimensions(in.width(), in.height(), "noaa input");
+    return ImageRgba8::copyOf(in);
+}
+
+BlurParams blurParams(const MethodSettings& s) {
+    rejectPreset("blur", s);
+    return applySettings("blur", BlurParams{}, kBlurInfo, kBlurMembers, s);
+}
+ImageRgba8 runBlur(ImageView<const Rgba8> in, const MethodSettings& s, const Exec& e) {
+    return blur(in, blurParams(s), e);
+}
+ImageRgba8 refBlur(ImageView<const Rgba8> in, const MethodSettings& s, const Exec&) {
+    return blurReference(in, blurParams(s));
+}
+
+Fxaa3cParams fxaa3cParams(const MethodSettings& s) {
+    return applySettings("fxaa3c", withFiltering(fxaa3cParamsFor(s.preset.value_or(Preset::Medium)), s),
+                         kFxaa3cInfo, kFxaa3cMembers, s);
+}
+ImageRgba8 runFxaa3c(ImageView<const Rgba8> in, const MethodSettings& s, const Exec& e) {
+    return fxaa3c(in, fxaa3cParams(s), e);
+}
+ImageRgba8 refFxaa3c(ImageView<const Rgba8> in, const MethodSettings& s, const Exec&) {
+    return fxaa3cReference(in, fxaa3cParams(s));
+}
+
+Fxaa3dParams fxaa3dParams(const MethodSettings& s) {
+    return applySettings("fxaa3d", withFiltering(fxaa3dParamsFor(s.preset.value_or(Preset::Medium)), s),
+                         kFxaa3dInfo, kFxaa3dMembers, s);
+}
+ImageRgba8 runFxaa3d(ImageView<const Rgba8> in, const MethodSettings& s, const Exec& e) {
+    return fxaa3d(in, fxaa3dParams(s), e);
+}
+ImageRgba8 refFxaa3d(ImageView<const Rgba8> in, const MethodSettings& s, const Exec&) {
+    return fxaa3dReference(in, fxaa3dParams(s));
+}
+
+Ddaa1Params ddaa1Params(const MethodSettings& s) {
+    return applySettings("ddaa1", withFiltering(ddaa1ParamsFor(s.preset.value_or(Preset::Medium)), s), kDdaa1Info,
+                         kDdaa1Members, s);
+}
+ImageRgba8 runDdaa1(ImageView<const Rgba8> in, const MethodSettings& s, const Exec& e) {
+    return ddaa1(in, ddaa1Params(s), e);
+}
+ImageRgba8 refDdaa1(ImageView<const Rgba8> in, const MethodSettings& s, const Exec&) {
+    return ddaa1Reference(in, ddaa1Params(s));
+}
+
+Ddaa2Params ddaa2Params(std::string_view id, const MethodSettings& s) {
+    return applySettings(id, withFiltering(ddaa2ParamsFor(s.preset.value_or(Preset::Medium)), s), kDdaa2Info,
+                         kDdaa2Members, s);
+}
+ImageRgba8 runDdaa2(ImageView<const Rgba8> in, const MethodSettings& s, const Exec& e) {
+    return ddaa2(in, ddaa2Params("ddaa2", s), e);
+}
+ImageRgba8 refDdaa2(ImageView<const Rgba8> in, const MethodSettings& s, const Exec&) {
+    return ddaa2Reference(in, ddaa2Params("ddaa2", s));
+}
+ImageRgba8 runDdaa2p(ImageView<const Rgba8> in, const MethodSettings& s, const Exec& e) {
+    return ddaa2p(in, ddaa2Params("ddaa2p", s), e);
+}
+ImageRgba8 refDdaa2p(ImageView<const Rgba8> in, const MethodSettings& s, const Exec&) {
+    return ddaa2p(in, ddaa2Params("ddaa2p", s), Exec{1});
+}
+
+ImageRgba8 runSsaax2(ImageView<const Rgba8> in, const MethodSettings& s, const Exec& e) {
+    rejectPreset("ssaax2", s);
+    rejectParams("ssaax2", s);
+    return ssaax2(in, s.filtering, e);
+}
+ImageRgba8 refSsaax2(ImageView<const Rgba8> in, const MethodSettings& s, const Exec&) {
+    return runSsaax2(in, s, Exec{1});
+}
+MitchellParams mitchellParams(const MethodSettings& s) {
+    rejectPreset("ssaax4", s);
+    return applySettings("ssaax4", MitchellParams{}, kMitchellInfo, kMitchellMembers, s);
+}
+ImageRgba8 runSsaax4(ImageView<const Rgba8> in, const MethodSettings& s, const Exec& e) {
+    return ssaax4(in, mitchellParams(s), e);
+}
+ImageRgba8 refSsaax4(ImageView<const Rgba8> in, const MethodSettings& s, const Exec&) {
+    return ssaax4(in, mitchellParams(s), Exec{1});
+}
+
+constexpr std::string_view kDdaaCite = "A. Klein, Directional Diffusion Anti-Aliasing (DDAA), JCGT";
+constexpr std::string_view kFxaaCite = "T. Lottes, FXAA 3.11, NVIDIA 2011 (as compared in the DDAA paper)";
+constexpr std::string_view kMitchellCite = "Mitchell & Netravali, SIGGRAPH 1988; DDAA paper section 3";
+
+const std::array<MethodInfo, 9> kMethods{{
+    {"noaa", "ppaa", "no anti-aliasing: the input unchanged", "", {}, false, 1, runNoaa, runNoaa},
+    {"blur", "ppaa", "3x3 truncated Gaussian (sigma 0.6), the quality and speed baseline",
+     "DDAA paper section 3.1", kBlurInfo, false, 1, runBlur, refBlur},
+    {"fxaa3c", "ppaa", "FXAA 3.11 console: direction from the diagonals, 4 taps, no edge search", kFxaaCite,
+     kFxaa3cInfo, true, 1, runFxaa3c, refFxaa3c},
+    {"fxaa3d", "ppaa", "FXAA 3.11 desktop: 12-step edge search with pixel skipping", kFxaaCite, kFxaa3dInfo, true, 1,
+     runFxaa3d, refFxaa3d},
+    {"ddaa1", "ppaa", "DDAA 1: diffusion along the Scharr edge direction, no edge search", kDdaaCite, kDdaa1Info, true,
+     1, runDdaa1, refDdaa1},
+    {"ddaa2", "ppaa", "DDAA 2: diffusion plus a clean batched edge search (the proposed method)", kDdaaCite,
+     kDdaa2Info, true, 1, runDdaa2, refDdaa2},
+    {"ssaax2", "resolve", "2x supersampling resolve: Mitchell filter in 12 bilinear reads (input: 2x render)",
+     kMitchellCite, {}, false, 2, runSsaax2, refSsaax2},
+    {"ssaax4", "resolve", "4x supersampling resolve: direct Mitchell taps (input: 4x render)", kMitchellCite,
+     kMitchellInfo, false, 4, runSsaax4, refSsaax4},
+    {"ddaa2p", "ppaa", "ddaa2 on the 2x render, then the ssaax2 resolve (input: 2x render)",
+     "DDAA paper section 4", kDdaa2Info, true, 2, runDdaa2p, refDdaa2p},
+}};
+
+}  // namespace
+
+std::span<const MethodInfo> methods() { return kMethods; }
+
+const MethodInfo* findMethod(std::string_view id) {
+    for (const MethodInfo& m : kMethods)
+        if (m.id == id) return &m;
+    return nullptr;
+}
+
+const MethodInfo& methodById(std::string_view id) {
+    if (const MethodInfo* m = findMethod(id)) return *m;
+    std::string known;
+    for (const MethodInfo& m : kMethods) known += fmt::format("{}{}", known.empty() ? "" : ", ", m.id);
+    throw Error(fmt::format("unknown method '{}' (methods: {})", id, known));
+}
+
+}  // namespace ssfx
