@@ -1,0 +1,47 @@
+# Top-level entry points. `make demo` and `make test` do all the set-up on a fresh Debian
+# machine: install dependencies (scripts/setup.sh), configure, build, then run.
+JOBS ?= $(shell nproc)
+PRESET ?= release
+BUILD := build/$(PRESET)
+SSFX := $(BUILD)/ssfx
+FUZZ_SECONDS ?= 60
+
+.PHONY: all setup configure build demo test asan fuzz fuzz-smoke bench install-check clean
+
+all: build
+
+setup:
+	@bash scripts/setup.sh
+
+configure: setup
+	@cmake --preset $(PRESET) -DSSFX_WERROR=$(if $(CI),ON,OFF) >/dev/null
+
+build: configure
+	@cmake --build $(BUILD) -j $(JOBS)
+
+# The main job: anti-alias the synthetic drawing with every method and time them.
+demo: build
+	@mkdir -p out/demo
+	@$(SSFX) methods
+	@bash scripts/demo.sh $(SSFX) out/demo
+
+test: build
+	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+	@$(MAKE) --no-print-directory fuzz-smoke
+
+asan:
+	@$(MAKE) --no-print-directory PRESET=asan build
+	@cd build/asan && ctest --output-on-failure -j $(JOBS)
+
+# libFuzzer: a short run per target (make test), or longer: make fuzz FUZZ_SECONDS=3600
+fuzz-smoke: setup
+	@bash scripts/fuzz.sh $(FUZZ_SECONDS)
+
+fuzz: fuzz-smoke
+
+bench: build
+	@$(BUILD)/bench/bench_aa --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+	@$(SSFX) bench
+
+clean:
+	rm -rf build out

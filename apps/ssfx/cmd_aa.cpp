@@ -1,0 +1,97 @@
+// ssfx aa: apply an anti-aliasing method to a PNG (or every frame of an APNG).
+#include <fmt/format.h>
+
+#include <charconv>
+
+#include "commands.hpp"
+#include "ssfx/aa/presets.hpp"
+#include "ssfx/io/png.hpp"
+#include "ssfx/registry.hpp"
+
+namespace ssfx::cli {
+
+namespace {
+
+struct AaOptions {
+    std::string method, input, output, preset, filtering = "gpu";
+    std::vector<std::string> params;
+    int threads = 0;
+    bool listPresets = false;
+};
+
+std::pair<std::string, double> parseParam(const std::string& text) {
+    const auto eq = text.find('=');
+    if (eq == std::string::npos || eq == 0)
+        throw Error(fmt::format("parameter '{}' is not of the form NAME=VALUE", text));
+    const std::string name = text.substr(0, eq), value = text.substr(eq + 1);
+    if (value == "true") return {name, 1.0};
+    if (value == "false") return {name, 0.0};
+    double v = 0;
+    const auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), v);
+    if (ec != std::errc() || end != value.data() + value.size())
+        throw Error(fmt::format("parameter {}: '{}' is not a number", name, value));
+    return {name, v};
+}
+
+void printPresets() {
+    fmt::print("Edge-threshold presets of fxaa3c, fxaa3d, ddaa1, ddaa2, ddaa2p: a pixel is left unchanged\n"
+               "when its luma contrast < max(edgeThresholdMin, lumaMax * edgeThreshold).\n\n");
+    fmt::print("{:<8} {:>16} {:>14}  {}\n", "preset", "edgeThresholdMin", "edgeThreshold", "");
+    for (const auto& p : aa::kPresets)
+        fmt::print("{:<8} {:>16} {:>14}  {}\n", p.name, p.thresholds.edgeThresholdMin, p.thresholds.edgeThreshold,
+                   p.doc);
+}
+
+void run(const AaOptions& o) {
+    if (o.listPresets) {
+        printPresets();
+        return;
+    }
+    if (o.method.empty()) throw Error("no method given (use -m METHOD; 'ssfx methods' lists them)");
+    if (o.input.empty()) throw Error("no input file given");
+    if (o.output.empty()) throw Error("no output file given (use -o FILE)");
+    const MethodInfo& m = methodById(o.method);
+    MethodSettings settings;
+    if (!o.preset.empty()) {
+        settings.preset = aa::parsePreset(o.preset);
+        if (!settings.preset)
+            throw Error(fmt::format("unknown preset '{}' (presets: low, medium, high, ultra, extreme)", o.preset));
+    }
+    for (const auto& p : o.params) settings.params.push_back(parseParam(p));
+    if (o.filtering == "exact") settings.filtering = Filtering::Exact;
+    const Exec exec{o.threads};
+
+    const std::vector<std::uint8_t> bytes = io::readFile(o.input);
+    if (io::isApng(bytes)) {
+        io::Animation anim = io::decodeApng(bytes, o.input);
+        for (io::Frame& f : anim.frames) f.image = m.run(f.image.view(), settings, exec);
+        io::writeApng(o.output, anim);
+    } else {
+        const ImageRgba8 in = io::decodePng(bytes, o.input);
+        io::writePng(o.output, m.run(in.view(), settings, exec).view());
+    }
+}
+
+}  // namespace
+
+void addAaCommand(CLI::App& app) {
+    auto opts = std::make_shared<AaOptions>();
+    auto* cmd = app.add_subcommand(
+        "aa", "Apply an anti-aliasing method to a PNG, or to every frame of an APNG (output is then APNG)");
+    std::string methodList;
+    for (const MethodInfo& mi : methods()) methodList += fmt::format("\n  {:<7} {}", mi.id, mi.summary);
+    cmd->add_option("-m,--method", opts->method, "Method id:" + methodList);
+    cmd->add_option("input", opts->input, "Input PNG/APNG (ssaax2/ddaa2p take the 2x render, ssaax4 the 4x)");
+    cmd->add_option("-o,--output", opts->output, "Output PNG/APNG (written atomically)");
+    cmd->add_option("--preset", opts->preset, "Edge-threshold preset: low, medium (default), high, ultra, extreme");
+    cmd->add_option("-p,--param", opts->params, "Parameter override NAME=VALUE (repeatable; see 'ssfx methods')")
+        ->allow_extra_args(false);
+    cmd->add_option("--filtering", opts->filtering, "Bilinear model: gpu (default, matches GPUs) or exact (float)")
+        ->check(CLI::IsMember({"gpu", "exact"}));
+    cmd->add_option("--threads", opts->threads, "Worker threads (0 = all; the output bytes do not depend on it)")
+        ->check(CLI::Range(0, 1024));
+    cmd->add_flag("--list-presets", opts->listPresets, "Print the presets with their thresholds and exit");
+    cmd->callback([opts] { run(*opts); });
+}
+
+}  // namespace ssfx::cli

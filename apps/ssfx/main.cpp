@@ -1,0 +1,40 @@
+// ssfx: screen-space effects from the command line.
+// Exit codes: 0 success, 2 bad input or usage (the message says what), 1 internal failure.
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <exception>
+
+#include "commands.hpp"
+#include "ssfx/core/error.hpp"
+
+int main(int argc, char** argv) {
+    CLI::App app{"ssfx: screen-space rendering effects (post-processing anti-aliasing, resolves)\n"
+                 "Run 'ssfx <command> --help' for the options of a command.",
+                 "ssfx"};
+    app.require_subcommand(1);
+    app.set_version_flag("--version", "ssfx 0.1.0");
+    ssfx::cli::addAaCommand(app);
+    ssfx::cli::addMethodsCommand(app);
+    ssfx::cli::addBenchCommand(app);
+    ssfx::cli::addTestsceneCommand(app);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        app.exit(e);
+        return 2;
+    } catch (const ssfx::Error& e) {
+        std::fprintf(stderr, "ssfx: error: %s\n", e.what());
+        return 2;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "ssfx: internal error: %s\n", e.what());
+        return 1;
+    }
+    return 0;
+}

@@ -1,0 +1,54 @@
+#!/usr/bin/env bash
+# Behaviour of the ssfx tool: help on every subcommand, exit codes, no partial outputs,
+# PNG and APNG round trips.
+set -u
+SSFX=$1
+OUT=$2
+rm -rf "$OUT" && mkdir -p "$OUT"
+fail=0
+check() {  # check NAME EXPECTED_EXIT CMD...
+  local name=$1 want=$2; shift 2
+  "$@" >"$OUT/$name.out" 2>"$OUT/$name.err"
+  local got=$?
+  if [ "$got" != "$want" ]; then echo "FAIL $name: exit $got, expected $want"; cat "$OUT/$name.err"; fail=1; fi
+}
+contains() {  # contains NAME FILE TEXT
+  grep -q -- "$3" "$2" || { echo "FAIL $1: '$3' not in $2"; fail=1; }
+}
+
+check help 0 "$SSFX" --help
+for c in aa methods bench testscene; do check "help_$c" 0 "$SSFX" "$c" --help; done
+contains help_aa "$OUT/help_aa.out" "ddaa2"
+check methods 0 "$SSFX" methods
+contains methods "$OUT/methods.out" "searchRounds"
+check presets 0 "$SSFX" aa --list-presets
+contains presets "$OUT/presets.out" "extreme"
+
+check scene 0 "$SSFX" testscene --out "$OUT/scene" --width 64 --height 48
+check aa 0 "$SSFX" aa -m ddaa2 "$OUT/scene/scene.png" -o "$OUT/ddaa2.png" --preset high --threads 2
+[ -s "$OUT/ddaa2.png" ] || { echo "FAIL aa: no output"; fail=1; }
+check resolve 0 "$SSFX" aa -m ssaax4 "$OUT/scene/scenex4.png" -o "$OUT/ssaax4.png"
+check param 0 "$SSFX" aa -m ddaa2 -p strength=2 -p searchRounds=3 "$OUT/scene/scene.png" -o "$OUT/p.png"
+
+# Bad inputs: exit 2, a message naming the problem, and no output file.
+check missing 2 "$SSFX" aa -m ddaa2 "$OUT/nope.png" -o "$OUT/missing.png"
+contains missing "$OUT/missing.err" "nope.png"
+[ ! -e "$OUT/missing.png" ] || { echo "FAIL missing: output written"; fail=1; }
+head -c 100 "$OUT/scene/scene.png" >"$OUT/trunc.png"
+check truncated 2 "$SSFX" aa -m ddaa2 "$OUT/trunc.png" -o "$OUT/t.png"
+[ ! -e "$OUT/t.png" ] || { echo "FAIL truncated: output written"; fail=1; }
+check method 2 "$SSFX" aa -m smaa "$OUT/scene/scene.png" -o "$OUT/m.png"
+contains method "$OUT/method.err" "unknown method"
+check range 2 "$SSFX" aa -m ddaa2 -p strength=-1 "$OUT/scene/scene.png" -o "$OUT/r.png"
+contains range "$OUT/range.err" "strength"
+check odd 2 "$SSFX" aa -m ssaax2 "$OUT/trunc.png" -o "$OUT/o.png"
+check usage 2 "$SSFX" aa --threads=-3
+check nocmd 2 "$SSFX"
+
+# An existing output survives a failed run untouched.
+cp "$OUT/ddaa2.png" "$OUT/keep.png"
+check keep 2 "$SSFX" aa -m ddaa2 "$OUT/trunc.png" -o "$OUT/keep.png"
+cmp -s "$OUT/ddaa2.png" "$OUT/keep.png" || { echo "FAIL keep: existing output changed"; fail=1; }
+
+[ $fail = 0 ] && echo "cli: all checks passed"
+exit $fail

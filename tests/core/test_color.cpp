@@ -1,0 +1,38 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "ssfx/core/color.hpp"
+#include "support/test_support.hpp"
+
+using namespace ssfx;
+
+TEST(Color, LumaOfBlackWhiteAndPrimaries) {
+    EXPECT_EQ(luma(0, 0, 0), 0.0f);
+    EXPECT_NEAR(luma(1, 1, 1), 1.0f, 1e-7f);
+    EXPECT_NEAR(luma(1, 0, 0), std::sqrt(0.299f), 1e-7f);
+    EXPECT_NEAR(luma(0, 1, 0), std::sqrt(0.587f), 1e-7f);
+}
+
+TEST(Color, ToUnorm8RoundsTheExactProduct) {
+    EXPECT_EQ(toUnorm8(0.0f), 0);
+    EXPECT_EQ(toUnorm8(1.0f), 255);
+    EXPECT_EQ(toUnorm8(-0.5f), 0);
+    EXPECT_EQ(toUnorm8(7.0f), 255);
+    EXPECT_EQ(toUnorm8(std::nanf("")), 0);
+    EXPECT_EQ(toUnorm8(100.0f / 255.0f), 100);
+    // 0.672549009f * 255 is 171.49999...(exact) but 171.5 after a float32 multiply; the
+    // reference GPU output is 171 (measured on circles_ddaa2.png).
+    EXPECT_EQ(toUnorm8(0.672549009f), 171);
+    EXPECT_EQ(toUnorm8(171.5f / 255.0f + 1e-6f), 172);
+}
+
+TEST(Color, LumaPlaneMatchesPerPixelLuma) {
+    const auto img = test::noise(37, 5, 3);
+    const ImageF L = lumaPlane(img.view());
+    for (int y = 0; y < img.height(); ++y)
+        for (int x = 0; x < img.width(); ++x) {
+            const Rgba8 p = img(x, y);
+            ASSERT_EQ(L(x, y), luma(kUnorm8[p.r], kUnorm8[p.g], kUnorm8[p.b])) << x << "," << y;
+        }
+}

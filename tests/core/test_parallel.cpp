@@ -1,0 +1,27 @@
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <vector>
+
+#include "ssfx/core/parallel.hpp"
+
+using namespace ssfx;
+
+TEST(Parallel, CoversEveryRowExactlyOnceInFixedBlocks) {
+    for (int threads : {1, 2, 7}) {
+        for (int h : {1, 15, 16, 17, 100}) {
+            std::vector<std::atomic<int>> hits(static_cast<std::size_t>(h));
+            parallelRows(h, Exec{threads}, [&](int y0, int y1) {
+                EXPECT_EQ(y0 % kRowBlock, 0);
+                EXPECT_LE(y1 - y0, kRowBlock);
+                for (int y = y0; y < y1; ++y) hits[std::size_t(y)]++;
+            });
+            for (auto& c : hits) EXPECT_EQ(c.load(), 1);
+        }
+    }
+}
+
+TEST(Parallel, ZeroMeansAllHardwareThreads) {
+    EXPECT_GE(resolvedThreads(Exec{0}), 1);
+    EXPECT_EQ(resolvedThreads(Exec{3}), 3);
+}
