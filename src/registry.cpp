@@ -27,7 +27,9 @@ using Member = std::variant<float P::*, int P::*, bool P::*>;
 template <class P, std::size_t N>
 P applySettings(std::string_view id, P params, const std::array<ParamInfo, N>& infos,
                 const std::array<Member<P>, N>& members, const MethodSettings& s) {
-    for (const auto& [name, value] : s.params) {
+    for (const auto& entry : s.params) {
+        const std::string& name = entry.first;  // no structured bindings: lambdas capture these
+        const double value = entry.second;
         std::size_t i = 0;
         while (i < N && infos[i].name != name) ++i;
         if (i == N) {

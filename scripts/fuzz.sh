@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets (preset "fuzz", clang) and runs each for $1 seconds (default
+# 60) from the committed seed corpus; first it replays every past crash in
+# fuzz/regressions/ (each must now pass). A new crash fails the run; its input is kept under
+# build/fuzz/crashes/ -- add it to fuzz/regressions/ with the fix.
+set -euo pipefail
+SECONDS_PER_TARGET=${1:-60}
+cd "$(dirname "$0")/.."
+if ! command -v clang++ >/dev/null; then echo "fuzz: clang++ missing (run scripts/setup.sh)" >&2; exit 1; fi
+cmake --preset fuzz >/dev/null
+cmake --build build/fuzz -j "$(nproc)" >/dev/null
+mkdir -p build/fuzz/crashes
+for t in png apng aa; do
+  bin=build/fuzz/fuzz/fuzz_$t
+  work=build/fuzz/corpus_$t
+  mkdir -p "$work"
+  seeds=fuzz/corpus/$t
+  if ls fuzz/regressions/* >/dev/null 2>&1; then "$bin" fuzz/regressions/* >/dev/null 2>&1; fi
+  echo "fuzz: $t for ${SECONDS_PER_TARGET}s"
+  "$bin" -max_total_time="$SECONDS_PER_TARGET" -rss_limit_mb=2048 -timeout=10 \
+    -artifact_prefix=build/fuzz/crashes/${t}- "$work" "$seeds" 2>build/fuzz/$t.log ||
+    { tail -n 40 build/fuzz/$t.log; echo "fuzz: $t found a crash (see build/fuzz/crashes)"; exit 1; }
+  grep -E "^#[0-9]+.*DONE" build/fuzz/$t.log | tail -n 1 || true
+done
+echo "fuzz: no crashes"
