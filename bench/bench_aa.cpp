@@ -3,6 +3,7 @@
 // `blur` as baselines in the same binary. Unit: Mpix/s of output.
 #include <benchmark/benchmark.h>
 
+#include "ssfx/core/memory.hpp"
 #include "ssfx/eval/synthetic.hpp"
 #include "ssfx/registry.hpp"
 
@@ -38,4 +39,11 @@ const bool registered = [] {
 
 }  // namespace
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+    ssfx::tuneAllocatorForImages();  // steady state of a renderer: buffers are reused
+    benchmark::Initialize(&argc, argv);
+    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    return 0;
+}

@@ -7,8 +7,10 @@
 
 #include "commands.hpp"
 #include "ssfx/core/error.hpp"
+#include "ssfx/core/memory.hpp"
 
 int main(int argc, char** argv) {
+    ssfx::tuneAllocatorForImages();  // frames and benchmark repetitions reuse their buffers
     CLI::App app{"ssfx: screen-space rendering effects (post-processing anti-aliasing, resolves)\n"
                  "Run 'ssfx <command> --help' for the options of a command.",
                  "ssfx"};

@@ -1,13 +1,24 @@
 // blur: 3x3 truncated Gaussian (DDAA paper section 3.1, the "poor result" baseline and the
 // speed baseline: every timing is reported relative to it). Spec ppaa.md "blur".
-#include "ssfx/aa/blur.hpp"
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "src/aa/blur-inl.h"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+#include <hwy/highway.h>
 
+#include "src/aa/blur-inl.h"
+
+#if HWY_ONCE
 #include <cmath>
 
-#include "blur_kernel.hpp"
-#include "ppaa_common.hpp"
+#include "src/aa/blur_kernel.hpp"
+#include "src/aa/ppaa_common.hpp"
+#include "ssfx/aa/blur.hpp"
 
 namespace ssfx::aa {
+
+namespace detail {
+HWY_EXPORT(BlurRows);
+}  // namespace detail
 
 namespace detail {
 
@@ -36,9 +47,8 @@ void blur(ImageView<const Rgba8> in, ImageView<Rgba8> out, const BlurParams& par
     detail::checkInput("blur", in);
     detail::checkOutput("blur", in, out);
     const detail::BlurWeights w = detail::blurWeights(params);
-    parallelRows(in.height(), exec, [&](int y0, int y1) {
-        for (int y = y0; y < y1; ++y) detail::blurRow(in, out, y, w);
-    });
+    parallelRows(in.height(), exec,
+                 [&](int y0, int y1) { HWY_DYNAMIC_DISPATCH(detail::BlurRows)(in, out, y0, y1, w); });
 }
 
 ImageRgba8 blur(ImageView<const Rgba8> in, const BlurParams& params, const Exec& exec) {
@@ -49,3 +59,4 @@ ImageRgba8 blur(ImageView<const Rgba8> in, const BlurParams& params, const Exec&
 }
 
 }  // namespace ssfx::aa
+#endif  // HWY_ONCE

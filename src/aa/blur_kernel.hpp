@@ -35,7 +35,4 @@ inline Rgba8 blurPixel(ImageView<const Rgba8> in, int x, int y, const BlurWeight
     return {ch(&Rgba8::r), ch(&Rgba8::g), ch(&Rgba8::b), c.a};
 }
 
-//! One output row (SIMD in the interior, blurPixel at the borders). In blur_simd.cpp.
-void blurRow(ImageView<const Rgba8> in, ImageView<Rgba8> out, int y, const BlurWeights& k);
-
 }  // namespace ssfx::aa::detail

@@ -27,7 +27,7 @@ struct SideResult {
 float edgeSearchOffset(const Texture& tex, int x, int y, const Luma3x3& n, const EdgeSides& s, int rounds) {
     const bool steep2 = std::fabs(s.g2) > std::fabs(s.g1);  // ties go to side 1
     const float lumaSteep = steep2 ? s.luma2 : s.luma1;
-    const float gradientScaled = 0.25f * std::fmax(std::fabs(s.g1), std::fabs(s.g2));
+    const float gradientScaled = 0.25f * maxf(std::fabs(s.g1), std::fabs(s.g2));
     const float localAverage = (lumaSteep + n.C) * 0.5f;
     const int across = steep2 ? 1 : -1;
 
@@ -49,29 +49,34 @@ float edgeSearchOffset(const Texture& tex, int x, int y, const Luma3x3& n, const
         cu += float(across) * 0.5f * tex.invW();
     const float invAlong = s.horizontal ? tex.invW() : tex.invH();
 
-    // Delta of a read at float position (c moved `move` texture units along the edge) plus
-    // an integer texel offset along the edge.
-    auto deltaAt = [&](float move, int texelOffset) {
-        const Rgb c = s.horizontal ? tex.sample(cu + move, cv, texelOffset, 0) : tex.sample(cu, cv + move, 0, texelOffset);
+    // The coordinate across the edge is the same for every read: split it once.
+    const Texture::AxisPos acrossPos = s.horizontal ? tex.axisV(cv) : tex.axisU(cu);
+    // Delta of a read at `along` (split coordinate along the edge) plus an integer texel
+    // offset along the edge.
+    auto deltaAt = [&](const Texture::AxisPos& along, int texelOffset) {
+        const Rgb c = s.horizontal ? tex.sample(along, acrossPos, texelOffset, 0)
+                                   : tex.sample(acrossPos, along, 0, texelOffset);
         return luma(c) - localAverage;
     };
+    auto alongAxis = [&](float move) { return s.horizontal ? tex.axisU(cu + move) : tex.axisV(cv + move); };
 
     const int maxDistance = kBatch * rounds;
     auto searchSide = [&](int sign, float first) -> SideResult {
         // Round 0: the free position 1, then reads at texel offsets 2 and 3 from c.
         float delta = first;
         if (std::fabs(delta) >= gradientScaled) return {1.0f, delta};
+        const Texture::AxisPos round0 = alongAxis(0.0f);
         for (int k = 2; k <= kBatch; ++k) {
-            delta = deltaAt(0.0f, sign * k);
+            delta = deltaAt(round0, sign * k);
             if (std::fabs(delta) >= gradientScaled) return {float(k), delta};
         }
         // Later rounds: one coordinate (c moved offset + 2 pixels) and texel offsets
         // -1, 0, +1 around it, nearest position first.
         for (int r = 1; r < rounds; ++r) {
             const int offset = kBatch * r;
-            const float move = float(sign) * (float(offset + 2) * invAlong);
+            const Texture::AxisPos along = alongAxis(float(sign) * (float(offset + 2) * invAlong));
             for (int k = -1; k <= 1; ++k) {
-                delta = deltaAt(move, sign * k);
+                delta = deltaAt(along, sign * k);
                 if (std::fabs(delta) >= gradientScaled) return {float(offset + 2 + k), delta};
             }
         }
@@ -81,7 +86,7 @@ float edgeSearchOffset(const Texture& tex, int x, int y, const Luma3x3& n, const
     const SideResult side2 = searchSide(+1, first2 - localAverage);
 
     const float d1 = side1.distance, d2 = side2.distance;
-    const float pixelOffset = 0.5f - std::fmin(d1, d2) / (d1 + d2);
+    const float pixelOffset = 0.5f - minf(d1, d2) / (d1 + d2);
     const float deltaNear = d1 < d2 ? side1.delta : side2.delta;  // ties: side 2
     // "Correct variation": the luma at the nearer end lies on the other side of the
     // local average than the centre, so the edge really ends there.
@@ -99,7 +104,7 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Ddaa2Params& p, 
     checkOutput("ddaa2", in, out);
     validate(p);
     const Texture tex(in, p.filtering);
-    const ImageF L = reference ? lumaPlaneReference(in) : lumaPlane(in);
+    const ImageF L = reference ? lumaPlaneReference(in) : lumaPlane(in, exec);
     runLumaMethod(in, out, L, p.edgeThresholdMin, p.edgeThreshold, exec, reference,
                   [&](int x, int y, const Luma3x3& n, float) {
                       const EdgeSides s = edgeSides(n);
@@ -107,7 +112,7 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Ddaa2Params& p, 
                       const float offset = edgeSearchOffset(tex, x, y, n, s, p.searchRounds);
                       // Combination (section 2.3): the search offset moves both diffusion
                       // reads, and a large offset (near an edge's end) weakens the diffusion.
-                      const float edgeStrength = std::fmin(1.0f, 2.0f * std::fabs(offset));
+                      const float edgeStrength = minf(1.0f, 2.0f * std::fabs(offset));
                       d.strength *= 1.0f - edgeStrength;
                       const float offU = s.horizontal ? 0.0f : offset * tex.invW();
                       const float offV = s.horizontal ? offset * tex.invH() : 0.0f;

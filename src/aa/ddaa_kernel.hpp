@@ -27,14 +27,14 @@ inline Diffusion diffusion(const Luma3x3& n, const EdgeSides& s, const Ddaa1Para
     const float raw = p.strength * std::sqrt(len);
     Diffusion d{0.0f, 0.0f, 0.0f};
     if (!(raw < 1e-6f)) {
-        d.strength = std::fmin(1.0f, raw);
+        d.strength = minf(1.0f, raw);
         d.dirX = ex / len;
         d.dirY = ey / len;
     }
     // Ridge or valley (both neighbours across the edge on the same side of C, e.g. a thin
     // line): diffuse less the steeper it is (section 2.2; AXAA only handled ridges).
     if ((s.g1 > 0.0f) == (s.g2 > 0.0f))
-        d.strength *= 1.0f - std::fmin(1.0f, p.ridgeFactor * std::fmin(std::fabs(s.g1), std::fabs(s.g2)));
+        d.strength *= 1.0f - minf(1.0f, p.ridgeFactor * minf(std::fabs(s.g1), std::fabs(s.g2)));
     return d;
 }
 

@@ -1,10 +1,61 @@
-// Temporary scalar early-exit mask (replaced by the Highway version).
-#include "luma_driver.hpp"
+// Early-exit mask of a row (spec ppaa.md section 1), vectorised with Highway. Same
+// comparisons as belowEdgeThreshold(); max/min and the one multiply are exact per lane.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "src/aa/early_exit.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+#include <hwy/highway.h>
+
+#include "src/aa/luma_driver.hpp"
+
+HWY_BEFORE_NAMESPACE();
 namespace ssfx::aa::detail {
-void earlyExitRow(const ImageF& L, int y, float thresholdMin, float threshold, std::uint8_t* exitMask) {
-    for (int x = 0; x < L.width(); ++x) {
+namespace HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+void ExitRow(const float* HWY_RESTRICT above, const float* HWY_RESTRICT row, const float* HWY_RESTRICT below, int w,
+             float thresholdMin, float threshold, std::uint8_t* HWY_RESTRICT mask) {
+    const hn::ScalableTag<float> df;
+    const hn::RebindToSigned<decltype(df)> di;
+    const hn::Rebind<std::uint8_t, decltype(df)> d8;
+    const int n = int(hn::Lanes(df));
+    const auto tMin = hn::Set(df, thresholdMin), t = hn::Set(df, threshold);
+    const auto one = hn::Set(di, 1);
+    auto scalar = [&](int x) {
+        const int xm = x > 0 ? x - 1 : 0, xp = x + 1 < w ? x + 1 : w - 1;
+        const Luma3x3 nb{row[x], row[xm], row[xp], above[x], below[x], 0, 0, 0, 0};
         float range;
-        exitMask[x] = belowEdgeThreshold(neighbourhood(L, x, y), thresholdMin, threshold, &range);
+        mask[x] = belowEdgeThreshold(nb, thresholdMin, threshold, &range);
+    };
+    scalar(0);
+    int x = 1;
+    for (; x + n <= w - 1; x += n) {
+        const auto c = hn::LoadU(df, row + x);
+        const auto lw = hn::LoadU(df, row + x - 1), le = hn::LoadU(df, row + x + 1);
+        const auto ls = hn::LoadU(df, above + x), ln = hn::LoadU(df, below + x);
+        const auto mx = hn::Max(hn::Max(hn::Max(ls, ln), hn::Max(lw, le)), c);
+        const auto mn = hn::Min(hn::Min(hn::Min(ls, ln), hn::Min(lw, le)), c);
+        const auto below_ = hn::Lt(hn::Sub(mx, mn), hn::Max(tMin, hn::Mul(mx, t)));
+        hn::StoreU(hn::DemoteTo(d8, hn::IfThenElseZero(hn::RebindMask(di, below_), one)), d8, mask + x);
     }
+    for (; x < w; ++x) scalar(x);
 }
+
+}  // namespace HWY_NAMESPACE
 }  // namespace ssfx::aa::detail
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace ssfx::aa::detail {
+
+HWY_EXPORT(ExitRow);
+
+void earlyExitRow(const ImageF& L, int y, float thresholdMin, float threshold, std::uint8_t* exitMask) {
+    const int h = L.height(), w = L.width();
+    const float* above = L.data() + std::size_t(y > 0 ? y - 1 : 0) * std::size_t(w);
+    const float* row = L.data() + std::size_t(y) * std::size_t(w);
+    const float* below = L.data() + std::size_t(y + 1 < h ? y + 1 : h - 1) * std::size_t(w);
+    HWY_DYNAMIC_DISPATCH(ExitRow)(above, row, below, w, thresholdMin, threshold, exitMask);
+}
+
+}  // namespace ssfx::aa::detail
+#endif

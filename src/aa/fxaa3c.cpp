@@ -25,7 +25,7 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Fxaa3cParams& p,
     checkOutput("fxaa3c", in, out);
     validate(p);
     const Texture tex(in, p.filtering);
-    const ImageF L = reference ? lumaPlaneReference(in) : lumaPlane(in);
+    const ImageF L = reference ? lumaPlaneReference(in) : lumaPlane(in, exec);
     // At +-1 pixel the diagonal reads land on pixel centres, which return the pixel
     // (spec section 1): luma plane lookups.
     const bool centres = p.diagonalOffset == 1.0f;
@@ -40,10 +40,9 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Fxaa3cParams& p,
         const float lumaNW = diag(-1, -1), lumaSW = diag(-1, +1), lumaSE = diag(+1, +1);
         const float lumaNE = diag(+1, -1) + 1.0f / 384.0f;  // FXAA: keeps dir from being 0
         const float lumaM = L(x, y);
-        const float lumaMax = std::fmax(std::fmax(lumaNE, lumaSE), std::fmax(lumaNW, lumaSW));
-        const float lumaMin = std::fmin(std::fmin(lumaNE, lumaSE), std::fmin(lumaNW, lumaSW));
-        if (std::fmax(lumaMax, lumaM) - std::fmin(lumaMin, lumaM) <
-            std::fmax(p.edgeThresholdMin, lumaMax * p.edgeThreshold))
+        const float lumaMax = maxf(maxf(lumaNE, lumaSE), maxf(lumaNW, lumaSW));
+        const float lumaMin = minf(minf(lumaNE, lumaSE), minf(lumaNW, lumaSW));
+        if (maxf(lumaMax, lumaM) - minf(lumaMin, lumaM) < maxf(p.edgeThresholdMin, lumaMax * p.edgeThreshold))
             return m;
 
         const float swMinusNe = lumaSW - lumaNE, seMinusNw = lumaSE - lumaNW;
@@ -54,7 +53,7 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Fxaa3cParams& p,
         const float h = 0.5f;  // first pair of taps at +-0.5 px along the edge
         const Rgb n1 = tex.sample(u - d1x * h * tex.invW(), v - d1y * h * tex.invH());
         const Rgb p1 = tex.sample(u + d1x * h * tex.invW(), v + d1y * h * tex.invH());
-        const float minAbs = std::fmin(std::fabs(d1x), std::fabs(d1y)) * p.edgeSharpness;
+        const float minAbs = minf(std::fabs(d1x), std::fabs(d1y)) * p.edgeSharpness;
         // fmax/fmin return the non-NaN operand, as GPU clamp does for 0/0.
         const float d2x = std::fmin(std::fmax(d1x / minAbs, -2.0f), 2.0f);
         const float d2y = std::fmin(std::fmax(d1y / minAbs, -2.0f), 2.0f);

@@ -20,7 +20,7 @@ Rgb fxaa3dPixel(const Texture& tex, int x, int y, const Luma3x3& n, float range,
     const EdgeSides s = edgeSides(n);
     const bool pair1 = std::fabs(s.g1) >= std::fabs(s.g2);  // steeper side; ties go to side 1
     const float lumaSteep = pair1 ? s.luma1 : s.luma2;
-    const float gradientScaled = 0.25f * std::fmax(std::fabs(s.g1), std::fabs(s.g2));
+    const float gradientScaled = 0.25f * maxf(std::fabs(s.g1), std::fabs(s.g2));
     const float localAverage = (lumaSteep + n.C) * 0.5f;
     float lengthSign = s.horizontal ? tex.invH() : tex.invW();
     if (pair1) lengthSign = -lengthSign;
@@ -62,16 +62,18 @@ Rgb fxaa3dPixel(const Texture& tex, int x, int y, const Luma3x3& n, float range,
     const bool goodSpanN = (endN < 0.0f) != centreBelow;
     const bool goodSpanP = (endP < 0.0f) != centreBelow;
     const bool directionN = dstN < dstP;
-    const float pixelOffset = 0.5f - std::fmin(dstN, dstP) / (dstN + dstP);
+    const float pixelOffset = 0.5f - minf(dstN, dstP) / (dstN + dstP);
     const bool goodSpan = directionN ? goodSpanN : goodSpanP;
 
     // Sub-pixel aliasing term (FXAA 3.11 subpix, spec step 6).
     const float avg = (1.0f / 12.0f) * (2.0f * ((n.S + n.N) + (n.W + n.E)) + (n.SW + n.NW) + (n.SE + n.NE));
-    float sp = std::fmin(std::fmax(std::fabs(avg - n.C) / range, 0.0f), 1.0f);
+    // range is 0 only when both thresholds are 0 and the pixel is flat: no sub-pixel term
+    // (a GPU's saturate(0/0) gives 0 too).
+    float sp = range > 0.0f ? minf(maxf(std::fabs(avg - n.C) / range, 0.0f), 1.0f) : 0.0f;
     sp = (-2.0f * sp + 3.0f) * sp * sp;
     const float sub = sp * sp * p.subpix;
 
-    const float offset = std::fmax(goodSpan ? pixelOffset : 0.0f, sub);
+    const float offset = maxf(goodSpan ? pixelOffset : 0.0f, sub);
     return s.horizontal ? tex.sample(u, v + offset * lengthSign) : tex.sample(u + offset * lengthSign, v);
 }
 
@@ -86,7 +88,7 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Fxaa3dParams& p,
     checkOutput("fxaa3d", in, out);
     validate(p);
     const Texture tex(in, p.filtering);
-    const ImageF L = reference ? lumaPlaneReference(in) : lumaPlane(in);
+    const ImageF L = reference ? lumaPlaneReference(in) : lumaPlane(in, exec);
     runLumaMethod(in, out, L, p.edgeThresholdMin, p.edgeThreshold, exec, reference,
                   [&](int x, int y, const Luma3x3& n, float range) { return fxaa3dPixel(tex, x, y, n, range, p); });
 }

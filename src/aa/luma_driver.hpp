@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 #include "ppaa_common.hpp"
@@ -24,12 +25,25 @@ void runLumaMethod(ImageView<const Rgba8> in, ImageView<Rgba8> out, const ImageF
         for (int y = y0; y < y1; ++y) {
             const Rgba8* src = in.row(y);
             Rgba8* dst = out.row(y);
-            if (!reference) earlyExitRow(L, y, thresholdMin, threshold, mask.data());
-            for (int x = 0; x < in.width(); ++x) {
-                if (!reference && mask[std::size_t(x)]) {
-                    dst[x] = src[x];
-                    continue;
+            if (!reference) {
+                earlyExitRow(L, y, thresholdMin, threshold, mask.data());
+                // Copy runs of unchanged pixels at once; run the kernel on the others.
+                const std::uint8_t* m = mask.data();
+                int x = 0;
+                while (x < in.width()) {
+                    int end = x;
+                    while (end < in.width() && m[end]) ++end;
+                    std::memcpy(dst + x, src + x, std::size_t(end - x) * sizeof(Rgba8));
+                    for (x = end; x < in.width() && !m[x]; ++x) {
+                        const Luma3x3 n = neighbourhood(L, x, y);
+                        float range;
+                        belowEdgeThreshold(n, thresholdMin, threshold, &range);
+                        dst[x] = toRgba8(pixel(x, y, n, range), src[x].a);
+                    }
                 }
+                continue;
+            }
+            for (int x = 0; x < in.width(); ++x) {
                 const Luma3x3 n = neighbourhood(L, x, y);
                 float range;
                 if (belowEdgeThreshold(n, thresholdMin, threshold, &range)) {

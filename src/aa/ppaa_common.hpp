@@ -38,6 +38,11 @@ inline void checkOutput(const char* method, ImageView<const Rgba8> in, ImageView
     if (ob < ie && ib < oe) throw Error(fmt::format("{}: output must not overlap the input", method));
 }
 
+//! max/min for values that are never NaN (luma, distances). std::fmax/fmin are out-of-line
+//! libm calls because of their NaN rules; these compile to maxss/minss.
+inline float maxf(float a, float b) { return a < b ? b : a; }
+inline float minf(float a, float b) { return b < a ? b : a; }
+
 inline Rgba8 toRgba8(const Rgb& c, std::uint8_t alpha) {
     return {toUnorm8(c.r), toUnorm8(c.g), toUnorm8(c.b), alpha};
 }
@@ -61,10 +66,10 @@ inline Luma3x3 neighbourhood(const ImageF& L, int x, int y) {
 //! Early exit of section 1: true when the pixel is left unchanged. `range` receives
 //! lumaMax - lumaMin over the centre and its four direct neighbours.
 inline bool belowEdgeThreshold(const Luma3x3& n, float thresholdMin, float threshold, float* range) {
-    const float lumaMax = std::fmax(std::fmax(std::fmax(n.S, n.N), std::fmax(n.W, n.E)), n.C);
-    const float lumaMin = std::fmin(std::fmin(std::fmin(n.S, n.N), std::fmin(n.W, n.E)), n.C);
+    const float lumaMax = maxf(maxf(maxf(n.S, n.N), maxf(n.W, n.E)), n.C);
+    const float lumaMin = minf(minf(minf(n.S, n.N), minf(n.W, n.E)), n.C);
     *range = lumaMax - lumaMin;
-    return *range < std::fmax(thresholdMin, lumaMax * threshold);
+    return *range < maxf(thresholdMin, lumaMax * threshold);
 }
 
 //! Edge orientation (FXAA 3.11 quality, spec fxaa3d steps 2-3). Sums left to right as

@@ -1,13 +1,58 @@
-// Temporary scalar luma plane (replaced by the Highway version).
+// Luma plane, vectorised with Highway (runtime dispatch to the best SIMD target).
+// Per lane the same float32 operations as ssfx::luma(): v / 255 (exact IEEE division),
+// then ((0.299 r + 0.587 g) + 0.114 b) without fused multiply-add, then sqrt; so the
+// plane equals the scalar reference bit for bit (tests/core/test_color.cpp).
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "src/core/color.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+#include <hwy/highway.h>
+
 #include "ssfx/core/color.hpp"
+#include "ssfx/core/parallel.hpp"
+
+HWY_BEFORE_NAMESPACE();
 namespace ssfx {
-ImageF lumaPlane(ImageView<const Rgba8> in) {
+namespace HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+void LumaRow(const Rgba8* HWY_RESTRICT in, float* HWY_RESTRICT out, int w) {
+    const hn::ScalableTag<float> df;
+    const hn::RebindToUnsigned<decltype(df)> du;
+    const hn::RebindToSigned<decltype(df)> di;
+    const int n = int(hn::Lanes(df));
+    const auto mask = hn::Set(du, 0xFFu);
+    const auto k255 = hn::Set(df, 255.0f);
+    const auto wr = hn::Set(df, 0.299f), wg = hn::Set(df, 0.587f), wb = hn::Set(df, 0.114f);
+    int x = 0;
+    for (; x + n <= w; x += n) {
+        // One pixel per 32-bit lane, little-endian: r in the low byte.
+        const auto v = hn::LoadU(du, reinterpret_cast<const std::uint32_t*>(in + x));
+        const auto r = hn::Div(hn::ConvertTo(df, hn::BitCast(di, hn::And(v, mask))), k255);
+        const auto g = hn::Div(hn::ConvertTo(df, hn::BitCast(di, hn::And(hn::ShiftRight<8>(v), mask))), k255);
+        const auto b = hn::Div(hn::ConvertTo(df, hn::BitCast(di, hn::And(hn::ShiftRight<16>(v), mask))), k255);
+        const auto y = hn::Add(hn::Add(hn::Mul(wr, r), hn::Mul(wg, g)), hn::Mul(wb, b));
+        hn::StoreU(hn::Sqrt(y), df, out + x);
+    }
+    for (; x < w; ++x) out[x] = luma(kUnorm8[in[x].r], kUnorm8[in[x].g], kUnorm8[in[x].b]);
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace ssfx
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace ssfx {
+
+static_assert(std::endian::native == std::endian::little, "LumaRow assumes little-endian pixels");
+HWY_EXPORT(LumaRow);
+
+ImageF lumaPlane(ImageView<const Rgba8> in, const Exec& exec) {
     ImageF L(in.width(), in.height());
-    for (int y = 0; y < in.height(); ++y)
-        for (int x = 0; x < in.width(); ++x) {
-            const Rgba8 p = in(x, y);
-            L(x, y) = luma(kUnorm8[p.r], kUnorm8[p.g], kUnorm8[p.b]);
-        }
+    parallelRows(in.height(), exec, [&](int y0, int y1) {
+        for (int y = y0; y < y1; ++y) HWY_DYNAMIC_DISPATCH(LumaRow)(in.row(y), L.view().row(y), in.width());
+    });
     return L;
 }
+
 }  // namespace ssfx
+#endif

@@ -10,8 +10,10 @@
 namespace ssfx {
 
 int resolvedThreads(const Exec& exec) {
-    if (exec.threads > 0) return exec.threads;
-    return std::max(1, tbb::this_task_arena::max_concurrency());
+    // More threads than the hardware has cannot run at once; asking oneTBB for them only
+    // earns a warning. The bytes produced do not depend on the count either way.
+    const int hardware = std::max(1, tbb::this_task_arena::max_concurrency());
+    return exec.threads > 0 ? std::min(exec.threads, hardware) : hardware;
 }
 
 void parallelRows(int height, const Exec& exec, const std::function<void(int, int)>& fn) {

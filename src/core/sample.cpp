@@ -2,30 +2,42 @@
 
 namespace ssfx {
 
-Rgb Texture::sampleGpu(float u, float v, int ox, int oy) const {
-    const Axis ax = axis(u, fw_, w_, ox);
-    const Axis ay = axis(v, fh_, h_, oy);
-    const Rgba8* r0 = img_.row(ay.i0);
-    const Rgba8* r1 = img_.row(ay.i1);
-    const Rgba8 t00 = r0[ax.i0], t10 = r0[ax.i1], t01 = r1[ax.i0], t11 = r1[ax.i1];
+namespace {
+std::array<float, 4081> makeSixteenths() {
+    std::array<float, 4081> t{};
+    for (int k = 0; k <= 4080; ++k) t[std::size_t(k)] = static_cast<float>(k) / 4080.0f;
+    return t;
+}
+}  // namespace
+
+const std::array<float, 4081> kSixteenthLevels = makeSixteenths();
+
+Rgb Texture::sampleGpu(const AxisPos& ax, const AxisPos& ay, int ox, int oy) const {
+    int x0, x1, y0, y1;
+    pair(ax.index + ox, w_, &x0, &x1);
+    pair(ay.index + oy, h_, &y0, &y1);
+    const Rgba8* r0 = img_.row(y0);
+    const Rgba8* r1 = img_.row(y1);
+    const Rgba8 t00 = r0[x0], t10 = r0[x1], t01 = r1[x0], t11 = r1[x1];
     // Exact weights in 1/65536 units; the sum is at most 65536 * 255 (fits in int32).
     const int w00 = (256 - ax.w) * (256 - ay.w), w10 = ax.w * (256 - ay.w);
     const int w01 = (256 - ax.w) * ay.w, w11 = ax.w * ay.w;
     auto channel = [&](std::uint8_t a, std::uint8_t b, std::uint8_t c, std::uint8_t d) {
         const int sum = w00 * a + w10 * b + w01 * c + w11 * d;
         const int k = (sum + 2048) >> 12;  // round half up to 1/16 level (4096 units)
-        return static_cast<float>(k) / 4080.0f;  // k / (255 * 16)
+        return kSixteenthLevels[std::size_t(k)];  // k / (255 * 16)
     };
     return {channel(t00.r, t10.r, t01.r, t11.r), channel(t00.g, t10.g, t01.g, t11.g),
             channel(t00.b, t10.b, t01.b, t11.b)};
 }
 
-Rgb Texture::sampleExact(float u, float v, int ox, int oy) const {
-    const Axis ax = axis(u, fw_, w_, ox);
-    const Axis ay = axis(v, fh_, h_, oy);
-    const Rgba8* r0 = img_.row(ay.i0);
-    const Rgba8* r1 = img_.row(ay.i1);
-    const Rgba8 t00 = r0[ax.i0], t10 = r0[ax.i1], t01 = r1[ax.i0], t11 = r1[ax.i1];
+Rgb Texture::sampleExact(const AxisPos& ax, const AxisPos& ay, int ox, int oy) const {
+    int x0, x1, y0, y1;
+    pair(ax.index + ox, w_, &x0, &x1);
+    pair(ay.index + oy, h_, &y0, &y1);
+    const Rgba8* r0 = img_.row(y0);
+    const Rgba8* r1 = img_.row(y1);
+    const Rgba8 t00 = r0[x0], t10 = r0[x1], t01 = r1[x0], t11 = r1[x1];
     const float fx = ax.frac, fy = ay.frac;
     auto channel = [&](std::uint8_t a, std::uint8_t b, std::uint8_t c, std::uint8_t d) {
         const float top = kUnorm8[a] + (kUnorm8[b] - kUnorm8[a]) * fx;

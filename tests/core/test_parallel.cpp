@@ -23,5 +23,6 @@ TEST(Parallel, CoversEveryRowExactlyOnceInFixedBlocks) {
 
 TEST(Parallel, ZeroMeansAllHardwareThreads) {
     EXPECT_GE(resolvedThreads(Exec{0}), 1);
-    EXPECT_EQ(resolvedThreads(Exec{3}), 3);
+    EXPECT_EQ(resolvedThreads(Exec{1}), 1);
+    EXPECT_LE(resolvedThreads(Exec{1000}), resolvedThreads(Exec{0}));  // capped at the hardware
 }

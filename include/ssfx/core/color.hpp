@@ -2,9 +2,11 @@
 #pragma once
 
 #include <cmath>
+#include <bit>
 #include <cstdint>
 
 #include "ssfx/core/image.hpp"
+#include "ssfx/core/parallel.hpp"
 #include "ssfx/core/sample.hpp"
 
 namespace ssfx {
@@ -27,6 +29,7 @@ inline std::uint8_t toUnorm8(float v) {
 }
 
 //! Luma plane of an RGBA8 image (one float per pixel; reads at pixel centres become lookups).
-ImageF lumaPlane(ImageView<const Rgba8> image);
+//! SIMD and threaded; equal to luma() per pixel, bit for bit.
+ImageF lumaPlane(ImageView<const Rgba8> image, const Exec& exec = {});
 
 }  // namespace ssfx

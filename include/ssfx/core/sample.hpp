@@ -38,6 +38,10 @@ constexpr std::array<float, 256> makeUnormTable() {
 //! 8-bit unorm to float: v / 255 rounded to float32 (what a GPU returns for rgba8unorm).
 inline constexpr std::array<float, 256> kUnorm8 = detail::makeUnormTable();
 
+//! k / (255 * 16) rounded to float32, for k = 0 .. 4080: a GPU-model filtered channel.
+//! A table lookup instead of a division; the same correctly rounded floats.
+extern const std::array<float, 4081> kSixteenthLevels;
+
 struct Rgb {
     float r = 0, g = 0, b = 0;
 };
@@ -74,30 +78,40 @@ public:
     }
 
     //! Bilinear read at texture coordinate (u, v) plus an integer texel offset (ox, oy).
-    Rgb sample(float u, float v, int ox = 0, int oy = 0) const {
-        return filtering_ == Filtering::Gpu ? sampleGpu(u, v, ox, oy) : sampleExact(u, v, ox, oy);
+    Rgb sample(float u, float v, int ox = 0, int oy = 0) const { return sample(axisU(u), axisV(v), ox, oy); }
+
+    //! A coordinate split into texel index and sub-texel weight along one axis. Reads that
+    //! share a coordinate and differ by integer texel offsets (batched reads) split it once.
+    struct AxisPos {
+        int index;   //!< floor(coord * size - 0.5), clamped to [-4, size + 4]
+        float frac;  //!< fraction (Exact model)
+        int w;       //!< fraction rounded to 1/256, 0..256 (Gpu model)
+    };
+    AxisPos axisU(float u) const { return axis(u, fw_, w_); }
+    AxisPos axisV(float v) const { return axis(v, fh_, h_); }
+    //! The read at split coordinates plus integer texel offsets; same result as sample().
+    Rgb sample(const AxisPos& ax, const AxisPos& ay, int ox, int oy) const {
+        return filtering_ == Filtering::Gpu ? sampleGpu(ax, ay, ox, oy) : sampleExact(ax, ay, ox, oy);
     }
 
 private:
-    struct Axis {
-        int i0, i1;  // clamped texel indices
-        float frac;  // exact fraction (Exact model)
-        int w;       // fraction in 1/256 steps, 0..256 (Gpu model)
-    };
-    static Axis axis(float coord, float size, int n, int offset) {
+    static AxisPos axis(float coord, float size, int n) {
         const float t = coord * size - 0.5f;
         const float fl = std::floor(t);
-        // Clamp before converting: coordinates far outside the texture read the edge anyway.
-        const float flc = fl < -4.0f ? -4.0f : (fl > static_cast<float>(n) + 4.0f ? static_cast<float>(n) + 4.0f : fl);
-        const int i = static_cast<int>(flc) + offset;
+        // Clamp before converting: coordinates far outside the texture read the edge anyway
+        // (and NaN, which no valid caller produces, lands on -4).
+        const float lim = static_cast<float>(n) + 4.0f;
+        const float flc = fl >= -4.0f ? (fl < lim ? fl : lim) : -4.0f;
         const float frac = t - fl;
-        const int w = static_cast<int>(frac * 256.0f + 0.5f);  // round half up to 1/256
-        const int i0 = i < 0 ? 0 : (i >= n ? n - 1 : i);
-        const int i1 = i + 1 < 0 ? 0 : (i + 1 >= n ? n - 1 : i + 1);
-        return {i0, i1, frac, w};
+        return {static_cast<int>(flc), frac, static_cast<int>(frac * 256.0f + 0.5f)};  // round half up to 1/256
     }
-    Rgb sampleGpu(float u, float v, int ox, int oy) const;
-    Rgb sampleExact(float u, float v, int ox, int oy) const;
+    // Clamped texel pair along an axis of n texels.
+    static void pair(int i, int n, int* i0, int* i1) {
+        *i0 = i < 0 ? 0 : (i >= n ? n - 1 : i);
+        *i1 = i + 1 < 0 ? 0 : (i + 1 >= n ? n - 1 : i + 1);
+    }
+    Rgb sampleGpu(const AxisPos& ax, const AxisPos& ay, int ox, int oy) const;
+    Rgb sampleExact(const AxisPos& ax, const AxisPos& ay, int ox, int oy) const;
 
     ImageView<const Rgba8> img_;
     int w_, h_;
