@@ -118,20 +118,34 @@ P withFiltering(P p, const MethodSettings& s) {
     return p;
 }
 
-// ---- run adapters -------------------------------------------------------------------
-ImageRgba8 runNoaa(ImageView<const Rgba8> in, const MethodSettings& s, const Exec&) {
+// ---- run adapters: each method's `into` function; `run` allocates and calls it -----
+template <RunIntoFn Into, int Scale>
+ImageRgba8 allocating(ImageView<const Rgba8> in, const MethodSettings& s, const Exec& e) {
+    checkDimensions(in.width(), in.height(), "input");
+    if (in.width() % Scale != 0 || in.height() % Scale != 0)
+        throw Error(fmt::format("input size {}x{} is not divisible by {} (the method takes the {}x render)",
+                                in.width(), in.height(), Scale, Scale));
+    ImageRgba8 out(in.width() / Scale, in.height() / Scale);
+    Into(in, out.view(), s, e);
+    return out;
+}
+
+void intoNoaa(ImageView<const Rgba8> in, ImageView<Rgba8> out, const MethodSettings& s, const Exec&) {
     rejectPreset("noaa", s);
     rejectParams("noaa", s);
     checkDimensions(in.width(), in.height(), "noaa input");
-    return ImageRgba8::copyOf(in);
+    if (out.width() != in.width() || out.height() != in.height())
+        throw Error(fmt::format("noaa: output is {}x{}, expected {}x{}", out.width(), out.height(), in.width(),
+                                in.height()));
+    for (int y = 0; y < in.height(); ++y) std::copy(in.row(y), in.row(y) + in.width(), out.row(y));
 }
 
 BlurParams blurParams(const MethodSettings& s) {
     rejectPreset("blur", s);
     return applySettings("blur", BlurParams{}, kBlurInfo, kBlurMembers, s);
 }
-ImageRgba8 runBlur(ImageView<const Rgba8> in, const MethodSettings& s, const Exec& e) {
-    return blur(in, blurParams(s), e);
+void intoBlur(ImageView<const Rgba8> in, ImageView<Rgba8> out, const MethodSettings& s, const Exec& e) {
+    blur(in, out, blurParams(s), e);
 }
 ImageRgba8 refBlur(ImageView<const Rgba8> in, const MethodSettings& s, const Exec&) {
     return blurReference(in, blurParams(s));
@@ -141,8 +155,8 @@ Fxaa3cParams fxaa3cParams(const MethodSettings& s) {
     return applySettings("fxaa3c", withFiltering(fxaa3cParamsFor(s.preset.value_or(Preset::Medium)), s),
                          kFxaa3cInfo, kFxaa3cMembers, s);
 }
-ImageRgba8 runFxaa3c(ImageView<const Rgba8> in, const MethodSettings& s, const Exec& e) {
-    return fxaa3c(in, fxaa3cParams(s), e);
+void intoFxaa3c(ImageView<const Rgba8> in, ImageView<Rgba8> out, const MethodSettings& s, const Exec& e) {
+    fxaa3c(in, out, fxaa3cParams(s), e);
 }
 ImageRgba8 refFxaa3c(ImageView<const Rgba8> in, const MethodSettings& s, const Exec&) {
     return fxaa3cReference(in, fxaa3cParams(s));
@@ -152,8 +166,8 @@ Fxaa3dParams fxaa3dParams(const MethodSettings& s) {
     return applySettings("fxaa3d", withFiltering(fxaa3dParamsFor(s.preset.value_or(Preset::Medium)), s),
                          kFxaa3dInfo, kFxaa3dMembers, s);
 }
-ImageRgba8 runFxaa3d(ImageView<const Rgba8> in, const MethodSettings& s, const Exec& e) {
-    return fxaa3d(in, fxaa3dParams(s), e);
+void intoFxaa3d(ImageView<const Rgba8> in, ImageView<Rgba8> out, const MethodSettings& s, const Exec& e) {
+    fxaa3d(in, out, fxaa3dParams(s), e);
 }
 ImageRgba8 refFxaa3d(ImageView<const Rgba8> in, const MethodSettings& s, const Exec&) {
     return fxaa3dReference(in, fxaa3dParams(s));
@@ -163,8 +177,8 @@ Ddaa1Params ddaa1Params(const MethodSettings& s) {
     return applySettings("ddaa1", withFiltering(ddaa1ParamsFor(s.preset.value_or(Preset::Medium)), s), kDdaa1Info,
                          kDdaa1Members, s);
 }
-ImageRgba8 runDdaa1(ImageView<const Rgba8> in, const MethodSettings& s, const Exec& e) {
-    return ddaa1(in, ddaa1Params(s), e);
+void intoDdaa1(ImageView<const Rgba8> in, ImageView<Rgba8> out, const MethodSettings& s, const Exec& e) {
+    ddaa1(in, out, ddaa1Params(s), e);
 }
 ImageRgba8 refDdaa1(ImageView<const Rgba8> in, const MethodSettings& s, const Exec&) {
     return ddaa1Reference(in, ddaa1Params(s));
@@ -174,36 +188,38 @@ Ddaa2Params ddaa2Params(std::string_view id, const MethodSettings& s) {
     return applySettings(id, withFiltering(ddaa2ParamsFor(s.preset.value_or(Preset::Medium)), s), kDdaa2Info,
                          kDdaa2Members, s);
 }
-ImageRgba8 runDdaa2(ImageView<const Rgba8> in, const MethodSettings& s, const Exec& e) {
-    return ddaa2(in, ddaa2Params("ddaa2", s), e);
+void intoDdaa2(ImageView<const Rgba8> in, ImageView<Rgba8> out, const MethodSettings& s, const Exec& e) {
+    ddaa2(in, out, ddaa2Params("ddaa2", s), e);
 }
 ImageRgba8 refDdaa2(ImageView<const Rgba8> in, const MethodSettings& s, const Exec&) {
     return ddaa2Reference(in, ddaa2Params("ddaa2", s));
 }
-ImageRgba8 runDdaa2p(ImageView<const Rgba8> in, const MethodSettings& s, const Exec& e) {
-    return ddaa2p(in, ddaa2Params("ddaa2p", s), e);
+void intoDdaa2p(ImageView<const Rgba8> in, ImageView<Rgba8> out, const MethodSettings& s, const Exec& e) {
+    ddaa2p(in, out, ddaa2Params("ddaa2p", s), e);
 }
+// The resolves have no SIMD variant yet: their fast path is the threaded scalar code.
 ImageRgba8 refDdaa2p(ImageView<const Rgba8> in, const MethodSettings& s, const Exec&) {
-    return ddaa2p(in, ddaa2Params("ddaa2p", s), Exec{1});
+    const ImageRgba8 aa = ddaa2Reference(in, ddaa2Params("ddaa2p", s));
+    return ssaax2(aa.view(), s.filtering, Exec{1});
 }
 
-ImageRgba8 runSsaax2(ImageView<const Rgba8> in, const MethodSettings& s, const Exec& e) {
+void intoSsaax2(ImageView<const Rgba8> in, ImageView<Rgba8> out, const MethodSettings& s, const Exec& e) {
     rejectPreset("ssaax2", s);
     rejectParams("ssaax2", s);
-    return ssaax2(in, s.filtering, e);
+    ssaax2(in, out, s.filtering, e);
 }
 ImageRgba8 refSsaax2(ImageView<const Rgba8> in, const MethodSettings& s, const Exec&) {
-    return runSsaax2(in, s, Exec{1});
+    return allocating<intoSsaax2, 2>(in, s, Exec{1});
 }
 MitchellParams mitchellParams(const MethodSettings& s) {
     rejectPreset("ssaax4", s);
     return applySettings("ssaax4", MitchellParams{}, kMitchellInfo, kMitchellMembers, s);
 }
-ImageRgba8 runSsaax4(ImageView<const Rgba8> in, const MethodSettings& s, const Exec& e) {
-    return ssaax4(in, mitchellParams(s), e);
+void intoSsaax4(ImageView<const Rgba8> in, ImageView<Rgba8> out, const MethodSettings& s, const Exec& e) {
+    ssaax4(in, out, mitchellParams(s), e);
 }
 ImageRgba8 refSsaax4(ImageView<const Rgba8> in, const MethodSettings& s, const Exec&) {
-    return ssaax4(in, mitchellParams(s), Exec{1});
+    return allocating<intoSsaax4, 4>(in, s, Exec{1});
 }
 
 constexpr std::string_view kDdaaCite = "A. Klein, Directional Diffusion Anti-Aliasing (DDAA), JCGT";
@@ -211,23 +227,24 @@ constexpr std::string_view kFxaaCite = "T. Lottes, FXAA 3.11, NVIDIA 2011 (as co
 constexpr std::string_view kMitchellCite = "Mitchell & Netravali, SIGGRAPH 1988; DDAA paper section 3";
 
 const std::array<MethodInfo, 9> kMethods{{
-    {"noaa", "ppaa", "no anti-aliasing: the input unchanged", "", {}, false, 1, runNoaa, runNoaa},
+    {"noaa", "ppaa", "no anti-aliasing: the input unchanged", "", {}, false, 1, allocating<intoNoaa, 1>, intoNoaa,
+     allocating<intoNoaa, 1>},
     {"blur", "ppaa", "3x3 truncated Gaussian (sigma 0.6), the quality and speed baseline",
-     "DDAA paper section 3.1", kBlurInfo, false, 1, runBlur, refBlur},
+     "DDAA paper section 3.1", kBlurInfo, false, 1, allocating<intoBlur, 1>, intoBlur, refBlur},
     {"fxaa3c", "ppaa", "FXAA 3.11 console: direction from the diagonals, 4 taps, no edge search", kFxaaCite,
-     kFxaa3cInfo, true, 1, runFxaa3c, refFxaa3c},
+     kFxaa3cInfo, true, 1, allocating<intoFxaa3c, 1>, intoFxaa3c, refFxaa3c},
     {"fxaa3d", "ppaa", "FXAA 3.11 desktop: 12-step edge search with pixel skipping", kFxaaCite, kFxaa3dInfo, true, 1,
-     runFxaa3d, refFxaa3d},
+     allocating<intoFxaa3d, 1>, intoFxaa3d, refFxaa3d},
     {"ddaa1", "ppaa", "DDAA 1: diffusion along the Scharr edge direction, no edge search", kDdaaCite, kDdaa1Info, true,
-     1, runDdaa1, refDdaa1},
+     1, allocating<intoDdaa1, 1>, intoDdaa1, refDdaa1},
     {"ddaa2", "ppaa", "DDAA 2: diffusion plus a clean batched edge search (the proposed method)", kDdaaCite,
-     kDdaa2Info, true, 1, runDdaa2, refDdaa2},
+     kDdaa2Info, true, 1, allocating<intoDdaa2, 1>, intoDdaa2, refDdaa2},
     {"ssaax2", "resolve", "2x supersampling resolve: Mitchell filter in 12 bilinear reads (input: 2x render)",
-     kMitchellCite, {}, false, 2, runSsaax2, refSsaax2},
+     kMitchellCite, {}, false, 2, allocating<intoSsaax2, 2>, intoSsaax2, refSsaax2},
     {"ssaax4", "resolve", "4x supersampling resolve: direct Mitchell taps (input: 4x render)", kMitchellCite,
-     kMitchellInfo, false, 4, runSsaax4, refSsaax4},
+     kMitchellInfo, false, 4, allocating<intoSsaax4, 4>, intoSsaax4, refSsaax4},
     {"ddaa2p", "ppaa", "ddaa2 on the 2x render, then the ssaax2 resolve (input: 2x render)",
-     "DDAA paper section 4", kDdaa2Info, true, 2, runDdaa2p, refDdaa2p},
+     "DDAA paper section 4", kDdaa2Info, true, 2, allocating<intoDdaa2p, 2>, intoDdaa2p, refDdaa2p},
 }};
 
 }  // namespace

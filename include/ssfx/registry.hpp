@@ -36,6 +36,10 @@ struct MethodSettings {
 };
 
 using RunFn = ImageRgba8 (*)(ImageView<const Rgba8> input, const MethodSettings& settings, const Exec& exec);
+//! Writes into `output`, which must be the input's size divided by inputScale (hot loops,
+//! benchmarks: no allocation of the output).
+using RunIntoFn = void (*)(ImageView<const Rgba8> input, ImageView<Rgba8> output, const MethodSettings& settings,
+                           const Exec& exec);
 
 struct MethodInfo {
     std::string_view id;        //!< stable public name (CLI, files, reports, spec)
@@ -47,8 +51,9 @@ struct MethodInfo {
     //! The input is the scene rendered at this scale (1; 2 for ssaax2/ddaa2p; 4 for ssaax4);
     //! the output is always at scale 1.
     int inputScale;
-    RunFn run;        //!< the fast path (SIMD, threads)
-    RunFn reference;  //!< the scalar oracle (ignores Exec)
+    RunFn run;          //!< the fast path (SIMD, threads), allocating its output
+    RunIntoFn runInto;  //!< the fast path into a caller's output
+    RunFn reference;    //!< the scalar oracle (ignores Exec)
 };
 
 std::span<const MethodInfo> methods();

@@ -22,7 +22,8 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Ddaa1Params& p, 
     checkOutput("ddaa1", in, out);
     validateDdaa1("ddaa1", p);
     const Texture tex(in, p.filtering);
-    const ImageF L = reference ? lumaPlaneReference(in) : lumaPlane(in, exec);
+    const ImageF fresh = reference ? lumaPlaneReference(in) : ImageF();
+    const ImageF& L = reference ? fresh : scratchLumaPlane(in, exec);
     runLumaMethod(in, out, L, p.edgeThresholdMin, p.edgeThreshold, exec, reference,
                   [&](int x, int y, const Luma3x3& n, float) {
                       const Diffusion d = diffusion(n, edgeSides(n), p);

@@ -104,7 +104,8 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Ddaa2Params& p, 
     checkOutput("ddaa2", in, out);
     validate(p);
     const Texture tex(in, p.filtering);
-    const ImageF L = reference ? lumaPlaneReference(in) : lumaPlane(in, exec);
+    const ImageF fresh = reference ? lumaPlaneReference(in) : ImageF();
+    const ImageF& L = reference ? fresh : scratchLumaPlane(in, exec);
     runLumaMethod(in, out, L, p.edgeThresholdMin, p.edgeThreshold, exec, reference,
                   [&](int x, int y, const Luma3x3& n, float) {
                       const EdgeSides s = edgeSides(n);

@@ -49,6 +49,13 @@ namespace ssfx::aa::detail {
 
 HWY_EXPORT(ExitRow);
 
+const ImageF& scratchLumaPlane(ImageView<const Rgba8> in, const Exec& exec) {
+    thread_local ImageF plane;
+    if (plane.width() != in.width() || plane.height() != in.height()) plane = ImageF(in.width(), in.height());
+    lumaPlane(in, plane.view(), exec);
+    return plane;
+}
+
 void earlyExitRow(const ImageF& L, int y, float thresholdMin, float threshold, std::uint8_t* exitMask) {
     const int h = L.height(), w = L.width();
     const float* above = L.data() + std::size_t(y > 0 ? y - 1 : 0) * std::size_t(w);

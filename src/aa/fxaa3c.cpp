@@ -2,7 +2,7 @@
 // lumas, two short and two long taps along it, no edge search (spec ppaa.md "fxaa3c").
 // Deviation from Lottes' shader, as in the DDAA paper: diagonals at +-1 pixel, not +-0.5
 // (Fxaa3cParams::diagonalOffset).
-#include "ppaa_common.hpp"
+#include "luma_driver.hpp"
 #include "ssfx/aa/fxaa.hpp"
 
 namespace ssfx::aa {
@@ -25,7 +25,8 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Fxaa3cParams& p,
     checkOutput("fxaa3c", in, out);
     validate(p);
     const Texture tex(in, p.filtering);
-    const ImageF L = reference ? lumaPlaneReference(in) : lumaPlane(in, exec);
+    const ImageF fresh = reference ? lumaPlaneReference(in) : ImageF();
+    const ImageF& L = reference ? fresh : scratchLumaPlane(in, exec);
     // At +-1 pixel the diagonal reads land on pixel centres, which return the pixel
     // (spec section 1): luma plane lookups.
     const bool centres = p.diagonalOffset == 1.0f;

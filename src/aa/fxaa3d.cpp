@@ -37,8 +37,14 @@ Rgb fxaa3dPixel(const Texture& tex, int x, int y, const Luma3x3& n, float range,
 
     float nU = bu - offU * kSteps[0], nV = bv - offV * kSteps[0];
     float pU = bu + offU * kSteps[0], pV = bv + offV * kSteps[0];
-    float endN = luma(tex.sample(nU, nV)) - localAverage;
-    float endP = luma(tex.sample(pU, pV)) - localAverage;
+    // The across coordinate stays fixed along the walk (its step is 0): split it once.
+    const Texture::AxisPos across = s.horizontal ? tex.axisV(bv) : tex.axisU(bu);
+    auto walkLuma = [&](float wu, float wv) {
+        const Rgb c = s.horizontal ? tex.sample(tex.axisU(wu), across, 0, 0) : tex.sample(across, tex.axisV(wv), 0, 0);
+        return luma(c) - localAverage;
+    };
+    float endN = walkLuma(nU, nV);
+    float endP = walkLuma(pU, pV);
     bool doneN = std::fabs(endN) >= gradientScaled;
     bool doneP = std::fabs(endP) >= gradientScaled;
     for (int i = 1; i < 12; ++i) {
@@ -50,8 +56,8 @@ Rgb fxaa3dPixel(const Texture& tex, int x, int y, const Luma3x3& n, float range,
                 pU += offU * kSteps[i], pV += offV * kSteps[i];
         }
         if ((doneN && doneP) || i == 11) break;  // after the last step there is no read
-        if (!doneN) endN = luma(tex.sample(nU, nV)) - localAverage;
-        if (!doneP) endP = luma(tex.sample(pU, pV)) - localAverage;
+        if (!doneN) endN = walkLuma(nU, nV);
+        if (!doneP) endP = walkLuma(pU, pV);
         doneN = doneN || std::fabs(endN) >= gradientScaled;
         doneP = doneP || std::fabs(endP) >= gradientScaled;
     }
@@ -88,7 +94,8 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Fxaa3dParams& p,
     checkOutput("fxaa3d", in, out);
     validate(p);
     const Texture tex(in, p.filtering);
-    const ImageF L = reference ? lumaPlaneReference(in) : lumaPlane(in, exec);
+    const ImageF fresh = reference ? lumaPlaneReference(in) : ImageF();
+    const ImageF& L = reference ? fresh : scratchLumaPlane(in, exec);
     runLumaMethod(in, out, L, p.edgeThresholdMin, p.edgeThreshold, exec, reference,
                   [&](int x, int y, const Luma3x3& n, float range) { return fxaa3dPixel(tex, x, y, n, range, p); });
 }

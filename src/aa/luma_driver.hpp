@@ -14,6 +14,11 @@
 
 namespace ssfx::aa::detail {
 
+//! The luma plane of `in` for the fast path: computed into a buffer kept per calling thread
+//! and reused while the size stays the same (a frame loop then allocates nothing; the
+//! buffer is 4 bytes per pixel). The reference path computes a fresh plane pixel by pixel.
+const ImageF& scratchLumaPlane(ImageView<const Rgba8> in, const Exec& exec);
+
 //! exitMask[x] = 1 where pixel (x, y) is below the edge threshold (SIMD, in early_exit.cpp).
 void earlyExitRow(const ImageF& L, int y, float thresholdMin, float threshold, std::uint8_t* exitMask);
 

@@ -71,15 +71,28 @@ AxisTaps axisTaps(float f, float support, float s, const MitchellParams& p) {
 
 }  // namespace
 
+namespace {
+void checkDivisible(const char* method, ImageView<const Rgba8> in, int m) {
+    detail::checkInput(method, in);
+    if (in.width() % m != 0 || in.height() % m != 0)
+        throw Error(fmt::format("{}: input size {}x{} is not divisible by {}", method, in.width(), in.height(), m));
+}
+}  // namespace
+
 ImageRgba8 ssaax2(ImageView<const Rgba8> in, Filtering filtering, const Exec& exec) {
-    detail::checkInput("ssaax2", in);
-    if (in.width() % 2 != 0 || in.height() % 2 != 0)
-        throw Error(fmt::format("ssaax2: input size {}x{} is not divisible by 2", in.width(), in.height()));
+    checkDivisible("ssaax2", in, 2);
     ImageRgba8 out(in.width() / 2, in.height() / 2);
+    ssaax2(in, out.view(), filtering, exec);
+    return out;
+}
+
+void ssaax2(ImageView<const Rgba8> in, ImageView<Rgba8> out, Filtering filtering, const Exec& exec) {
+    checkDivisible("ssaax2", in, 2);
+    detail::checkOutput("ssaax2", in, out, 1, 2);
     const Texture tex(in, filtering);
     const float invW = tex.invW(), invH = tex.invH();
     const float outW = float(out.width()), outH = float(out.height());
-    detail::forEachPixel(out.view(), exec, [&](int x, int y) {
+    detail::forEachPixel(out, exec, [&](int x, int y) {
         const float u = (float(x) + 0.5f) / outW, v = (float(y) + 0.5f) / outH;
         Rgb sum;
         for (const Tap2& t : kTaps2) {
@@ -90,12 +103,16 @@ ImageRgba8 ssaax2(ImageView<const Rgba8> in, Filtering filtering, const Exec& ex
         const Rgba8 a = in(2 * x, 2 * y);  // alpha: the top-left source pixel of the 2x2 block
         return detail::toRgba8(sum, a.a);
     });
-    return out;
 }
 
-ImageRgba8 resampleMitchell(ImageView<const Rgba8> in, int factor, const MitchellParams& params, const Exec& exec) {
+namespace {
+struct ResampleShape {
+    bool shrink;
+    int m;
+    std::int64_t w, h;
+};
+ResampleShape resampleShape(ImageView<const Rgba8> in, int factor) {
     detail::checkInput("mitchell", in);
-    checkMitchell("mitchell", params);
     if (factor == 0 || factor == -1 || factor > 64 || factor < -64)
         throw Error(fmt::format("mitchell: factor {} is not in [2, 64] (shrink) or [-64, -2] (magnify), or 1",
                                 factor));
@@ -106,14 +123,33 @@ ImageRgba8 resampleMitchell(ImageView<const Rgba8> in, int factor, const Mitchel
     const std::int64_t ow = shrink ? in.width() / m : std::int64_t(in.width()) * m;
     const std::int64_t oh = shrink ? in.height() / m : std::int64_t(in.height()) * m;
     checkDimensions(ow, oh, "mitchell output");
-    ImageRgba8 out{int(ow), int(oh)};
+    return {shrink, m, ow, oh};
+}
+}  // namespace
+
+ImageRgba8 resampleMitchell(ImageView<const Rgba8> in, int factor, const MitchellParams& params, const Exec& exec) {
+    const ResampleShape shape = resampleShape(in, factor);
+    ImageRgba8 out{int(shape.w), int(shape.h)};
+    resampleMitchell(in, factor, out.view(), params, exec);
+    return out;
+}
+
+void resampleMitchell(ImageView<const Rgba8> in, int factor, ImageView<Rgba8> out, const MitchellParams& params,
+                      const Exec& exec) {
+    const ResampleShape shape = resampleShape(in, factor);
+    if (out.width() != shape.w || out.height() != shape.h)
+        throw Error(fmt::format("mitchell: output is {}x{}, expected {}x{}", out.width(), out.height(), shape.w,
+                                shape.h));
+    checkMitchell("mitchell", params);
+    const bool shrink = shape.shrink;
+    const int m = shape.m;
     const float s = shrink ? float(m) : 1.0f;  // kernel scale: max(factor, 1)
     const float support = 1.999f * s;
     auto coord = [&](int i) { return shrink ? (float(i) + 0.5f) * float(m) : (float(i) + 0.5f) / float(m); };
     std::vector<AxisTaps> tx(std::size_t(out.width())), ty(std::size_t(out.height()));
     for (int x = 0; x < out.width(); ++x) tx[std::size_t(x)] = axisTaps(coord(x), support, s, params);
     for (int y = 0; y < out.height(); ++y) ty[std::size_t(y)] = axisTaps(coord(y), support, s, params);
-    detail::forEachPixel(out.view(), exec, [&](int x, int y) {
+    detail::forEachPixel(out, exec, [&](int x, int y) {
         const AxisTaps& ax = tx[std::size_t(x)];
         const AxisTaps& ay = ty[std::size_t(y)];
         const int nx = int(ax.weights.size()), ny = int(ay.weights.size());
@@ -134,14 +170,16 @@ ImageRgba8 resampleMitchell(ImageView<const Rgba8> in, int factor, const Mitchel
         const int sx = shrink ? x * m : x / m, sy = shrink ? y * m : y / m;
         return detail::toRgba8(r, in(sx, sy).a);
     });
-    return out;
 }
 
 ImageRgba8 ssaax4(ImageView<const Rgba8> in, const MitchellParams& params, const Exec& exec) {
-    detail::checkInput("ssaax4", in);
-    if (in.width() % 4 != 0 || in.height() % 4 != 0)
-        throw Error(fmt::format("ssaax4: input size {}x{} is not divisible by 4", in.width(), in.height()));
+    checkDivisible("ssaax4", in, 4);
     return resampleMitchell(in, 4, params, exec);
+}
+
+void ssaax4(ImageView<const Rgba8> in, ImageView<Rgba8> out, const MitchellParams& params, const Exec& exec) {
+    checkDivisible("ssaax4", in, 4);
+    resampleMitchell(in, 4, out, params, exec);
 }
 
 ImageRgba8 upscaleMitchell(ImageView<const Rgba8> in, int factor, const MitchellParams& params, const Exec& exec) {

@@ -46,11 +46,16 @@ namespace ssfx {
 static_assert(std::endian::native == std::endian::little, "LumaRow assumes little-endian pixels");
 HWY_EXPORT(LumaRow);
 
+void lumaPlane(ImageView<const Rgba8> in, ImageView<float> out, const Exec& exec) {
+    SSFX_ASSERT(out.width() == in.width() && out.height() == in.height());
+    parallelRows(in.height(), exec, [&](int y0, int y1) {
+        for (int y = y0; y < y1; ++y) HWY_DYNAMIC_DISPATCH(LumaRow)(in.row(y), out.row(y), in.width());
+    });
+}
+
 ImageF lumaPlane(ImageView<const Rgba8> in, const Exec& exec) {
     ImageF L(in.width(), in.height());
-    parallelRows(in.height(), exec, [&](int y0, int y1) {
-        for (int y = y0; y < y1; ++y) HWY_DYNAMIC_DISPATCH(LumaRow)(in.row(y), L.view().row(y), in.width());
-    });
+    lumaPlane(in, L.view(), exec);
     return L;
 }
 

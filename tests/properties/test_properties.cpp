@@ -57,6 +57,16 @@ TEST_P(MethodProperty, FastPathEqualsTheScalarReference) {
     }
 }
 
+TEST_P(MethodProperty, RunIntoEqualsRun) {
+    const MethodInfo& m = *GetParam();
+    const auto in = eval::syntheticScene(64, 40, m.inputScale);
+    ImageRgba8 out(64, 40, Rgba8{1, 2, 3, 4});
+    m.runInto(in.view(), out.view(), {}, {});
+    EXPECT_EQ(out, m.run(in.view(), {}, {}));
+    ImageRgba8 wrong(63, 40);
+    EXPECT_THROW(m.runInto(in.view(), wrong.view(), {}, {}), Error);
+}
+
 TEST_P(MethodProperty, TinyAndThinImagesWork) {
     const MethodInfo& m = *GetParam();
     const int s = m.inputScale;

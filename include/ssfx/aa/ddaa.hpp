@@ -39,5 +39,7 @@ ImageRgba8 ddaa2Reference(ImageView<const Rgba8> in, const Ddaa2Params& params =
 
 //! ddaa2 on the 2x image `in2x`, then ssaax2: output is half its size (in2x must have even sizes).
 ImageRgba8 ddaa2p(ImageView<const Rgba8> in2x, const Ddaa2Params& params = {}, const Exec& exec = {});
+//! Into a caller's view of half the input's size (the 2x intermediate is allocated).
+void ddaa2p(ImageView<const Rgba8> in2x, ImageView<Rgba8> out, const Ddaa2Params& params = {}, const Exec& exec = {});
 
 }  // namespace ssfx::aa

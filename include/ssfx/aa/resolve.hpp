@@ -20,14 +20,21 @@ float mitchell(float t, float B, float C);
 //! ssaax2: the 12-tap bilinear resolve of a 2x image (even sizes) to half its size.
 //! Its tap positions and weights are fixed for B = C = 1/3 (spec), so it takes no params.
 ImageRgba8 ssaax2(ImageView<const Rgba8> in2x, Filtering filtering = Filtering::Gpu, const Exec& exec = {});
+//! Into a caller's view of half the input's size.
+void ssaax2(ImageView<const Rgba8> in2x, ImageView<Rgba8> out, Filtering filtering = Filtering::Gpu,
+            const Exec& exec = {});
 //! ssaax4: direct-tap Mitchell resolve of a 4x image (sizes divisible by 4).
 ImageRgba8 ssaax4(ImageView<const Rgba8> in4x, const MitchellParams& params = {}, const Exec& exec = {});
+void ssaax4(ImageView<const Rgba8> in4x, ImageView<Rgba8> out, const MitchellParams& params = {}, const Exec& exec = {});
 
 //! Mitchell resampling by an integer factor: factor > 1 shrinks (`in` size divisible by
 //! factor), factor < -1 magnifies by -factor (e.g. -8 is the evaluation's x8 upscale).
 //! Direct taps at texel centres, clamp-to-edge (spec "x4 and other factors").
 ImageRgba8 resampleMitchell(ImageView<const Rgba8> in, int factor, const MitchellParams& params = {},
                             const Exec& exec = {});
+//! Into a caller's view of the output size.
+void resampleMitchell(ImageView<const Rgba8> in, int factor, ImageView<Rgba8> out, const MitchellParams& params = {},
+                      const Exec& exec = {});
 //! Convenience: magnify by an integer factor >= 1.
 ImageRgba8 upscaleMitchell(ImageView<const Rgba8> in, int factor, const MitchellParams& params = {},
                            const Exec& exec = {});

@@ -31,5 +31,7 @@ inline std::uint8_t toUnorm8(float v) {
 //! Luma plane of an RGBA8 image (one float per pixel; reads at pixel centres become lookups).
 //! SIMD and threaded; equal to luma() per pixel, bit for bit.
 ImageF lumaPlane(ImageView<const Rgba8> image, const Exec& exec = {});
+//! The same into a caller's plane of the image's size.
+void lumaPlane(ImageView<const Rgba8> image, ImageView<float> out, const Exec& exec = {});
 
 }  // namespace ssfx
