@@ -33,27 +33,16 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Ddaa1Params& p, 
 }  // namespace
 }  // namespace detail
 
-Ddaa1Params ddaa1ParamsFor(Preset preset) {
-    Ddaa1Params p;
-    p.edgeThresholdMin = thresholdsFor(preset).edgeThresholdMin;
-    p.edgeThreshold = thresholdsFor(preset).edgeThreshold;
-    return p;
-}
+Ddaa1Params ddaa1ParamsFor(Preset preset) { return detail::withPreset(Ddaa1Params{}, preset); }
 
 void ddaa1(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Ddaa1Params& p, const Exec& exec) {
     detail::run(in, out, p, exec, false);
 }
 ImageRgba8 ddaa1(ImageView<const Rgba8> in, const Ddaa1Params& p, const Exec& exec) {
-    detail::checkInput("ddaa1", in);
-    ImageRgba8 out(in.width(), in.height());
-    ddaa1(in, out.view(), p, exec);
-    return out;
+    return detail::newOutput("ddaa1", in, [&](ImageView<Rgba8> out) { detail::run(in, out, p, exec, false); });
 }
 ImageRgba8 ddaa1Reference(ImageView<const Rgba8> in, const Ddaa1Params& p) {
-    detail::checkInput("ddaa1", in);
-    ImageRgba8 out(in.width(), in.height());
-    detail::run(in, out.view(), p, Exec{1}, true);
-    return out;
+    return detail::newOutput("ddaa1", in, [&](ImageView<Rgba8> out) { detail::run(in, out, p, Exec{1}, true); });
 }
 
 }  // namespace ssfx::aa

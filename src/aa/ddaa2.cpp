@@ -124,27 +124,16 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Ddaa2Params& p, 
 }  // namespace
 }  // namespace detail
 
-Ddaa2Params ddaa2ParamsFor(Preset preset) {
-    Ddaa2Params p;
-    p.edgeThresholdMin = thresholdsFor(preset).edgeThresholdMin;
-    p.edgeThreshold = thresholdsFor(preset).edgeThreshold;
-    return p;
-}
+Ddaa2Params ddaa2ParamsFor(Preset preset) { return detail::withPreset(Ddaa2Params{}, preset); }
 
 void ddaa2(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Ddaa2Params& p, const Exec& exec) {
     detail::run(in, out, p, exec, false);
 }
 ImageRgba8 ddaa2(ImageView<const Rgba8> in, const Ddaa2Params& p, const Exec& exec) {
-    detail::checkInput("ddaa2", in);
-    ImageRgba8 out(in.width(), in.height());
-    ddaa2(in, out.view(), p, exec);
-    return out;
+    return detail::newOutput("ddaa2", in, [&](ImageView<Rgba8> out) { detail::run(in, out, p, exec, false); });
 }
 ImageRgba8 ddaa2Reference(ImageView<const Rgba8> in, const Ddaa2Params& p) {
-    detail::checkInput("ddaa2", in);
-    ImageRgba8 out(in.width(), in.height());
-    detail::run(in, out.view(), p, Exec{1}, true);
-    return out;
+    return detail::newOutput("ddaa2", in, [&](ImageView<Rgba8> out) { detail::run(in, out, p, Exec{1}, true); });
 }
 
 }  // namespace ssfx::aa

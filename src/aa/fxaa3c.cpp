@@ -71,27 +71,16 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Fxaa3cParams& p,
 }  // namespace
 }  // namespace detail
 
-Fxaa3cParams fxaa3cParamsFor(Preset preset) {
-    Fxaa3cParams p;
-    p.edgeThresholdMin = thresholdsFor(preset).edgeThresholdMin;
-    p.edgeThreshold = thresholdsFor(preset).edgeThreshold;
-    return p;
-}
+Fxaa3cParams fxaa3cParamsFor(Preset preset) { return detail::withPreset(Fxaa3cParams{}, preset); }
 
 void fxaa3c(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Fxaa3cParams& p, const Exec& exec) {
     detail::run(in, out, p, exec, false);
 }
 ImageRgba8 fxaa3c(ImageView<const Rgba8> in, const Fxaa3cParams& p, const Exec& exec) {
-    detail::checkInput("fxaa3c", in);
-    ImageRgba8 out(in.width(), in.height());
-    fxaa3c(in, out.view(), p, exec);
-    return out;
+    return detail::newOutput("fxaa3c", in, [&](ImageView<Rgba8> out) { detail::run(in, out, p, exec, false); });
 }
 ImageRgba8 fxaa3cReference(ImageView<const Rgba8> in, const Fxaa3cParams& p) {
-    detail::checkInput("fxaa3c", in);
-    ImageRgba8 out(in.width(), in.height());
-    detail::run(in, out.view(), p, Exec{1}, true);
-    return out;
+    return detail::newOutput("fxaa3c", in, [&](ImageView<Rgba8> out) { detail::run(in, out, p, Exec{1}, true); });
 }
 
 }  // namespace ssfx::aa

@@ -103,27 +103,16 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Fxaa3dParams& p,
 }  // namespace
 }  // namespace detail
 
-Fxaa3dParams fxaa3dParamsFor(Preset preset) {
-    Fxaa3dParams p;
-    p.edgeThresholdMin = thresholdsFor(preset).edgeThresholdMin;
-    p.edgeThreshold = thresholdsFor(preset).edgeThreshold;
-    return p;
-}
+Fxaa3dParams fxaa3dParamsFor(Preset preset) { return detail::withPreset(Fxaa3dParams{}, preset); }
 
 void fxaa3d(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Fxaa3dParams& p, const Exec& exec) {
     detail::run(in, out, p, exec, false);
 }
 ImageRgba8 fxaa3d(ImageView<const Rgba8> in, const Fxaa3dParams& p, const Exec& exec) {
-    detail::checkInput("fxaa3d", in);
-    ImageRgba8 out(in.width(), in.height());
-    fxaa3d(in, out.view(), p, exec);
-    return out;
+    return detail::newOutput("fxaa3d", in, [&](ImageView<Rgba8> out) { detail::run(in, out, p, exec, false); });
 }
 ImageRgba8 fxaa3dReference(ImageView<const Rgba8> in, const Fxaa3dParams& p) {
-    detail::checkInput("fxaa3d", in);
-    ImageRgba8 out(in.width(), in.height());
-    detail::run(in, out.view(), p, Exec{1}, true);
-    return out;
+    return detail::newOutput("fxaa3d", in, [&](ImageView<Rgba8> out) { detail::run(in, out, p, Exec{1}, true); });
 }
 
 }  // namespace ssfx::aa

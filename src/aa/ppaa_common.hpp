@@ -8,6 +8,7 @@
 #include <cmath>
 #include <string>
 
+#include "ssfx/aa/presets.hpp"
 #include "ssfx/core/color.hpp"
 #include "ssfx/core/image.hpp"
 #include "ssfx/core/parallel.hpp"
@@ -92,6 +93,23 @@ inline EdgeSides edgeSides(const Luma3x3& n) {
     s.g1 = s.luma1 - n.C;
     s.g2 = s.luma2 - n.C;
     return s;
+}
+
+//! The preset's thresholds on top of a params struct's other defaults.
+template <class P>
+P withPreset(P params, aa::Preset preset) {
+    params.edgeThresholdMin = aa::thresholdsFor(preset).edgeThresholdMin;
+    params.edgeThreshold = aa::thresholdsFor(preset).edgeThreshold;
+    return params;
+}
+
+//! Allocates the output of a same-size method and lets `fill` write it.
+template <class Fill>
+ImageRgba8 newOutput(const char* method, ImageView<const Rgba8> in, const Fill& fill) {
+    checkInput(method, in);
+    ImageRgba8 out(in.width(), in.height());
+    fill(out.view());
+    return out;
 }
 
 //! Runs kernel(x, y) -> Rgba8 for every pixel, rows in parallel blocks.

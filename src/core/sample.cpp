@@ -12,13 +12,17 @@ std::array<float, 4081> makeSixteenths() {
 
 const std::array<float, 4081> kSixteenthLevels = makeSixteenths();
 
-Rgb Texture::sampleGpu(const AxisPos& ax, const AxisPos& ay, int ox, int oy) const {
+Texture::Quad Texture::fetch(const AxisPos& ax, const AxisPos& ay, int ox, int oy) const {
     int x0, x1, y0, y1;
     pair(ax.index + ox, w_, &x0, &x1);
     pair(ay.index + oy, h_, &y0, &y1);
     const Rgba8* r0 = img_.row(y0);
     const Rgba8* r1 = img_.row(y1);
-    const Rgba8 t00 = r0[x0], t10 = r0[x1], t01 = r1[x0], t11 = r1[x1];
+    return {r0[x0], r0[x1], r1[x0], r1[x1]};
+}
+
+Rgb Texture::sampleGpu(const AxisPos& ax, const AxisPos& ay, int ox, int oy) const {
+    const auto [t00, t10, t01, t11] = fetch(ax, ay, ox, oy);
     // Exact weights in 1/65536 units; the sum is at most 65536 * 255 (fits in int32).
     const int w00 = (256 - ax.w) * (256 - ay.w), w10 = ax.w * (256 - ay.w);
     const int w01 = (256 - ax.w) * ay.w, w11 = ax.w * ay.w;
@@ -32,12 +36,7 @@ Rgb Texture::sampleGpu(const AxisPos& ax, const AxisPos& ay, int ox, int oy) con
 }
 
 Rgb Texture::sampleExact(const AxisPos& ax, const AxisPos& ay, int ox, int oy) const {
-    int x0, x1, y0, y1;
-    pair(ax.index + ox, w_, &x0, &x1);
-    pair(ay.index + oy, h_, &y0, &y1);
-    const Rgba8* r0 = img_.row(y0);
-    const Rgba8* r1 = img_.row(y1);
-    const Rgba8 t00 = r0[x0], t10 = r0[x1], t01 = r1[x0], t11 = r1[x1];
+    const auto [t00, t10, t01, t11] = fetch(ax, ay, ox, oy);
     const float fx = ax.frac, fy = ay.frac;
     auto channel = [&](std::uint8_t a, std::uint8_t b, std::uint8_t c, std::uint8_t d) {
         const float top = kUnorm8[a] + (kUnorm8[b] - kUnorm8[a]) * fx;

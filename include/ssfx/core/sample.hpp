@@ -110,6 +110,10 @@ private:
         *i0 = i < 0 ? 0 : (i >= n ? n - 1 : i);
         *i1 = i + 1 < 0 ? 0 : (i + 1 >= n ? n - 1 : i + 1);
     }
+    struct Quad {
+        Rgba8 t00, t10, t01, t11;  // (x0,y0) (x1,y0) (x0,y1) (x1,y1)
+    };
+    Quad fetch(const AxisPos& ax, const AxisPos& ay, int ox, int oy) const;
     Rgb sampleGpu(const AxisPos& ax, const AxisPos& ay, int ox, int oy) const;
     Rgb sampleExact(const AxisPos& ax, const AxisPos& ay, int ox, int oy) const;
 
