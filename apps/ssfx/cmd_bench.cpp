@@ -19,7 +19,7 @@ namespace {
 struct BenchOptions {
     std::string image, json;
     std::vector<std::string> methods;
-    int reps = 40, warmup = 3, threads = 0, width = 1920, height = 1080;
+    int reps = 40, warmup = 3, threads = 0, width = 1920;  // synthetic image: width x (width * 9 / 16)
 };
 
 void run(const BenchOptions& o) {
@@ -28,7 +28,7 @@ void run(const BenchOptions& o) {
     ImageRgba8 inputs[3];
     std::string source;
     if (o.image.empty()) {
-        for (int i = 0; i < 3; ++i) inputs[i] = eval::syntheticScene(o.width, o.height, 1 << i);
+        for (int i = 0; i < 3; ++i) inputs[i] = eval::syntheticScene(o.width, o.width * 9 / 16, 1 << i);
         source = "synthetic";
     } else {
         inputs[0] = io::readPng(o.image);
@@ -99,9 +99,8 @@ void addBenchCommand(CLI::App& app) {
     cmd->add_option("--reps", opts->reps, "Timed repetitions per method (default 40)")->check(CLI::Range(4, 100000));
     cmd->add_option("--warmup", opts->warmup, "Untimed rounds first (default 3)")->check(CLI::Range(0, 1000));
     cmd->add_option("--threads", opts->threads, "Worker threads (0 = all)")->check(CLI::Range(0, 1024));
-    cmd->add_option("--size", opts->width, "Width of the synthetic image (height = width * 9 / 16)")
-        ->check(CLI::Range(16, 16384))
-        ->each([opts](const std::string&) { opts->height = opts->width * 9 / 16; });
+    cmd->add_option("--size", opts->width, "Width of the synthetic image (height = width * 9 / 16; default 1920)")
+        ->check(CLI::Range(16, 16384));
     cmd->callback([opts] { run(*opts); });
 }
 

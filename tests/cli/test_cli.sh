@@ -4,6 +4,7 @@
 set -u
 SSFX=$1
 OUT=$2
+SRC=$(cd "$(dirname "$0")/../.." && pwd)
 rm -rf "$OUT" && mkdir -p "$OUT"
 fail=0
 check() {  # check NAME EXPECTED_EXIT CMD...
@@ -29,6 +30,31 @@ check aa 0 "$SSFX" aa -m ddaa2 "$OUT/scene/scene.png" -o "$OUT/ddaa2.png" --pres
 [ -s "$OUT/ddaa2.png" ] || { echo "FAIL aa: no output"; fail=1; }
 check resolve 0 "$SSFX" aa -m ssaax4 "$OUT/scene/scenex4.png" -o "$OUT/ssaax4.png"
 check param 0 "$SSFX" aa -m ddaa2 -p strength=2 -p searchRounds=3 "$OUT/scene/scene.png" -o "$OUT/p.png"
+
+# APNG in -> APNG out with every frame (the 3-frame seed of the fuzz corpus).
+check apng 0 "$SSFX" aa -m ddaa1 "$SRC/fuzz/corpus/apng/three_frames.png" -o "$OUT/anim.png"
+python3 - "$OUT/anim.png" <<'PY' || { echo "FAIL apng: output is not a 3-frame APNG"; fail=1; }
+import struct, sys
+d = open(sys.argv[1], "rb").read()
+pos, frames, actl = 8, 0, None
+while pos < len(d):
+    n, t = struct.unpack(">I4s", d[pos:pos + 8])
+    if t == b"acTL": actl = struct.unpack(">I", d[pos + 8:pos + 12])[0]
+    if t == b"fcTL": frames += 1
+    pos += 12 + n
+sys.exit(0 if actl == 3 and frames == 3 else 1)
+PY
+
+# bench: the JSON layout of the issue.
+check bench 0 "$SSFX" bench --size 64 --reps 4 --warmup 0 --methods blur,ddaa2 --json "$OUT/bench.json"
+python3 - "$OUT/bench.json" <<'PY' || { echo "FAIL bench: JSON layout"; fail=1; }
+import json, sys
+j = json.load(open(sys.argv[1]))
+assert set(j) >= {"machine", "image", "methods"}
+assert j["image"]["width"] == 64 and j["image"]["height"] == 36
+assert j["methods"]["blur"]["relative"] == 100
+assert j["methods"]["ddaa2"]["median_ms"] > 0
+PY
 
 # Bad inputs: exit 2, a message naming the problem, and no output file.
 check missing 2 "$SSFX" aa -m ddaa2 "$OUT/nope.png" -o "$OUT/missing.png"
