@@ -1,10 +1,22 @@
 // ddaa1: directional diffusion without edge search (Klein, DDAA, sections 2.1-2.2;
 // spec ppaa.md "ddaa1"). The per-pixel pieces are in ddaa_kernel.hpp, shared with ddaa2.
-#include "ddaa_kernel.hpp"
-#include "luma_driver.hpp"
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "src/aa/ddaa-inl.h"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+#include <hwy/highway.h>
+
+#include "src/aa/ddaa-inl.h"
+
+#if HWY_ONCE
+#include "src/aa/ddaa_kernel.hpp"
+#include "src/aa/luma_driver.hpp"
 #include "ssfx/aa/ddaa.hpp"
 
 namespace ssfx::aa {
+
+namespace detail {
+HWY_EXPORT(Ddaa1RowSimd);
+}  // namespace detail
 
 namespace detail {
 
@@ -24,11 +36,16 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Ddaa1Params& p, 
     const Texture tex(in, p.filtering);
     const ImageF fresh = reference ? lumaPlaneReference(in) : ImageF();
     const ImageF& L = reference ? fresh : scratchLumaPlane(in, exec);
-    runLumaMethod(in, out, L, p.edgeThresholdMin, p.edgeThreshold, exec, reference,
-                  [&](int x, int y, const Luma3x3& n, float) {
-                      const Diffusion d = diffusion(n, edgeSides(n), p);
-                      return diffuse(tex, x, y, d, p.maxDiffusion, 0.0f, 0.0f);
-                  });
+    auto pixel = [&](int x, int y, const Luma3x3& n, float) {
+        const Diffusion d = diffusion(n, edgeSides(n), p);
+        return diffuse(tex, x, y, d, p.maxDiffusion, 0.0f, 0.0f);
+    };
+    // The vector kernel across pixels covers the GPU filtering model (the default).
+    auto rows = [&](int y, const std::uint8_t* mask, const Rgba8* src, Rgba8* dst, std::uint8_t* handled) {
+        if (p.filtering == Filtering::Gpu)
+            HWY_DYNAMIC_DISPATCH(Ddaa1RowSimd)(tex, L, y, mask, p, src, dst, handled);
+    };
+    runLumaMethod(in, out, L, p.edgeThresholdMin, p.edgeThreshold, exec, reference, pixel, rows);
 }
 }  // namespace
 }  // namespace detail
@@ -46,3 +63,4 @@ ImageRgba8 ddaa1Reference(ImageView<const Rgba8> in, const Ddaa1Params& p) {
 }
 
 }  // namespace ssfx::aa
+#endif  // HWY_ONCE
