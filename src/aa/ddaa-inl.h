@@ -108,70 +108,85 @@ HWY_INLINE VI Quantize(VF v) {
     return hn::ConvertTo(di, r);
 }
 
-// ddaa1 for pixels [x, x + N) of row y, 1 <= x, x + N <= W - 1. Lanes whose exit mask is
-// set keep the source pixel.
-HWY_INLINE void Ddaa1Chunk(const Texture& tex, const ImageF& L, int x, int y, const std::uint8_t* exitMask,
-                           const Ddaa1Params& p, const Rgba8* src, Rgba8* dst) {
+// The 3x3 luma neighbourhood of pixels [x, x + N) of row y (S = row above, N = row below).
+struct NeighbourhoodV {
+    VF C, W, E, S, N, SW, NW, SE, NE;
+};
+HWY_INLINE NeighbourhoodV LoadNeighbourhood(const ImageF& L, int x, int y) {
     const DF df;
-    const DI di;
-    const DU du;
-    const hn::Rebind<std::uint8_t, DF> d8;
     const int w = L.width(), h = L.height();
     const float* ra = L.data() + std::size_t(y > 0 ? y - 1 : 0) * std::size_t(w);
     const float* rc = L.data() + std::size_t(y) * std::size_t(w);
     const float* rb = L.data() + std::size_t(y + 1 < h ? y + 1 : h - 1) * std::size_t(w);
-    // Neighbourhood (names as in the spec: S = row above, N = row below).
-    const VF C = hn::LoadU(df, rc + x), W = hn::LoadU(df, rc + x - 1), E = hn::LoadU(df, rc + x + 1);
-    const VF S = hn::LoadU(df, ra + x), SW = hn::LoadU(df, ra + x - 1), SE = hn::LoadU(df, ra + x + 1);
-    const VF N = hn::LoadU(df, rb + x), NW = hn::LoadU(df, rb + x - 1), NE = hn::LoadU(df, rb + x + 1);
+    return {hn::LoadU(df, rc + x),     hn::LoadU(df, rc + x - 1), hn::LoadU(df, rc + x + 1),
+            hn::LoadU(df, ra + x),     hn::LoadU(df, rb + x),     hn::LoadU(df, ra + x - 1),
+            hn::LoadU(df, rb + x - 1), hn::LoadU(df, ra + x + 1), hn::LoadU(df, rb + x + 1)};
+}
 
-    // edgeSides()
+// edgeSides() and diffusion() of ddaa_kernel.hpp, per lane.
+struct DiffusionV {
+    hn::Mask<DF> horizontal;
+    VF luma1, luma2, g1, g2;
+    VF dirX, dirY, strength;
+};
+HWY_INLINE DiffusionV Diffusion(const NeighbourhoodV& n, const Ddaa1Params& p) {
+    const DF df;
+    const DI di;
+    DiffusionV d;
     const VF m2 = hn::Set(df, -2.0f), two = hn::Set(df, 2.0f);
-    const VF edgeH = hn::Add(hn::Add(hn::Abs(hn::Add(hn::Mul(m2, W), hn::Add(SW, NW))),
-                                     hn::Mul(hn::Abs(hn::Add(hn::Mul(m2, C), hn::Add(S, N))), two)),
-                             hn::Abs(hn::Add(hn::Mul(m2, E), hn::Add(SE, NE))));
-    const VF edgeV = hn::Add(hn::Add(hn::Abs(hn::Add(hn::Mul(m2, N), hn::Add(NE, NW))),
-                                     hn::Mul(hn::Abs(hn::Add(hn::Mul(m2, C), hn::Add(W, E))), two)),
-                             hn::Abs(hn::Add(hn::Mul(m2, S), hn::Add(SW, SE))));
-    const auto horizontal = hn::Ge(edgeH, edgeV);
-    const VF g1 = hn::Sub(hn::IfThenElse(horizontal, S, W), C);
-    const VF g2 = hn::Sub(hn::IfThenElse(horizontal, N, E), C);
+    const VF edgeH = hn::Add(hn::Add(hn::Abs(hn::Add(hn::Mul(m2, n.W), hn::Add(n.SW, n.NW))),
+                                     hn::Mul(hn::Abs(hn::Add(hn::Mul(m2, n.C), hn::Add(n.S, n.N))), two)),
+                             hn::Abs(hn::Add(hn::Mul(m2, n.E), hn::Add(n.SE, n.NE))));
+    const VF edgeV = hn::Add(hn::Add(hn::Abs(hn::Add(hn::Mul(m2, n.N), hn::Add(n.NE, n.NW))),
+                                     hn::Mul(hn::Abs(hn::Add(hn::Mul(m2, n.C), hn::Add(n.W, n.E))), two)),
+                             hn::Abs(hn::Add(hn::Mul(m2, n.S), hn::Add(n.SW, n.SE))));
+    d.horizontal = hn::Ge(edgeH, edgeV);
+    d.luma1 = hn::IfThenElse(d.horizontal, n.S, n.W);
+    d.luma2 = hn::IfThenElse(d.horizontal, n.N, n.E);
+    d.g1 = hn::Sub(d.luma1, n.C);
+    d.g2 = hn::Sub(d.luma2, n.C);
 
-    // diffusion()
     const VF k1 = hn::Set(df, 162.0f / 256.0f), k2 = hn::Set(df, 47.0f / 256.0f);
-    const VF Dx = hn::Sub(hn::Add(hn::Add(hn::Mul(W, k1), hn::Mul(SW, k2)), hn::Mul(NW, k2)),
-                          hn::Add(hn::Add(hn::Mul(E, k1), hn::Mul(SE, k2)), hn::Mul(NE, k2)));
-    const VF Dy = hn::Sub(hn::Add(hn::Add(hn::Mul(S, k1), hn::Mul(SW, k2)), hn::Mul(SE, k2)),
-                          hn::Add(hn::Add(hn::Mul(N, k1), hn::Mul(NW, k2)), hn::Mul(NE, k2)));
+    const VF Dx = hn::Sub(hn::Add(hn::Add(hn::Mul(n.W, k1), hn::Mul(n.SW, k2)), hn::Mul(n.NW, k2)),
+                          hn::Add(hn::Add(hn::Mul(n.E, k1), hn::Mul(n.SE, k2)), hn::Mul(n.NE, k2)));
+    const VF Dy = hn::Sub(hn::Add(hn::Add(hn::Mul(n.S, k1), hn::Mul(n.SW, k2)), hn::Mul(n.SE, k2)),
+                          hn::Add(hn::Add(hn::Mul(n.N, k1), hn::Mul(n.NW, k2)), hn::Mul(n.NE, k2)));
     const VF ex = hn::Neg(Dy), ey = Dx;
     const VF len = hn::Sqrt(hn::Add(hn::Mul(ex, ex), hn::Mul(ey, ey)));
     const VF raw = hn::Mul(hn::Set(df, p.strength), hn::Sqrt(len));
     const auto valid = hn::Not(hn::Lt(raw, hn::Set(df, 1e-6f)));
-    const VF one = hn::Set(df, 1.0f);
-    VF strength = hn::IfThenElseZero(valid, hn::Min(one, raw));
-    const VF dirX = hn::IfThenElseZero(valid, hn::Div(ex, len));
-    const VF dirY = hn::IfThenElseZero(valid, hn::Div(ey, len));
-    const VF zero = hn::Zero(df);
-    const auto sameSign = hn::RebindMask(
-        df, hn::Eq(hn::BitCast(di, hn::VecFromMask(df, hn::Gt(g1, zero))),
-                   hn::BitCast(di, hn::VecFromMask(df, hn::Gt(g2, zero)))));
-    const VF ridge = hn::Sub(one, hn::Min(one, hn::Mul(hn::Set(df, p.ridgeFactor), hn::Min(hn::Abs(g1), hn::Abs(g2)))));
-    strength = hn::IfThenElse(sameSign, hn::Mul(strength, ridge), strength);
+    const VF one = hn::Set(df, 1.0f), zero = hn::Zero(df);
+    d.strength = hn::IfThenElseZero(valid, hn::Min(one, raw));
+    d.dirX = hn::IfThenElseZero(valid, hn::Div(ex, len));
+    d.dirY = hn::IfThenElseZero(valid, hn::Div(ey, len));
+    const auto sameSign = hn::RebindMask(df, hn::Eq(hn::BitCast(di, hn::VecFromMask(df, hn::Gt(d.g1, zero))),
+                                                    hn::BitCast(di, hn::VecFromMask(df, hn::Gt(d.g2, zero)))));
+    const VF ridge =
+        hn::Sub(one, hn::Min(one, hn::Mul(hn::Set(df, p.ridgeFactor), hn::Min(hn::Abs(d.g1), hn::Abs(d.g2)))));
+    d.strength = hn::IfThenElse(sameSign, hn::Mul(d.strength, ridge), d.strength);
+    return d;
+}
 
-    // diffuse(): two reads at centre -/+ step.
-    const VF maxDiff = hn::Set(df, p.maxDiffusion);
-    const VF sx = hn::Mul(hn::Mul(dirX, maxDiff), strength), sy = hn::Mul(hn::Mul(dirY, maxDiff), strength);
+// diffuse(): the average of two reads at centre -/+ step + (offU, offV), quantised and
+// stored with the source alpha; lanes whose exit mask is set keep the source pixel.
+HWY_INLINE void DiffuseAndStore(const Texture& tex, const DiffusionV& d, float maxDiffusion, VF offU, VF offV, int x,
+                                int y, const std::uint8_t* exitMask, const Rgba8* src, Rgba8* dst) {
+    const DF df;
+    const DI di;
+    const DU du;
+    const hn::Rebind<std::uint8_t, DF> d8;
+    const VF maxDiff = hn::Set(df, maxDiffusion);
+    const VF sx = hn::Mul(hn::Mul(d.dirX, maxDiff), d.strength), sy = hn::Mul(hn::Mul(d.dirY, maxDiff), d.strength);
     const VF u = hn::Div(hn::Add(hn::ConvertTo(df, hn::Iota(di, x)), hn::Set(df, 0.5f)),
                          hn::Set(df, float(tex.width())));
     const VF v = hn::Set(df, tex.centreV(y));
     const VF dU = hn::Mul(sx, hn::Set(df, tex.invW())), dV = hn::Mul(sy, hn::Set(df, tex.invH()));
-    const RgbV a = SampleGpu(tex, hn::Add(hn::Sub(u, dU), zero), hn::Add(hn::Sub(v, dV), zero));
-    const RgbV b = SampleGpu(tex, hn::Add(hn::Add(u, dU), zero), hn::Add(hn::Add(v, dV), zero));
+    const RgbV a = SampleGpu(tex, hn::Add(hn::Sub(u, dU), offU), hn::Add(hn::Sub(v, dV), offV));
+    const RgbV b = SampleGpu(tex, hn::Add(hn::Add(u, dU), offU), hn::Add(hn::Add(v, dV), offV));
     const VF half = hn::Set(df, 0.5f);
     const VI qr = Quantize(hn::Mul(hn::Add(a.r, b.r), half));
     const VI qg = Quantize(hn::Mul(hn::Add(a.g, b.g), half));
     const VI qb = Quantize(hn::Mul(hn::Add(a.b, b.b), half));
-
     const VU srcV = hn::LoadU(du, reinterpret_cast<const std::uint32_t*>(src + x));
     const VU rgb = hn::Or(hn::Or(hn::BitCast(du, qr), hn::ShiftLeft<8>(hn::BitCast(du, qg))),
                           hn::ShiftLeft<16>(hn::BitCast(du, qb)));
@@ -180,22 +195,167 @@ HWY_INLINE void Ddaa1Chunk(const Texture& tex, const ImageF& L, int x, int y, co
     hn::StoreU(hn::IfThenElse(keep, srcV, result), du, reinterpret_cast<std::uint32_t*>(dst + x));
 }
 
-// Processes the interior chunks of row y that contain at least one edge pixel; returns the
-// first x not handled (the caller finishes [that, W) and x = 0 with the scalar kernel).
-// handled[x] is set to 1 for pixels written here.
-inline int Ddaa1RowSimd(const Texture& tex, const ImageF& L, int y, const std::uint8_t* exitMask,
-                        const Ddaa1Params& p, const Rgba8* src, Rgba8* dst, std::uint8_t* handled) {
+// ddaa1 for pixels [x, x + N) of row y, 1 <= x, x + N <= W - 1.
+HWY_INLINE void Ddaa1Chunk(const Texture& tex, const ImageF& L, int x, int y, const std::uint8_t* exitMask,
+                           const Ddaa1Params& p, const Rgba8* src, Rgba8* dst) {
+    const DF df;
+    const DiffusionV d = Diffusion(LoadNeighbourhood(L, x, y), p);
+    DiffuseAndStore(tex, d, p.maxDiffusion, hn::Zero(df), hn::Zero(df), x, y, exitMask, src, dst);
+}
+
+// ddaa2's edge search for one side, per lane (edgeSearchOffset's searchSide): positions 2..
+// maxDistance read from the pair-luma planes (see PairLumaPlanes). Returns the distance
+// (maxDistance + 1 if not found) and the delta at the end (or at the last read).
+HWY_INLINE void SearchSide(const PairPlanes& planes, const hn::Mask<DF>& horizontal, const hn::Mask<DF>& steep2,
+                           int x, int y, int sign, VF first, VF gradientScaled, VF localAverage,
+                           hn::Mask<DF> skip, int maxDistance, VF* distance, VF* deltaEnd) {
+    const DF df;
+    const DI di;
+    const int w = planes.width, h = planes.height;
+    VF delta = first;
+    auto found = hn::Ge(hn::Abs(delta), gradientScaled);
+    VF dist = hn::IfThenElseZero(found, hn::Set(df, 1.0f));
+    VF end = delta;
+    auto done = hn::Or(found, skip);
+    const VI xv = hn::Iota(di, x);
+    const VI steepI = hn::IfThenElseZero(hn::RebindMask(di, steep2), hn::Set(di, 1));
+    // Horizontal edges: plane H row y + steep2, column clamp(x + sign k).
+    const VI rowH = hn::Mul(hn::Add(hn::Set(di, y), steepI), hn::Set(di, w));
+    // Vertical edges: plane V column x + steep2 of row clamp(y + sign k).
+    const VI colV = hn::Add(hn::Add(xv, steepI), hn::Set(di, planes.offsetV));
+    const auto hor = hn::RebindMask(di, horizontal);
+    const VI zero = hn::Zero(di), lastX = hn::Set(di, w - 1);
+    for (int k = 2; k <= maxDistance && !hn::AllTrue(df, done); ++k) {
+        const VI idxH = hn::Add(rowH, hn::Min(hn::Max(hn::Add(xv, hn::Set(di, sign * k)), zero), lastX));
+        const int yk = std::clamp(y + sign * k, 0, h - 1);
+        const VI idxV = hn::Add(colV, hn::Set(di, yk * (w + 1)));
+        const VF val = hn::GatherIndex(df, planes.data, hn::IfThenElse(hor, idxH, idxV));
+        delta = hn::Sub(val, localAverage);
+        const auto hit = hn::AndNot(found, hn::Ge(hn::Abs(delta), gradientScaled));
+        dist = hn::IfThenElse(hit, hn::Set(df, float(k)), dist);
+        end = hn::IfThenElse(found, end, delta);
+        found = hn::Or(found, hit);
+        done = hn::Or(done, hit);
+    }
+    // Lanes that stopped early because every lane was done keep their values; lanes that
+    // never found an end read up to maxDistance (the loop only ends early when all are done).
+    *distance = hn::IfThenElse(found, dist, hn::Set(df, float(maxDistance + 1)));
+    *deltaEnd = end;
+}
+
+// ddaa2 for pixels [x, x + N) of row y, 1 <= x, x + N <= W - 1.
+HWY_INLINE void Ddaa2Chunk(const Texture& tex, const ImageF& L, const PairPlanes& planes, int x, int y,
+                           const std::uint8_t* exitMask, const Ddaa2Params& p, const Rgba8* src, Rgba8* dst) {
+    const DF df;
+    const DI di;
+    const hn::Rebind<std::uint8_t, DF> d8;
+    const NeighbourhoodV n = LoadNeighbourhood(L, x, y);
+    DiffusionV d = Diffusion(n, p);
+
+    // edgeSearchOffset()
+    const auto steep2 = hn::Gt(hn::Abs(d.g2), hn::Abs(d.g1));
+    const VF lumaSteep = hn::IfThenElse(steep2, d.luma2, d.luma1);
+    const VF gradientScaled = hn::Mul(hn::Set(df, 0.25f), hn::Max(hn::Abs(d.g1), hn::Abs(d.g2)));
+    const VF half = hn::Set(df, 0.5f);
+    const VF localAverage = hn::Mul(hn::Add(lumaSteep, n.C), half);
+    const VF first1 = hn::IfThenElse(d.horizontal, hn::Mul(hn::Add(n.W, hn::IfThenElse(steep2, n.NW, n.SW)), half),
+                                     hn::Mul(hn::Add(n.S, hn::IfThenElse(steep2, n.SE, n.SW)), half));
+    const VF first2 = hn::IfThenElse(d.horizontal, hn::Mul(hn::Add(n.E, hn::IfThenElse(steep2, n.NE, n.SE)), half),
+                                     hn::Mul(hn::Add(n.N, hn::IfThenElse(steep2, n.NE, n.NW)), half));
+    const auto skip = hn::RebindMask(df, hn::Ne(hn::PromoteTo(di, hn::LoadU(d8, exitMask + x)), hn::Zero(di)));
+    const int maxDistance = 3 * p.searchRounds;
+    VF d1, d2, end1, end2;
+    SearchSide(planes, d.horizontal, steep2, x, y, -1, hn::Sub(first1, localAverage), gradientScaled, localAverage,
+               skip, maxDistance, &d1, &end1);
+    SearchSide(planes, d.horizontal, steep2, x, y, +1, hn::Sub(first2, localAverage), gradientScaled, localAverage,
+               skip, maxDistance, &d2, &end2);
+    const VF pixelOffset = hn::Sub(half, hn::Div(hn::Min(d1, d2), hn::Add(d1, d2)));
+    const VF deltaNear = hn::IfThenElse(hn::Lt(d1, d2), end1, end2);
+    const VF zero = hn::Zero(df), one = hn::Set(df, 1.0f);
+    const auto correct = hn::RebindMask(
+        df, hn::Ne(hn::BitCast(di, hn::VecFromMask(df, hn::Lt(deltaNear, zero))),
+                   hn::BitCast(di, hn::VecFromMask(df, hn::Lt(n.C, localAverage)))));
+    const VF across = hn::IfThenElse(steep2, one, hn::Set(df, -1.0f));
+    const VF offset = hn::IfThenElseZero(correct, hn::Mul(pixelOffset, across));
+
+    // Combination (section 2.3).
+    const VF edgeStrength = hn::Min(one, hn::Mul(hn::Set(df, 2.0f), hn::Abs(offset)));
+    d.strength = hn::Mul(d.strength, hn::Sub(one, edgeStrength));
+    const VF offU = hn::IfThenElse(d.horizontal, zero, hn::Mul(offset, hn::Set(df, tex.invW())));
+    const VF offV = hn::IfThenElse(d.horizontal, hn::Mul(offset, hn::Set(df, tex.invH())), zero);
+    DiffuseAndStore(tex, d, p.maxDiffusion, offU, offV, x, y, exitMask, src, dst);
+}
+
+// Runs `chunk` on the interior chunks of row y that hold at least one edge pixel and marks
+// their pixels in `handled`; the caller does x = 0, the tail and the exit pixels.
+template <class Chunk>
+HWY_INLINE void RowChunks(int w, const std::uint8_t* exitMask, std::uint8_t* handled, const Chunk& chunk) {
     const int n = int(hn::Lanes(DF()));
-    const int w = L.width();
-    int x = 1;
-    for (; x + n <= w - 1; x += n) {
+    for (int x = 1; x + n <= w - 1; x += n) {
         bool any = false;
         for (int i = 0; i < n; ++i) any |= exitMask[x + i] == 0;
         if (!any) continue;  // the caller copies exit pixels
-        Ddaa1Chunk(tex, L, x, y, exitMask, p, src, dst);
+        chunk(x);
         for (int i = 0; i < n; ++i) handled[x + i] = 1;
     }
-    return x;
+}
+
+inline void Ddaa1RowSimd(const Texture& tex, const ImageF& L, int y, const std::uint8_t* exitMask,
+                         const Ddaa1Params& p, const Rgba8* src, Rgba8* dst, std::uint8_t* handled) {
+    RowChunks(L.width(), exitMask, handled, [&](int x) { Ddaa1Chunk(tex, L, x, y, exitMask, p, src, dst); });
+}
+
+inline void Ddaa2RowSimd(const Texture& tex, const ImageF& L, const PairPlanes& planes, int y,
+                         const std::uint8_t* exitMask, const Ddaa2Params& p, const Rgba8* src, Rgba8* dst,
+                         std::uint8_t* handled) {
+    RowChunks(L.width(), exitMask, handled,
+              [&](int x) { Ddaa2Chunk(tex, L, planes, x, y, exitMask, p, src, dst); });
+}
+
+// Pair-luma planes for rows [y0, y1): plane H row y + 1 holds, for each column, the luma
+// of the GPU-model read half-way between image rows y and y + 1 (8 (a + b) / 4080 per
+// channel = (a + b) / 510, exactly); row 0 and row H are the clamped rows 0 and H - 1.
+// Plane V (width W + 1) likewise between columns x - 1 and x.
+inline void PairLumaRows(ImageView<const Rgba8> in, const ImageF& L, int y0, int y1, float* data, int offsetV) {
+    const DF df;
+    const DI di;
+    const DU du;
+    const int w = in.width(), h = in.height(), n = int(hn::Lanes(df));
+    const VU mask = hn::Set(du, 0xFFu);
+    const VF k510 = hn::Set(df, 510.0f);
+    const VF wr = hn::Set(df, 0.299f), wg = hn::Set(df, 0.587f), wb = hn::Set(df, 0.114f);
+    auto pairLumaV = [&](const Rgba8* a, const Rgba8* b) {
+        const VU pa = hn::LoadU(du, reinterpret_cast<const std::uint32_t*>(a));
+        const VU pb = hn::LoadU(du, reinterpret_cast<const std::uint32_t*>(b));
+        auto ch = [&](int shift) {
+            const VU sum = hn::Add(hn::And(hn::ShiftRightSame(pa, shift), mask), hn::And(hn::ShiftRightSame(pb, shift), mask));
+            return hn::Div(hn::ConvertTo(df, hn::BitCast(di, sum)), k510);
+        };
+        return hn::Sqrt(hn::Add(hn::Add(hn::Mul(wr, ch(0)), hn::Mul(wg, ch(8))), hn::Mul(wb, ch(16))));
+    };
+    for (int y = y0; y < y1; ++y) {
+        const float* lrow = L.data() + std::size_t(y) * std::size_t(w);
+        // Plane H, row y + 1 (and row 0 from the first image row).
+        float* hrow = data + std::size_t(y + 1) * std::size_t(w);
+        if (y == 0) std::copy(lrow, lrow + w, data);
+        if (y + 1 < h) {
+            const Rgba8* a = in.row(y);
+            const Rgba8* b = in.row(y + 1);
+            int x = 0;
+            for (; x + n <= w; x += n) hn::StoreU(pairLumaV(a + x, b + x), df, hrow + x);
+            for (; x < w; ++x) hrow[x] = pairLuma(a[x], b[x]);
+        } else {
+            std::copy(lrow, lrow + w, hrow);
+        }
+        // Plane V, row y: column c is between image columns c - 1 and c.
+        float* vrow = data + std::size_t(offsetV) + std::size_t(y) * std::size_t(w + 1);
+        const Rgba8* r = in.row(y);
+        vrow[0] = lrow[0];
+        vrow[w] = lrow[w - 1];
+        int x = 0;
+        for (; x + n <= w - 1; x += n) hn::StoreU(pairLumaV(r + x, r + x + 1), df, vrow + 1 + x);
+        for (; x < w - 1; ++x) vrow[1 + x] = pairLuma(r[x], r[x + 1]);
+    }
 }
 
 }  // namespace HWY_NAMESPACE

@@ -6,13 +6,26 @@
 // paper Fig. 7), 3 reads per round ("batched sampling", section 2.5: one texture
 // coordinate plus integer texel offsets, so a GPU issues them together). The first
 // position of each side is computed from lumas already known (section 2.5, last paragraph).
-#include "ddaa_kernel.hpp"
-#include "luma_driver.hpp"
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "src/aa/ddaa-inl.h"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+#include <hwy/highway.h>
+
+#include "src/aa/ddaa-inl.h"
+
+#if HWY_ONCE
+#include <climits>
+
+#include "src/aa/ddaa_kernel.hpp"
+#include "src/aa/luma_driver.hpp"
 #include "ssfx/aa/ddaa.hpp"
 
 namespace ssfx::aa {
 
 namespace detail {
+HWY_EXPORT(Ddaa2RowSimd);
+HWY_EXPORT(PairLumaRows);
+
 namespace {
 
 constexpr int kBatch = 3;  // samples per round: EDGE_STEP_LIST = [3, 3, 3, 3, 3]
@@ -94,6 +107,60 @@ float edgeSearchOffset(const Texture& tex, int x, int y, const Luma3x3& n, const
     return correct ? pixelOffset * float(across) : 0.0f;
 }
 
+}  // namespace
+
+// True when, for this image size, every read of the edge search lands exactly half-way
+// between two texels across the edge and exactly on a texel along it (GPU model: weights
+// 128 and 0/256), on the very texels the pair planes pair up, so each read equals a
+// pair-luma plane value. Mirrors the coordinate arithmetic of edgeSearchOffset(),
+// including clamp-to-edge. O(W + H); true for every realistic size.
+bool searchReadsArePairReads(const Texture& tex, int rounds) {
+    auto axisOk = [&](int n, float inv, auto centre, auto split) {
+        auto clampN = [n](int i) { return std::clamp(i, 0, n - 1); };
+        // The texel a read uses along the axis: split position plus texel offset.
+        auto texel = [&](const Texture::AxisPos& a, int offset) {
+            return a.w == 0 ? clampN(a.index + offset) : (a.w == 256 ? clampN(a.index + offset + 1) : INT_MIN);
+        };
+        for (int i = 0; i < n; ++i) {
+            const float c = centre(i);
+            for (int sign : {-1, 1}) {
+                const Texture::AxisPos a0 = split(c + 0.0f);
+                for (int k = 2; k <= 3; ++k)
+                    if (texel(a0, sign * k) != clampN(i + sign * k)) return false;
+                for (int r = 1; r < rounds; ++r) {
+                    const Texture::AxisPos a = split(c + float(sign) * (float(3 * r + 2) * inv));
+                    for (int k = -1; k <= 1; ++k)
+                        if (texel(a, sign * k) != clampN(i + sign * (3 * r + 2 + k))) return false;
+                }
+            }
+            for (int across : {-1, 1}) {
+                const Texture::AxisPos a = split(c + float(across) * 0.5f * inv);
+                const int first = across < 0 ? i - 1 : i;
+                if (a.w != 128 || clampN(a.index) != clampN(first) || clampN(a.index + 1) != clampN(first + 1))
+                    return false;
+            }
+        }
+        return true;
+    };
+    return axisOk(tex.width(), tex.invW(), [&](int x) { return tex.centreU(x); },
+                  [&](float u) { return tex.axisU(u); }) &&
+           axisOk(tex.height(), tex.invH(), [&](int y) { return tex.centreV(y); },
+                  [&](float v) { return tex.axisV(v); });
+}
+
+namespace {
+
+// The pair-luma planes of `in`, in a buffer kept per calling thread (see scratchLumaPlane).
+PairPlanes scratchPairPlanes(ImageView<const Rgba8> in, const ImageF& L, const Exec& exec) {
+    thread_local std::vector<float> buffer;
+    const int w = in.width(), h = in.height();
+    const std::size_t sizeH = std::size_t(h + 1) * std::size_t(w), sizeV = std::size_t(h) * std::size_t(w + 1);
+    buffer.resize(sizeH + sizeV);
+    float* data = buffer.data();
+    parallelRows(h, exec, [&](int y0, int y1) { HWY_DYNAMIC_DISPATCH(PairLumaRows)(in, L, y0, y1, data, int(sizeH)); });
+    return {data, w, h, int(sizeH)};
+}
+
 void validate(const Ddaa2Params& p) {
     validateDdaa1("ddaa2", p);
     checkParam("ddaa2", "searchRounds", p.searchRounds, 1, 5);
@@ -106,6 +173,14 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Ddaa2Params& p, 
     const Texture tex(in, p.filtering);
     const ImageF fresh = reference ? lumaPlaneReference(in) : ImageF();
     const ImageF& L = reference ? fresh : scratchLumaPlane(in, exec);
+    // The vector kernel across pixels: GPU filtering model, and search reads provably equal
+    // to pair-plane lookups for this size (else everything takes the scalar kernel).
+    const bool vector = !reference && p.filtering == Filtering::Gpu && searchReadsArePairReads(tex, p.searchRounds) &&
+                        std::int64_t(in.width() + 1) * (in.height() + 1) * 2 < INT_MAX;
+    const PairPlanes planes = vector ? scratchPairPlanes(in, L, exec) : PairPlanes{nullptr, 0, 0, 0};
+    auto rows = [&](int y, const std::uint8_t* mask, const Rgba8* src, Rgba8* dst, std::uint8_t* handled) {
+        if (vector) HWY_DYNAMIC_DISPATCH(Ddaa2RowSimd)(tex, L, planes, y, mask, p, src, dst, handled);
+    };
     runLumaMethod(in, out, L, p.edgeThresholdMin, p.edgeThreshold, exec, reference,
                   [&](int x, int y, const Luma3x3& n, float) {
                       const EdgeSides s = edgeSides(n);
@@ -118,7 +193,8 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Ddaa2Params& p, 
                       const float offU = s.horizontal ? 0.0f : offset * tex.invW();
                       const float offV = s.horizontal ? offset * tex.invH() : 0.0f;
                       return diffuse(tex, x, y, d, p.maxDiffusion, offU, offV);
-                  });
+                  },
+                  rows);
 }
 
 }  // namespace
@@ -137,3 +213,4 @@ ImageRgba8 ddaa2Reference(ImageView<const Rgba8> in, const Ddaa2Params& p) {
 }
 
 }  // namespace ssfx::aa
+#endif  // HWY_ONCE

@@ -4,6 +4,7 @@
 
 #include "ssfx/aa/ddaa.hpp"
 #include "ssfx/aa/fxaa.hpp"
+#include "src/aa/ddaa_kernel.hpp"
 #include "support/test_support.hpp"
 
 using namespace ssfx;
@@ -62,6 +63,17 @@ TEST(Ddaa, EarlyExitThresholdsFollowThePreset) {
     EXPECT_EQ(aa::ddaa2(img.view(), aa::ddaa2ParamsFor(aa::Preset::High)), img);
     EXPECT_NE(aa::ddaa2(img.view(), aa::ddaa2ParamsFor(aa::Preset::Ultra)), img);
     EXPECT_NE(aa::ddaa1(img.view(), aa::ddaa1ParamsFor(aa::Preset::Extreme)), img);
+}
+
+// The vector path of ddaa2 replaces its search reads by pair-plane lookups only where that
+// is provably exact; it must hold for the sizes people use, or the fast path never runs.
+TEST(Ddaa, SearchReadsArePairReadsForRealisticSizes) {
+    for (auto [w, h] : {std::pair{1920, 1080}, std::pair{600, 600}, std::pair{480, 480}, std::pair{3840, 2160},
+                        std::pair{1280, 720}, std::pair{61, 29}, std::pair{1, 1}, std::pair{7, 3}}) {
+        const ImageRgba8 img(w, h);
+        const Texture tex(img.view(), Filtering::Gpu);
+        EXPECT_TRUE(aa::detail::searchReadsArePairReads(tex, 5)) << w << "x" << h;
+    }
 }
 
 TEST(Ddaa, FastPathMatchesTheReference) {
