@@ -24,7 +24,6 @@ namespace ssfx::aa {
 
 namespace detail {
 HWY_EXPORT(Ddaa2RowSimd);
-HWY_EXPORT(PairLumaRows);
 
 namespace {
 
@@ -150,17 +149,6 @@ bool searchReadsArePairReads(const Texture& tex, int rounds) {
 
 namespace {
 
-// The pair-luma planes of `in`, in a buffer kept per calling thread (see scratchLumaPlane).
-PairPlanes scratchPairPlanes(ImageView<const Rgba8> in, const ImageF& L, const Exec& exec) {
-    thread_local std::vector<float> buffer;
-    const int w = in.width(), h = in.height();
-    const std::size_t sizeH = std::size_t(h + 1) * std::size_t(w), sizeV = std::size_t(h) * std::size_t(w + 1);
-    buffer.resize(sizeH + sizeV);
-    float* data = buffer.data();
-    parallelRows(h, exec, [&](int y0, int y1) { HWY_DYNAMIC_DISPATCH(PairLumaRows)(in, L, y0, y1, data, int(sizeH)); });
-    return {data, w, h, int(sizeH)};
-}
-
 void validate(const Ddaa2Params& p) {
     validateDdaa1("ddaa2", p);
     checkParam("ddaa2", "searchRounds", p.searchRounds, 1, 5);
@@ -176,8 +164,8 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Ddaa2Params& p, 
     // The vector kernel across pixels: GPU filtering model, and search reads provably equal
     // to pair-plane lookups for this size (else everything takes the scalar kernel).
     const bool vector = !reference && p.filtering == Filtering::Gpu && searchReadsArePairReads(tex, p.searchRounds) &&
-                        std::int64_t(in.width() + 1) * (in.height() + 1) * 2 < INT_MAX;
-    const PairPlanes planes = vector ? scratchPairPlanes(in, L, exec) : PairPlanes{nullptr, 0, 0, 0};
+                        std::int64_t(in.width() + 1) * (in.height() + 1) * 3 < INT_MAX;  // int32 gather indices
+    const LumaPlanes planes = vector ? scratchLumaPlanes(in, L, false, exec) : LumaPlanes{};
     auto rows = [&](int y, const std::uint8_t* mask, const Rgba8* src, Rgba8* dst, std::uint8_t* handled) {
         if (vector) HWY_DYNAMIC_DISPATCH(Ddaa2RowSimd)(tex, L, planes, y, mask, p, src, dst, handled);
     };

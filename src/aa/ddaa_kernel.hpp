@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "luma_planes.hpp"
 #include "ppaa_common.hpp"
 #include "ssfx/aa/ddaa.hpp"
 
@@ -11,25 +12,10 @@ namespace ssfx::aa::detail {
 
 void validateDdaa1(const char* method, const Ddaa1Params& p);
 
-//! Pair-luma planes of ddaa2's vector path: the luma of the GPU-model read half-way between
-//! two texels, for every pair of vertically adjacent texels (plane H, (H + 1) x W) and of
-//! horizontally adjacent texels (plane V, H x (W + 1), starting at `offsetV`). The edge
-//! search reads exactly such values (checked per image size: searchReadsArePairReads).
-struct PairPlanes {
-    const float* data;
-    int width, height;
-    int offsetV;
-};
-
 //! True when every read of ddaa2's edge search on an image of this size equals a pair-plane
 //! value (then the vector kernel runs; otherwise the scalar one). In ddaa2.cpp.
 bool searchReadsArePairReads(const Texture& tex, int rounds);
 
-//! Luma of the GPU-model read half-way between texels a and b: 8 (a + b) / 4080 per channel.
-inline float pairLuma(const Rgba8& a, const Rgba8& b) {
-    return luma(kSixteenthLevels[std::size_t(8 * (a.r + b.r))], kSixteenthLevels[std::size_t(8 * (a.g + b.g))],
-                kSixteenthLevels[std::size_t(8 * (a.b + b.b))]);
-}
 
 //! Diffusion direction (unit edge vector) and strength, after the small-structure rule.
 struct Diffusion {

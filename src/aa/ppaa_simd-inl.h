@@ -1,0 +1,266 @@
+// Vector building blocks shared by the PPAA kernels across pixels (ddaa-inl.h,
+// fxaa3d-inl.h): each lane is one pixel of a row, as in a GPU warp.
+//
+// Exactness: every float operation mirrors the scalar code (sample.cpp, ppaa_common.hpp)
+// in the same order and without FMA; GPU-model bilinear reads are integer work on gathered
+// texels, divided by 4080 exactly (IEEE division = the kSixteenthLevels table).
+#if defined(SSFX_AA_PPAA_SIMD_INL_H_) == defined(HWY_TARGET_TOGGLE)
+#ifdef SSFX_AA_PPAA_SIMD_INL_H_
+#undef SSFX_AA_PPAA_SIMD_INL_H_
+#else
+#define SSFX_AA_PPAA_SIMD_INL_H_
+#endif
+
+#include <hwy/highway.h>
+
+#include "src/aa/luma_planes.hpp"
+#include "src/aa/ppaa_common.hpp"
+
+HWY_BEFORE_NAMESPACE();
+namespace ssfx::aa::detail {
+namespace HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+using DF = hn::ScalableTag<float>;
+using DI = hn::RebindToSigned<DF>;
+using DU = hn::RebindToUnsigned<DF>;
+using VF = hn::Vec<DF>;
+using VI = hn::Vec<DI>;
+using VU = hn::Vec<DU>;
+
+struct RgbV {
+    VF r, g, b;
+};
+
+// One axis of the GPU sampling model (Texture::axis + pair), per lane.
+struct AxisV {
+    VI i0, i1, w;
+};
+HWY_INLINE AxisV SplitAxis(VF coord, float size, int n) {
+    const DF df;
+    const DI di;
+    const VF t = hn::Sub(hn::Mul(coord, hn::Set(df, size)), hn::Set(df, 0.5f));
+    const VF fl = hn::Floor(t);
+    const VF flc = hn::Min(hn::Max(fl, hn::Set(df, -4.0f)), hn::Set(df, float(n) + 4.0f));
+    const VI i = hn::ConvertTo(di, flc);
+    const VF frac = hn::Sub(t, fl);
+    const VI w = hn::ConvertTo(di, hn::Add(hn::Mul(frac, hn::Set(df, 256.0f)), hn::Set(df, 0.5f)));
+    const VI zero = hn::Zero(di), last = hn::Set(di, n - 1);
+    const VI one = hn::Set(di, 1);
+    return {hn::Min(hn::Max(i, zero), last), hn::Min(hn::Max(hn::Add(i, one), zero), last), w};
+}
+
+// k = (sum + 2048) >> 12 of one channel (byte `shift` of each texel), as a float k / 4080.
+HWY_INLINE VF Channel(VU t00, VU t10, VU t01, VU t11, VI w00, VI w10, VI w01, VI w11, int shift) {
+    const DF df;
+    const DI di;
+    const VU mask = hn::Set(DU(), 0xFFu);
+    auto byte = [&](VU t) { return hn::BitCast(di, hn::And(hn::ShiftRightSame(t, shift), mask)); };
+    const VI sum = hn::Add(hn::Add(hn::Add(hn::Mul(w00, byte(t00)), hn::Mul(w10, byte(t10))), hn::Mul(w01, byte(t01))),
+                           hn::Mul(w11, byte(t11)));
+    const VI k = hn::ShiftRight<12>(hn::Add(sum, hn::Set(di, 2048)));
+    return hn::Div(hn::ConvertTo(df, k), hn::Set(df, 4080.0f));
+}
+
+// Bilinear GPU-model read at (u, v) per lane (Texture::sampleGpu).
+HWY_INLINE RgbV SampleGpu(const Texture& tex, VF u, VF v) {
+    const DI di;
+    const DU du;
+    const AxisV ax = SplitAxis(u, float(tex.width()), tex.width());
+    const AxisV ay = SplitAxis(v, float(tex.height()), tex.height());
+    const VI stride = hn::Set(di, int(tex.image().stride()));
+    const VI r0 = hn::Mul(ay.i0, stride), r1 = hn::Mul(ay.i1, stride);
+    const auto* base = reinterpret_cast<const std::uint32_t*>(tex.image().data());
+    const VU t00 = hn::GatherIndex(du, base, hn::Add(r0, ax.i0));
+    const VU t10 = hn::GatherIndex(du, base, hn::Add(r0, ax.i1));
+    const VU t01 = hn::GatherIndex(du, base, hn::Add(r1, ax.i0));
+    const VU t11 = hn::GatherIndex(du, base, hn::Add(r1, ax.i1));
+    const VI k256 = hn::Set(di, 256);
+    const VI nx = hn::Sub(k256, ax.w), ny = hn::Sub(k256, ay.w);
+    const VI w00 = hn::Mul(nx, ny), w10 = hn::Mul(ax.w, ny), w01 = hn::Mul(nx, ay.w), w11 = hn::Mul(ax.w, ay.w);
+    return {Channel(t00, t10, t01, t11, w00, w10, w01, w11, 0), Channel(t00, t10, t01, t11, w00, w10, w01, w11, 8),
+            Channel(t00, t10, t01, t11, w00, w10, w01, w11, 16)};
+}
+
+// toUnorm8 per lane: floor(v * 255 + 0.5) of the *exact* product, in float32 only.
+// v * 255 = v * 256 - v with v * 256 exact; Fast2Sum and TwoSum recover the rounding
+// errors of the subtraction and of the + 0.5, and their sum E decides the two cases where
+// the rounded t = fl(v * 255 + 0.5) lies on the other side of an integer than the exact
+// value: t an integer with E < 0 (one lower), or E >= fl(t) + 1 - t (one higher).
+// Averages of GPU-model reads sit on a 1/32-level grid, so such ties are common.
+HWY_INLINE VI Quantize(VF v) {
+    const DF df;
+    const DI di;
+    const VF c = hn::Min(hn::Max(v, hn::Zero(df)), hn::Set(df, 1.0f));
+    const VF a = hn::Mul(c, hn::Set(df, 256.0f));  // exact
+    const VF s = hn::Sub(a, c);                      // Fast2Sum(a, -c), |a| >= |c|
+    const VF e1 = hn::Sub(hn::Neg(c), hn::Sub(s, a));
+    const VF half = hn::Set(df, 0.5f);
+    const VF t = hn::Add(s, half);  // TwoSum(s, 0.5)
+    const VF bp = hn::Sub(t, s);
+    const VF e2 = hn::Add(hn::Sub(s, hn::Sub(t, bp)), hn::Sub(half, bp));
+    const VF err = hn::Add(e1, e2);  // its sign is exact
+    const VF fl = hn::Floor(t);
+    const VF one = hn::Set(df, 1.0f);
+    const auto down = hn::And(hn::Eq(t, fl), hn::Lt(err, hn::Zero(df)));
+    const auto up = hn::Ge(err, hn::Sub(hn::Add(fl, one), t));
+    const VF r = hn::Add(hn::Sub(fl, hn::IfThenElseZero(down, one)), hn::IfThenElseZero(up, one));
+    return hn::ConvertTo(di, r);
+}
+
+// The 3x3 luma neighbourhood of pixels [x, x + N) of row y (S = row above, N = row below).
+struct NeighbourhoodV {
+    VF C, W, E, S, N, SW, NW, SE, NE;
+};
+HWY_INLINE NeighbourhoodV LoadNeighbourhood(const ImageF& L, int x, int y) {
+    const DF df;
+    const int w = L.width(), h = L.height();
+    const float* ra = L.data() + std::size_t(y > 0 ? y - 1 : 0) * std::size_t(w);
+    const float* rc = L.data() + std::size_t(y) * std::size_t(w);
+    const float* rb = L.data() + std::size_t(y + 1 < h ? y + 1 : h - 1) * std::size_t(w);
+    return {hn::LoadU(df, rc + x),     hn::LoadU(df, rc + x - 1), hn::LoadU(df, rc + x + 1),
+            hn::LoadU(df, ra + x),     hn::LoadU(df, rb + x),     hn::LoadU(df, ra + x - 1),
+            hn::LoadU(df, rb + x - 1), hn::LoadU(df, ra + x + 1), hn::LoadU(df, rb + x + 1)};
+}
+
+// edgeSides() per lane.
+struct EdgeSidesV {
+    hn::Mask<DF> horizontal;
+    VF luma1, luma2, g1, g2;
+};
+HWY_INLINE EdgeSidesV EdgeSides(const NeighbourhoodV& n) {
+    const DF df;
+    const VF m2 = hn::Set(df, -2.0f), two = hn::Set(df, 2.0f);
+    const VF edgeH = hn::Add(hn::Add(hn::Abs(hn::Add(hn::Mul(m2, n.W), hn::Add(n.SW, n.NW))),
+                                     hn::Mul(hn::Abs(hn::Add(hn::Mul(m2, n.C), hn::Add(n.S, n.N))), two)),
+                             hn::Abs(hn::Add(hn::Mul(m2, n.E), hn::Add(n.SE, n.NE))));
+    const VF edgeV = hn::Add(hn::Add(hn::Abs(hn::Add(hn::Mul(m2, n.N), hn::Add(n.NE, n.NW))),
+                                     hn::Mul(hn::Abs(hn::Add(hn::Mul(m2, n.C), hn::Add(n.W, n.E))), two)),
+                             hn::Abs(hn::Add(hn::Mul(m2, n.S), hn::Add(n.SW, n.SE))));
+    EdgeSidesV s;
+    s.horizontal = hn::Ge(edgeH, edgeV);
+    s.luma1 = hn::IfThenElse(s.horizontal, n.S, n.W);
+    s.luma2 = hn::IfThenElse(s.horizontal, n.N, n.E);
+    s.g1 = hn::Sub(s.luma1, n.C);
+    s.g2 = hn::Sub(s.luma2, n.C);
+    return s;
+}
+
+// (a < 0) != (b < 0)-style comparisons of two masks, as a mask.
+HWY_INLINE hn::Mask<DF> MaskNe(hn::Mask<DF> a, hn::Mask<DF> b) {
+    const DF df;
+    const DI di;
+    return hn::RebindMask(df, hn::Ne(hn::BitCast(di, hn::VecFromMask(df, a)), hn::BitCast(di, hn::VecFromMask(df, b))));
+}
+
+// Lanes whose early-exit flag is set.
+HWY_INLINE hn::Mask<DF> ExitLanes(const std::uint8_t* exitMask, int x) {
+    const DF df;
+    const DI di;
+    const hn::Rebind<std::uint8_t, DF> d8;
+    return hn::RebindMask(df, hn::Ne(hn::PromoteTo(di, hn::LoadU(d8, exitMask + x)), hn::Zero(di)));
+}
+
+// Texture coordinate of the centres of pixels x .. x + N - 1 (Texture::centreU).
+HWY_INLINE VF CentreU(const Texture& tex, int x) {
+    const DF df;
+    const DI di;
+    return hn::Div(hn::Add(hn::ConvertTo(df, hn::Iota(di, x)), hn::Set(df, 0.5f)), hn::Set(df, float(tex.width())));
+}
+
+// Stores quantised RGB with the source alpha; lanes that exited keep the source pixel.
+HWY_INLINE void StoreRgb(const RgbV& c, int x, const std::uint8_t* exitMask, const Rgba8* src, Rgba8* dst) {
+    const DU du;
+    const VU srcV = hn::LoadU(du, reinterpret_cast<const std::uint32_t*>(src + x));
+    const VU rgb = hn::Or(hn::Or(hn::BitCast(du, Quantize(c.r)), hn::ShiftLeft<8>(hn::BitCast(du, Quantize(c.g)))),
+                          hn::ShiftLeft<16>(hn::BitCast(du, Quantize(c.b))));
+    const VU result = hn::Or(rgb, hn::And(srcV, hn::Set(du, 0xFF000000u)));
+    hn::StoreU(hn::IfThenElse(hn::RebindMask(du, ExitLanes(exitMask, x)), srcV, result), du,
+               reinterpret_cast<std::uint32_t*>(dst + x));
+}
+
+// Runs `chunk` on the interior chunks of row y that hold at least one edge pixel and marks
+// their pixels in `handled`; the caller does x = 0, the tail and the exit pixels.
+template <class Chunk>
+HWY_INLINE void RowChunks(int w, const std::uint8_t* exitMask, std::uint8_t* handled, const Chunk& chunk) {
+    const int n = int(hn::Lanes(DF()));
+    for (int x = 1; x + n <= w - 1; x += n) {
+        bool any = false;
+        for (int i = 0; i < n; ++i) any |= exitMask[x + i] == 0;
+        if (!any) continue;  // the caller copies exit pixels
+        chunk(x);
+        for (int i = 0; i < n; ++i) handled[x + i] = 1;
+    }
+}
+
+// Luma planes for rows [y0, y1) (layout in luma_planes.hpp). Half-way reads between two
+// texels are 8 (a + b) / 4080 = (a + b) / 510 per channel, between four texels
+// 4 (a + b + c + d) / 4080 = (a + b + c + d) / 1020, both exactly (same real number).
+inline void LumaPlaneRows(ImageView<const Rgba8> in, const ImageF& L, int y0, int y1, const LumaPlanes& planes) {
+    const DF df;
+    const DI di;
+    const DU du;
+    const int w = in.width(), h = in.height(), n = int(hn::Lanes(df));
+    float* data = const_cast<float*>(planes.data);
+    const VU mask = hn::Set(du, 0xFFu);
+    const VF wr = hn::Set(df, 0.299f), wg = hn::Set(df, 0.587f), wb = hn::Set(df, 0.114f);
+    auto ch = [&](VU p, int shift) { return hn::And(hn::ShiftRightSame(p, shift), mask); };
+    auto lumaOf = [&](VU sr, VU sg, VU sb, float divisor) {
+        const VF k = hn::Set(df, divisor);
+        const VF r = hn::Div(hn::ConvertTo(df, hn::BitCast(di, sr)), k);
+        const VF g = hn::Div(hn::ConvertTo(df, hn::BitCast(di, sg)), k);
+        const VF b = hn::Div(hn::ConvertTo(df, hn::BitCast(di, sb)), k);
+        return hn::Sqrt(hn::Add(hn::Add(hn::Mul(wr, r), hn::Mul(wg, g)), hn::Mul(wb, b)));
+    };
+    auto load = [&](const Rgba8* p) { return hn::LoadU(du, reinterpret_cast<const std::uint32_t*>(p)); };
+    auto pairV = [&](const Rgba8* a, const Rgba8* b) {
+        const VU pa = load(a), pb = load(b);
+        return lumaOf(hn::Add(ch(pa, 0), ch(pb, 0)), hn::Add(ch(pa, 8), ch(pb, 8)), hn::Add(ch(pa, 16), ch(pb, 16)),
+                      510.0f);
+    };
+    auto quadV = [&](const Rgba8* a, const Rgba8* b) {  // columns c - 1, c of rows a and b
+        const VU p0 = load(a), p1 = load(a + 1), p2 = load(b), p3 = load(b + 1);
+        auto sum = [&](int s) { return hn::Add(hn::Add(ch(p0, s), ch(p1, s)), hn::Add(ch(p2, s), ch(p3, s))); };
+        return lumaOf(sum(0), sum(8), sum(16), 1020.0f);
+    };
+    auto clampRow = [h](int y) { return y < 0 ? 0 : (y >= h ? h - 1 : y); };
+    for (int y = y0; y < y1; ++y) {
+        const Rgba8* r = in.row(y);
+        // Plane H: rows y + 1 (pair y, y + 1) and, for the first row, row 0 (pair 0, 0).
+        for (int row : {y + 1, y == 0 ? 0 : -1}) {
+            if (row < 0) continue;
+            const Rgba8* a = in.row(clampRow(row - 1));
+            const Rgba8* b = in.row(clampRow(row));
+            float* out = data + planes.rowH(row);
+            int x = 0;
+            for (; x + n <= w; x += n) hn::StoreU(pairV(a + x, b + x), df, out + x);
+            for (; x < w; ++x) out[x] = pairLuma(a[x], b[x]);
+        }
+        // Plane V, row y: column c between image columns c - 1 and c (clamped).
+        float* v = data + planes.rowV(y);
+        v[0] = pairLuma(r[0], r[0]);
+        v[w] = pairLuma(r[w - 1], r[w - 1]);
+        int x = 0;
+        for (; x + n <= w - 1; x += n) hn::StoreU(pairV(r + x, r + x + 1), df, v + 1 + x);
+        for (; x < w - 1; ++x) v[1 + x] = pairLuma(r[x], r[x + 1]);
+        if (!planes.hasQuad()) continue;
+        // Plane Q: rows y + 1 (and 0), column c between columns c - 1 and c.
+        for (int row : {y + 1, y == 0 ? 0 : -1}) {
+            if (row < 0) continue;
+            const Rgba8* a = in.row(clampRow(row - 1));
+            const Rgba8* b = in.row(clampRow(row));
+            float* q = data + planes.rowQ(row);
+            q[0] = quadLuma(a[0], a[0], b[0], b[0]);
+            q[w] = quadLuma(a[w - 1], a[w - 1], b[w - 1], b[w - 1]);
+            int c = 1;
+            for (; c - 1 + n + 1 <= w; c += n) hn::StoreU(quadV(a + c - 1, b + c - 1), df, q + c);
+            for (; c < w; ++c) q[c] = quadLuma(a[c - 1], a[c], b[c - 1], b[c]);
+        }
+    }
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace ssfx::aa::detail
+HWY_AFTER_NAMESPACE();
+
+#endif  // include guard
