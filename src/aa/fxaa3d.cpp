@@ -4,12 +4,71 @@
 //
 // Deviation switch: Fxaa3dParams::paperSearchQuirk (default on) reproduces the paper's
 // shader, which steps side 2 back one pixel after its first read.
-#include "luma_driver.hpp"
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "src/aa/fxaa3d-inl.h"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+#include <hwy/highway.h>
+
+#include "src/aa/fxaa3d-inl.h"
+
+#if HWY_ONCE
+#include <climits>
+
+#include "src/aa/luma_driver.hpp"
+#include "src/aa/luma_planes.hpp"
 #include "ssfx/aa/fxaa.hpp"
 
 namespace ssfx::aa {
 
 namespace detail {
+HWY_EXPORT(Fxaa3dRowSimd);
+
+// True when, for this image size, every read of the walk lands on the texels a luma plane
+// pairs up, with the GPU-model weights that make it a plane value: 0/256 along and 128
+// across at whole-pixel distances (pair planes), 128 and 128 at the x.5 distances (quad
+// plane). Replays fxaa3dPixel()'s float coordinate arithmetic, clamp-to-edge included.
+// O(12 (W + H)); true for every realistic size.
+bool walkReadsArePlaneReads(const Texture& tex, bool quirk) {
+    constexpr float kQ[12] = {1.0f, 1.0f, 1.0f, 1.0f, 1.0f, 1.5f, 2.0f, 2.0f, 2.0f, 2.0f, 4.0f, 8.0f};
+    constexpr int kHalf[12] = {2, 2, 2, 2, 2, 3, 4, 4, 4, 4, 8, 16};
+    auto axisOk = [&](int n, float inv, auto centre, auto split) {
+        auto clampN = [n](int i) { return std::clamp(i, 0, n - 1); };
+        for (int i = 0; i < n; ++i) {
+            const float c = centre(i);
+            for (int side : {-1, 1}) {
+                float pos = side < 0 ? c - inv * kQ[0] : c + inv * kQ[0];
+                int hs = 2 * side;
+                for (int k = 0; k <= 10; ++k) {  // reads follow the steps 0 .. 10
+                    if (k > 0) {
+                        const bool backwards = side < 0 || (k == 1 && quirk);
+                        pos = backwards ? pos - inv * kQ[k] : pos + inv * kQ[k];
+                        hs += backwards ? -kHalf[k] : kHalf[k];
+                    }
+                    const Texture::AxisPos a = split(pos);
+                    if (hs % 2 == 0) {
+                        if (a.w != 0 && a.w != 256) return false;
+                        if (clampN(a.index + (a.w == 256 ? 1 : 0)) != clampN(i + hs / 2)) return false;
+                    } else if (a.w != 128 || clampN(a.index) != clampN(i + (hs - 1) / 2) ||
+                               clampN(a.index + 1) != clampN(i + (hs + 1) / 2)) {
+                        return false;
+                    }
+                }
+            }
+            for (int across : {-1, 1}) {
+                const Texture::AxisPos a = split(c + (across < 0 ? -inv : inv) * 0.5f);
+                const int first = across < 0 ? i - 1 : i;
+                if (a.w != 128 || clampN(a.index) != clampN(first) || clampN(a.index + 1) != clampN(first + 1))
+                    return false;
+            }
+        }
+        return true;
+    };
+    return axisOk(tex.width(), tex.invW(), [&](int x) { return tex.centreU(x); },
+                  [&](float u) { return tex.axisU(u); }) &&
+           axisOk(tex.height(), tex.invH(), [&](int y) { return tex.centreV(y); },
+                  [&](float v) { return tex.axisV(v); });
+}
+
 namespace {
 
 // Step after each unsuccessful read, in pixels: 1 for the first five, then skipping.
@@ -96,8 +155,17 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Fxaa3dParams& p,
     const Texture tex(in, p.filtering);
     const ImageF fresh = reference ? lumaPlaneReference(in) : ImageF();
     const ImageF& L = reference ? fresh : scratchLumaPlane(in, exec);
-    runLumaMethod(in, out, L, p.edgeThresholdMin, p.edgeThreshold, exec, reference,
-                  [&](int x, int y, const Luma3x3& n, float range) { return fxaa3dPixel(tex, x, y, n, range, p); });
+    // The vector kernel across pixels: GPU filtering model, and walk reads provably equal to
+    // plane lookups for this size (else everything takes the scalar kernel).
+    const bool vector = !reference && p.filtering == Filtering::Gpu && walkReadsArePlaneReads(tex, p.paperSearchQuirk) &&
+                        std::int64_t(in.width() + 1) * (in.height() + 1) * 3 < INT_MAX;  // int32 gather indices
+    const LumaPlanes planes = vector ? scratchLumaPlanes(in, L, true, exec) : LumaPlanes{};
+    auto rows = [&](int y, const std::uint8_t* mask, const Rgba8* src, Rgba8* dst, std::uint8_t* handled) {
+        if (vector) HWY_DYNAMIC_DISPATCH(Fxaa3dRowSimd)(tex, L, planes, y, mask, p, src, dst, handled);
+    };
+    runLumaMethod(
+        in, out, L, p.edgeThresholdMin, p.edgeThreshold, exec, reference,
+        [&](int x, int y, const Luma3x3& n, float range) { return fxaa3dPixel(tex, x, y, n, range, p); }, rows);
 }
 
 }  // namespace
@@ -116,3 +184,4 @@ ImageRgba8 fxaa3dReference(ImageView<const Rgba8> in, const Fxaa3dParams& p) {
 }
 
 }  // namespace ssfx::aa
+#endif  // HWY_ONCE

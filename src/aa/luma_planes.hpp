@@ -44,6 +44,10 @@ inline float quadLuma(const Rgba8& a, const Rgba8& b, const Rgba8& c, const Rgba
                 kSixteenthLevels[std::size_t(4 * (a.b + b.b + c.b + d.b))]);
 }
 
+//! True when every read of fxaa3d's walk on an image of this size equals a plane value
+//! (then its vector kernel runs; otherwise the scalar one). In fxaa3d.cpp.
+bool walkReadsArePlaneReads(const Texture& tex, bool paperSearchQuirk);
+
 //! The planes of `in` (SIMD, threaded) in a buffer kept per calling thread and reused
 //! while the size stays the same. Valid until the next call on the same thread.
 LumaPlanes scratchLumaPlanes(ImageView<const Rgba8> in, const ImageF& L, bool withQuad, const Exec& exec);

@@ -2,6 +2,7 @@
 
 #include "ssfx/aa/ddaa.hpp"
 #include "ssfx/aa/fxaa.hpp"
+#include "src/aa/luma_planes.hpp"
 #include "support/test_support.hpp"
 
 using namespace ssfx;
@@ -28,6 +29,27 @@ TEST(Fxaa3d, PixelSkippingCannotTellEdgeEndsSixAndSevenApart) {
     EXPECT_NE(fa(px, py), a(px, py));  // and it did anti-alias the pixel
     const auto da = aa::ddaa2(a.view()), db = aa::ddaa2(b.view());
     EXPECT_NE(da(px, py), db(px, py));
+}
+
+// fxaa3d's vector path replaces its walk reads by plane lookups only where provably exact;
+// it must hold for the sizes people use (both search variants), or it never runs.
+TEST(Fxaa3d, WalkReadsArePlaneReadsForRealisticSizes) {
+    for (auto [w, h] : {std::pair{1920, 1080}, std::pair{600, 600}, std::pair{480, 480}, std::pair{3840, 2160},
+                        std::pair{1280, 720}, std::pair{61, 29}, std::pair{1, 1}}) {
+        const ImageRgba8 img(w, h);
+        const Texture tex(img.view(), Filtering::Gpu);
+        EXPECT_TRUE(aa::detail::walkReadsArePlaneReads(tex, true)) << w << "x" << h;
+        EXPECT_TRUE(aa::detail::walkReadsArePlaneReads(tex, false)) << w << "x" << h;
+    }
+}
+
+TEST(Fxaa3d, FastPathMatchesTheReference) {
+    for (const auto& img : {test::noise(61, 29, 8), edgeEndingAt(20)}) {
+        EXPECT_EQ(aa::fxaa3d(img.view()), aa::fxaa3dReference(img.view()));
+        aa::Fxaa3dParams lottes;
+        lottes.paperSearchQuirk = false;
+        EXPECT_EQ(aa::fxaa3d(img.view(), lottes), aa::fxaa3dReference(img.view(), lottes));
+    }
 }
 
 TEST(Fxaa3d, EarlyExitLeavesLowContrastUntouched) {

@@ -1,0 +1,146 @@
+// Highway body of fxaa3d's per-pixel kernel across pixels (see fxaa3d.cpp for the scalar
+// oracle, fxaa3dPixel). The walk keeps the scalar's float coordinates lane by lane, so the
+// distances are bit-identical; its reads come from the luma planes (pair planes at whole-
+// texel positions, the quad plane at the half-texel ones), which fxaa3d.cpp proves equal
+// to the GPU-model reads for the image size before taking this path.
+#if defined(SSFX_AA_FXAA3D_INL_H_) == defined(HWY_TARGET_TOGGLE)
+#ifdef SSFX_AA_FXAA3D_INL_H_
+#undef SSFX_AA_FXAA3D_INL_H_
+#else
+#define SSFX_AA_FXAA3D_INL_H_
+#endif
+
+#include <hwy/highway.h>
+
+#include "src/aa/ppaa_simd-inl.h"
+#include "ssfx/aa/fxaa.hpp"
+
+HWY_BEFORE_NAMESPACE();
+namespace ssfx::aa::detail {
+namespace HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+// Steps of the walk in half pixels (2 x FXAA_QUALITY__P0..P11 = 1, 1, 1, 1, 1, 1.5, 2, 2, 2, 2, 4, 8).
+constexpr int kHalfSteps[12] = {2, 2, 2, 2, 2, 3, 4, 4, 4, 4, 8, 16};
+constexpr float kFxaaSteps[12] = {1.0f, 1.0f, 1.0f, 1.0f, 1.0f, 1.5f, 2.0f, 2.0f, 2.0f, 2.0f, 4.0f, 8.0f};
+
+// Plane index of the read `hs` half pixels along the edge from pixels x.. of row y, half a
+// pixel across towards the steep side (acrossH: plane row for horizontal edges, acrossV:
+// plane column for vertical ones).
+HWY_INLINE VI WalkIndex(const LumaPlanes& planes, const hn::Mask<DI>& horizontal, VI xv, int y, VI hs, VI acrossH,
+                        VI acrossV) {
+    const DI di;
+    const VI one = hn::Set(di, 1), zero = hn::Zero(di);
+    const VI wq = hn::Set(di, planes.width + 1);
+    const auto even = hn::Eq(hn::And(hs, one), zero);
+    const VI whole = hn::ShiftRight<1>(hs);             // hs / 2 for even hs
+    const VI upper = hn::ShiftRight<1>(hn::Add(hs, one));  // (hs + 1) / 2 for odd hs
+    const VI baseV = hn::Set(di, int(planes.rowV(0))), baseQ = hn::Set(di, int(planes.rowQ(0)));
+    // Horizontal edges: along x.
+    const VI hEven = hn::Add(hn::Mul(acrossH, hn::Set(di, planes.width)),
+                             hn::Min(hn::Max(hn::Add(xv, whole), zero), hn::Set(di, planes.width - 1)));
+    const VI hOdd = hn::Add(hn::Add(baseQ, hn::Mul(acrossH, wq)),
+                            hn::Min(hn::Max(hn::Add(xv, upper), zero), hn::Set(di, planes.width)));
+    // Vertical edges: along y.
+    const VI yv = hn::Set(di, y);
+    const VI vEven = hn::Add(
+        hn::Add(baseV, hn::Mul(hn::Min(hn::Max(hn::Add(yv, whole), zero), hn::Set(di, planes.height - 1)), wq)),
+        acrossV);
+    const VI vOdd = hn::Add(
+        hn::Add(baseQ, hn::Mul(hn::Min(hn::Max(hn::Add(yv, upper), zero), hn::Set(di, planes.height)), wq)), acrossV);
+    return hn::IfThenElse(horizontal, hn::IfThenElse(even, hEven, hOdd), hn::IfThenElse(even, vEven, vOdd));
+}
+
+// fxaa3d for pixels [x, x + N) of row y, 1 <= x, x + N <= W - 1.
+HWY_INLINE void Fxaa3dChunk(const Texture& tex, const ImageF& L, const LumaPlanes& planes, int x, int y,
+                            const std::uint8_t* exitMask, const Fxaa3dParams& p, const Rgba8* src, Rgba8* dst) {
+    const DF df;
+    const DI di;
+    const NeighbourhoodV n = LoadNeighbourhood(L, x, y);
+    const EdgeSidesV s = EdgeSides(n);
+    const VF zero = hn::Zero(df), one = hn::Set(df, 1.0f), half = hn::Set(df, 0.5f);
+    const VF lumaMax = hn::Max(hn::Max(hn::Max(n.S, n.N), hn::Max(n.W, n.E)), n.C);
+    const VF lumaMin = hn::Min(hn::Min(hn::Min(n.S, n.N), hn::Min(n.W, n.E)), n.C);
+    const VF range = hn::Sub(lumaMax, lumaMin);
+
+    const auto pair1 = hn::Ge(hn::Abs(s.g1), hn::Abs(s.g2));
+    const VF lumaSteep = hn::IfThenElse(pair1, s.luma1, s.luma2);
+    const VF gradientScaled = hn::Mul(hn::Set(df, 0.25f), hn::Max(hn::Abs(s.g1), hn::Abs(s.g2)));
+    const VF localAverage = hn::Mul(hn::Add(lumaSteep, n.C), half);
+    const VF base = hn::IfThenElse(s.horizontal, hn::Set(df, tex.invH()), hn::Set(df, tex.invW()));
+    const VF lengthSign = hn::IfThenElse(pair1, hn::Neg(base), base);
+
+    // Along-edge coordinates: u for horizontal edges, v for vertical ones (the other
+    // coordinate of the walk never changes, its step being 0).
+    const VF u = CentreU(tex, x), v = hn::Set(df, tex.centreV(y));
+    const VF centre = hn::IfThenElse(s.horizontal, u, v);
+    const VF off = hn::IfThenElse(s.horizontal, hn::Set(df, tex.invW()), hn::Set(df, tex.invH()));
+    VF posN = hn::Sub(centre, hn::Mul(off, hn::Set(df, kFxaaSteps[0])));
+    VF posP = hn::Add(centre, hn::Mul(off, hn::Set(df, kFxaaSteps[0])));
+    VI hsN = hn::Set(di, -kHalfSteps[0]), hsP = hn::Set(di, kHalfSteps[0]);
+
+    const auto hor = hn::RebindMask(di, s.horizontal);
+    const VI xv = hn::Iota(di, x);
+    const VI steep2 = hn::IfThenElseZero(hn::RebindMask(di, hn::Not(pair1)), hn::Set(di, 1));
+    const VI acrossH = hn::Add(hn::Set(di, y), steep2);  // plane row between y - 1 | y and y | y + 1
+    const VI acrossV = hn::Add(xv, steep2);              // plane column likewise
+    auto read = [&](VI hs) {
+        return hn::Sub(hn::GatherIndex(df, planes.data, WalkIndex(planes, hor, xv, y, hs, acrossH, acrossV)),
+                       localAverage);
+    };
+    const auto skip = ExitLanes(exitMask, x);
+    VF endN = read(hsN), endP = read(hsP);
+    auto doneN = hn::Or(hn::Ge(hn::Abs(endN), gradientScaled), skip);
+    auto doneP = hn::Or(hn::Ge(hn::Abs(endP), gradientScaled), skip);
+    for (int i = 1; i < 12; ++i) {
+        const VF step = hn::Mul(off, hn::Set(df, kFxaaSteps[i]));
+        const VI hstep = hn::Set(di, kHalfSteps[i]);
+        posN = hn::IfThenElse(doneN, posN, hn::Sub(posN, step));
+        hsN = hn::IfThenElse(hn::RebindMask(di, doneN), hsN, hn::Sub(hsN, hstep));
+        const bool back = i == 1 && p.paperSearchQuirk;  // the paper's shader steps side 2 back once
+        posP = hn::IfThenElse(doneP, posP, back ? hn::Sub(posP, step) : hn::Add(posP, step));
+        hsP = hn::IfThenElse(hn::RebindMask(di, doneP), hsP, back ? hn::Sub(hsP, hstep) : hn::Add(hsP, hstep));
+        if (i == 11 || hn::AllTrue(df, hn::And(doneN, doneP))) break;  // no read after the last step
+        endN = hn::IfThenElse(doneN, endN, read(hsN));
+        endP = hn::IfThenElse(doneP, endP, read(hsP));
+        doneN = hn::Or(doneN, hn::Ge(hn::Abs(endN), gradientScaled));
+        doneP = hn::Or(doneP, hn::Ge(hn::Abs(endP), gradientScaled));
+    }
+
+    const VF dstN = hn::Sub(centre, posN), dstP = hn::Sub(posP, centre);
+    const auto centreBelow = hn::Lt(hn::Sub(n.C, localAverage), zero);
+    const auto goodSpanN = MaskNe(hn::Lt(endN, zero), centreBelow);
+    const auto goodSpanP = MaskNe(hn::Lt(endP, zero), centreBelow);
+    const auto directionN = hn::Lt(dstN, dstP);
+    const VF pixelOffset = hn::Sub(half, hn::Div(hn::Min(dstN, dstP), hn::Add(dstN, dstP)));
+    const auto goodSpan = hn::Or(hn::And(directionN, goodSpanN), hn::AndNot(directionN, goodSpanP));
+
+    // Sub-pixel term (FXAA 3.11 subpix).
+    const VF avg = hn::Mul(hn::Set(df, 1.0f / 12.0f),
+                           hn::Add(hn::Add(hn::Mul(hn::Set(df, 2.0f), hn::Add(hn::Add(n.S, n.N), hn::Add(n.W, n.E))),
+                                           hn::Add(n.SW, n.NW)),
+                                   hn::Add(n.SE, n.NE)));
+    VF sp = hn::Min(hn::Max(hn::Div(hn::Abs(hn::Sub(avg, n.C)), range), zero), one);
+    sp = hn::IfThenElseZero(hn::Gt(range, zero), sp);
+    sp = hn::Mul(hn::Mul(hn::Add(hn::Mul(hn::Set(df, -2.0f), sp), hn::Set(df, 3.0f)), sp), sp);
+    const VF sub = hn::Mul(hn::Mul(sp, sp), hn::Set(df, p.subpix));
+    const VF offset = hn::Max(hn::IfThenElseZero(goodSpan, pixelOffset), sub);
+
+    const VF shift = hn::Mul(offset, lengthSign);
+    const RgbV c = SampleGpu(tex, hn::IfThenElse(s.horizontal, u, hn::Add(u, shift)),
+                             hn::IfThenElse(s.horizontal, hn::Add(v, shift), v));
+    StoreRgb(c, x, exitMask, src, dst);
+}
+
+inline void Fxaa3dRowSimd(const Texture& tex, const ImageF& L, const LumaPlanes& planes, int y,
+                          const std::uint8_t* exitMask, const Fxaa3dParams& p, const Rgba8* src, Rgba8* dst,
+                          std::uint8_t* handled) {
+    RowChunks(L.width(), exitMask, handled,
+              [&](int x) { Fxaa3dChunk(tex, L, planes, x, y, exitMask, p, src, dst); });
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace ssfx::aa::detail
+HWY_AFTER_NAMESPACE();
+
+#endif  // include guard
