@@ -82,21 +82,21 @@ HWY_INLINE void Ddaa1Chunk(const Texture& tex, const ImageF& L, int x, int y, co
     DiffuseAndStore(tex, d, p.maxDiffusion, hn::Zero(df), hn::Zero(df), x, y, exitMask, src, dst);
 }
 
-// ddaa2's edge search for one side, per lane (edgeSearchOffset's searchSide): positions 2..
-// maxDistance read from the pair-luma planes (see PairLumaPlanes). Returns the distance
-// (maxDistance + 1 if not found) and the delta at the end (or at the last read).
-HWY_INLINE void SearchSide(const LumaPlanes& planes, const hn::Mask<DF>& horizontal, const hn::Mask<DF>& steep2,
-                           int x, int y, int sign, VF first, VF gradientScaled, VF localAverage,
-                           hn::Mask<DF> skip, int maxDistance, VF* distance, VF* deltaEnd) {
+// ddaa2's edge search, both sides at once, per lane (edgeSearchOffset's searchSide).
+// Positions 2 .. maxDistance are read from the pair-luma planes in rounds of three
+// positions per side, all six gathers of a round issued before any is used: the paper's
+// "batched sampling" (section 2.5), which on a CPU hides the gathers' latency. Results
+// are taken nearest first, so the outcome is the sequential one.
+struct SideV {
+    VF dist, end;
+    hn::Mask<DF> found;
+};
+HWY_INLINE void SearchBothSides(const LumaPlanes& planes, const hn::Mask<DF>& horizontal, const hn::Mask<DF>& steep2,
+                                int x, int y, VF first1, VF first2, VF gradientScaled, VF localAverage,
+                                hn::Mask<DF> skip, int maxDistance, SideV* side1, SideV* side2) {
     const DF df;
     const DI di;
-    const int w = planes.width, h = planes.height;
-    (void)w;
-    VF delta = first;
-    auto found = hn::Ge(hn::Abs(delta), gradientScaled);
-    VF dist = hn::IfThenElseZero(found, hn::Set(df, 1.0f));
-    VF end = delta;
-    auto done = hn::Or(found, skip);
+    const int h = planes.height;
     const VI xv = hn::Iota(di, x);
     const VI steepI = hn::IfThenElseZero(hn::RebindMask(di, steep2), hn::Set(di, 1));
     // Horizontal edges: plane H row y + steep2, column clamp(x + sign k).
@@ -104,31 +104,58 @@ HWY_INLINE void SearchSide(const LumaPlanes& planes, const hn::Mask<DF>& horizon
     // Vertical edges: plane V column x + steep2 of row clamp(y + sign k).
     const VI colV = hn::Add(xv, steepI);
     const auto hor = hn::RebindMask(di, horizontal);
-    const VI zero = hn::Zero(di), lastX = hn::Set(di, w - 1);
-    for (int k = 2; k <= maxDistance && !hn::AllTrue(df, done); ++k) {
-        const VI idxH = hn::Add(rowH, hn::Min(hn::Max(hn::Add(xv, hn::Set(di, sign * k)), zero), lastX));
-        const int yk = std::clamp(y + sign * k, 0, h - 1);
+    const VI zero = hn::Zero(di), lastX = hn::Set(di, planes.width - 1);
+    // Every lane reads position `offset` along its edge; only the plane row (horizontal
+    // edges) or column (vertical ones) differs, by steep side. Away from the left and right
+    // borders that is two contiguous loads per plane; near them, a gather with clamping.
+    const bool contiguous = x - maxDistance >= 0 && x + int(hn::Lanes(df)) - 1 + maxDistance <= planes.width - 1;
+    auto gather = [&](int offset) {  // signed position along the edge
+        const int yk = std::clamp(y + offset, 0, h - 1);
+        if (contiguous) {
+            const float* h0 = planes.data + planes.rowH(y) + x + offset;  // between rows y - 1 and y
+            const float* v0 = planes.data + planes.rowV(yk) + x;         // between columns x - 1 and x
+            const VF alongH = hn::IfThenElse(steep2, hn::LoadU(df, h0 + planes.width), hn::LoadU(df, h0));
+            const VF alongV = hn::IfThenElse(steep2, hn::LoadU(df, v0 + 1), hn::LoadU(df, v0));
+            return hn::IfThenElse(horizontal, alongH, alongV);
+        }
+        const VI idxH = hn::Add(rowH, hn::Min(hn::Max(hn::Add(xv, hn::Set(di, offset)), zero), lastX));
         const VI idxV = hn::Add(colV, hn::Set(di, int(planes.rowV(yk))));
-        const VF val = hn::GatherIndex(df, planes.data, hn::IfThenElse(hor, idxH, idxV));
-        delta = hn::Sub(val, localAverage);
-        const auto hit = hn::AndNot(found, hn::Ge(hn::Abs(delta), gradientScaled));
-        dist = hn::IfThenElse(hit, hn::Set(df, float(k)), dist);
-        end = hn::IfThenElse(found, end, delta);
-        found = hn::Or(found, hit);
-        done = hn::Or(done, hit);
+        return hn::GatherIndex(df, planes.data, hn::IfThenElse(hor, idxH, idxV));
+    };
+    auto start = [&](VF first, SideV* s) {
+        const VF delta = hn::Sub(first, localAverage);
+        s->found = hn::Ge(hn::Abs(delta), gradientScaled);
+        s->dist = hn::IfThenElseZero(s->found, hn::Set(df, 1.0f));
+        s->end = delta;
+    };
+    auto take = [&](VF value, int k, SideV* s) {
+        const VF delta = hn::Sub(value, localAverage);
+        const auto hit = hn::AndNot(s->found, hn::Ge(hn::Abs(delta), gradientScaled));
+        s->dist = hn::IfThenElse(hit, hn::Set(df, float(k)), s->dist);
+        s->end = hn::IfThenElse(s->found, s->end, delta);
+        s->found = hn::Or(s->found, hit);
+    };
+    start(first1, side1);
+    start(first2, side2);
+    for (int k0 = 2; k0 <= maxDistance;) {
+        const int k1 = std::min(k0 == 2 ? 3 : k0 + 2, maxDistance);  // round 0 has positions 2, 3
+        if (hn::AllTrue(df, hn::Or(hn::And(side1->found, side2->found), skip))) break;
+        VF a[3], b[3];
+        for (int k = k0; k <= k1; ++k) a[k - k0] = gather(-k), b[k - k0] = gather(k);
+        for (int k = k0; k <= k1; ++k) take(a[k - k0], k, side1), take(b[k - k0], k, side2);
+        k0 = k1 + 1;
     }
-    // Lanes that stopped early because every lane was done keep their values; lanes that
-    // never found an end read up to maxDistance (the loop only ends early when all are done).
-    *distance = hn::IfThenElse(found, dist, hn::Set(df, float(maxDistance + 1)));
-    *deltaEnd = end;
+    // Not found: distance maxDistance + 1, delta of the last read (the loop only stops
+    // early when every lane is found or skipped).
+    const VF notFound = hn::Set(df, float(maxDistance + 1));
+    side1->dist = hn::IfThenElse(side1->found, side1->dist, notFound);
+    side2->dist = hn::IfThenElse(side2->found, side2->dist, notFound);
 }
 
 // ddaa2 for pixels [x, x + N) of row y, 1 <= x, x + N <= W - 1.
 HWY_INLINE void Ddaa2Chunk(const Texture& tex, const ImageF& L, const LumaPlanes& planes, int x, int y,
                            const std::uint8_t* exitMask, const Ddaa2Params& p, const Rgba8* src, Rgba8* dst) {
     const DF df;
-    const DI di;
-    const hn::Rebind<std::uint8_t, DF> d8;
     const NeighbourhoodV n = LoadNeighbourhood(L, x, y);
     DiffusionV d = Diffusion(n, p);
 
@@ -143,12 +170,10 @@ HWY_INLINE void Ddaa2Chunk(const Texture& tex, const ImageF& L, const LumaPlanes
     const VF first2 = hn::IfThenElse(d.horizontal, hn::Mul(hn::Add(n.E, hn::IfThenElse(steep2, n.NE, n.SE)), half),
                                      hn::Mul(hn::Add(n.N, hn::IfThenElse(steep2, n.NE, n.NW)), half));
     const auto skip = ExitLanes(exitMask, x);
-    const int maxDistance = 3 * p.searchRounds;
-    VF d1, d2, end1, end2;
-    SearchSide(planes, d.horizontal, steep2, x, y, -1, hn::Sub(first1, localAverage), gradientScaled, localAverage,
-               skip, maxDistance, &d1, &end1);
-    SearchSide(planes, d.horizontal, steep2, x, y, +1, hn::Sub(first2, localAverage), gradientScaled, localAverage,
-               skip, maxDistance, &d2, &end2);
+    SideV s1, s2;
+    SearchBothSides(planes, d.horizontal, steep2, x, y, first1, first2, gradientScaled, localAverage, skip,
+                    3 * p.searchRounds, &s1, &s2);
+    const VF d1 = s1.dist, d2 = s2.dist, end1 = s1.end, end2 = s2.end;
     const VF pixelOffset = hn::Sub(half, hn::Div(hn::Min(d1, d2), hn::Add(d1, d2)));
     const VF deltaNear = hn::IfThenElse(hn::Lt(d1, d2), end1, end2);
     const VF zero = hn::Zero(df), one = hn::Set(df, 1.0f);
@@ -164,15 +189,14 @@ HWY_INLINE void Ddaa2Chunk(const Texture& tex, const ImageF& L, const LumaPlanes
     DiffuseAndStore(tex, d, p.maxDiffusion, offU, offV, x, y, exitMask, src, dst);
 }
 
-inline void Ddaa1RowSimd(const Texture& tex, const ImageF& L, int y, const std::uint8_t* exitMask,
-                         const Ddaa1Params& p, const Rgba8* src, Rgba8* dst, std::uint8_t* handled) {
-    RowChunks(L.width(), exitMask, handled, [&](int x) { Ddaa1Chunk(tex, L, x, y, exitMask, p, src, dst); });
+inline void Ddaa1RowSimd(const Texture& tex, const ImageF& L, int y, std::uint8_t* exitMask, const Ddaa1Params& p,
+                         const Rgba8* src, Rgba8* dst) {
+    RowChunks(L.width(), exitMask, [&](int x) { Ddaa1Chunk(tex, L, x, y, exitMask, p, src, dst); });
 }
 
 inline void Ddaa2RowSimd(const Texture& tex, const ImageF& L, const LumaPlanes& planes, int y,
-                         const std::uint8_t* exitMask, const Ddaa2Params& p, const Rgba8* src, Rgba8* dst,
-                         std::uint8_t* handled) {
-    RowChunks(L.width(), exitMask, handled,
+                         std::uint8_t* exitMask, const Ddaa2Params& p, const Rgba8* src, Rgba8* dst) {
+    RowChunks(L.width(), exitMask,
               [&](int x) { Ddaa2Chunk(tex, L, planes, x, y, exitMask, p, src, dst); });
 }
 

@@ -41,9 +41,9 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Ddaa1Params& p, 
         return diffuse(tex, x, y, d, p.maxDiffusion, 0.0f, 0.0f);
     };
     // The vector kernel across pixels covers the GPU filtering model (the default).
-    auto rows = [&](int y, const std::uint8_t* mask, const Rgba8* src, Rgba8* dst, std::uint8_t* handled) {
+    auto rows = [&](int y, std::uint8_t* mask, const Rgba8* src, Rgba8* dst) {
         if (p.filtering == Filtering::Gpu)
-            HWY_DYNAMIC_DISPATCH(Ddaa1RowSimd)(tex, L, y, mask, p, src, dst, handled);
+            HWY_DYNAMIC_DISPATCH(Ddaa1RowSimd)(tex, L, y, mask, p, src, dst);
     };
     runLumaMethod(in, out, L, p.edgeThresholdMin, p.edgeThreshold, exec, reference, pixel, rows);
 }

@@ -165,9 +165,9 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Ddaa2Params& p, 
     // to pair-plane lookups for this size (else everything takes the scalar kernel).
     const bool vector = !reference && p.filtering == Filtering::Gpu && searchReadsArePairReads(tex, p.searchRounds) &&
                         std::int64_t(in.width() + 1) * (in.height() + 1) * 3 < INT_MAX;  // int32 gather indices
-    const LumaPlanes planes = vector ? scratchLumaPlanes(in, L, false, exec) : LumaPlanes{};
-    auto rows = [&](int y, const std::uint8_t* mask, const Rgba8* src, Rgba8* dst, std::uint8_t* handled) {
-        if (vector) HWY_DYNAMIC_DISPATCH(Ddaa2RowSimd)(tex, L, planes, y, mask, p, src, dst, handled);
+    const LumaPlanes planes = vector ? scratchLumaPlanes(in, false, exec) : LumaPlanes{};
+    auto rows = [&](int y, std::uint8_t* mask, const Rgba8* src, Rgba8* dst) {
+        if (vector) HWY_DYNAMIC_DISPATCH(Ddaa2RowSimd)(tex, L, planes, y, mask, p, src, dst);
     };
     runLumaMethod(in, out, L, p.edgeThresholdMin, p.edgeThreshold, exec, reference,
                   [&](int x, int y, const Luma3x3& n, float) {

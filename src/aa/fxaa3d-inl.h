@@ -77,16 +77,37 @@ HWY_INLINE void Fxaa3dChunk(const Texture& tex, const ImageF& L, const LumaPlane
     const VF off = hn::IfThenElse(s.horizontal, hn::Set(df, tex.invW()), hn::Set(df, tex.invH()));
     VF posN = hn::Sub(centre, hn::Mul(off, hn::Set(df, kFxaaSteps[0])));
     VF posP = hn::Add(centre, hn::Mul(off, hn::Set(df, kFxaaSteps[0])));
-    VI hsN = hn::Set(di, -kHalfSteps[0]), hsP = hn::Set(di, kHalfSteps[0]);
+    int hsN = -kHalfSteps[0], hsP = kHalfSteps[0];  // position of the lanes still walking
 
     const auto hor = hn::RebindMask(di, s.horizontal);
     const VI xv = hn::Iota(di, x);
     const VI steep2 = hn::IfThenElseZero(hn::RebindMask(di, hn::Not(pair1)), hn::Set(di, 1));
     const VI acrossH = hn::Add(hn::Set(di, y), steep2);  // plane row between y - 1 | y and y | y + 1
     const VI acrossV = hn::Add(xv, steep2);              // plane column likewise
-    auto read = [&](VI hs) {
-        return hn::Sub(hn::GatherIndex(df, planes.data, WalkIndex(planes, hor, xv, y, hs, acrossH, acrossV)),
-                       localAverage);
+    // Lanes still walking a side all stand at the same position (they took the same steps);
+    // lanes already done read something that is discarded. So away from the left and right
+    // borders a read is two contiguous loads per plane; near them, a gather with clamping.
+    const int reach = 27;  // the walk ends at most 26.5 px away
+    const bool contiguous = x - reach >= 0 && x + int(hn::Lanes(df)) - 1 + reach <= planes.width - 1;
+    const int w = planes.width, h = planes.height;
+    auto read = [&](int hs) {
+        VF value;
+        if (!contiguous) {
+            value = hn::GatherIndex(df, planes.data, WalkIndex(planes, hor, xv, y, hn::Set(di, hs), acrossH, acrossV));
+        } else if (hs % 2 == 0) {  // pair planes
+            const int a = hs / 2;
+            const float* h0 = planes.data + planes.rowH(y) + x + a;
+            const float* v0 = planes.data + planes.rowV(std::clamp(y + a, 0, h - 1)) + x;
+            value = hn::IfThenElse(s.horizontal, hn::IfThenElse(pair1, hn::LoadU(df, h0), hn::LoadU(df, h0 + w)),
+                                   hn::IfThenElse(pair1, hn::LoadU(df, v0), hn::LoadU(df, v0 + 1)));
+        } else {  // quad plane
+            const int c = (hs + 1) / 2;
+            const float* q0 = planes.data + planes.rowQ(y) + x + c;
+            const float* v0 = planes.data + planes.rowQ(std::clamp(y + c, 0, h)) + x;
+            value = hn::IfThenElse(s.horizontal, hn::IfThenElse(pair1, hn::LoadU(df, q0), hn::LoadU(df, q0 + w + 1)),
+                                   hn::IfThenElse(pair1, hn::LoadU(df, v0), hn::LoadU(df, v0 + 1)));
+        }
+        return hn::Sub(value, localAverage);
     };
     const auto skip = ExitLanes(exitMask, x);
     VF endN = read(hsN), endP = read(hsP);
@@ -94,12 +115,11 @@ HWY_INLINE void Fxaa3dChunk(const Texture& tex, const ImageF& L, const LumaPlane
     auto doneP = hn::Or(hn::Ge(hn::Abs(endP), gradientScaled), skip);
     for (int i = 1; i < 12; ++i) {
         const VF step = hn::Mul(off, hn::Set(df, kFxaaSteps[i]));
-        const VI hstep = hn::Set(di, kHalfSteps[i]);
         posN = hn::IfThenElse(doneN, posN, hn::Sub(posN, step));
-        hsN = hn::IfThenElse(hn::RebindMask(di, doneN), hsN, hn::Sub(hsN, hstep));
+        hsN -= kHalfSteps[i];
         const bool back = i == 1 && p.paperSearchQuirk;  // the paper's shader steps side 2 back once
         posP = hn::IfThenElse(doneP, posP, back ? hn::Sub(posP, step) : hn::Add(posP, step));
-        hsP = hn::IfThenElse(hn::RebindMask(di, doneP), hsP, back ? hn::Sub(hsP, hstep) : hn::Add(hsP, hstep));
+        hsP += back ? -kHalfSteps[i] : kHalfSteps[i];
         if (i == 11 || hn::AllTrue(df, hn::And(doneN, doneP))) break;  // no read after the last step
         endN = hn::IfThenElse(doneN, endN, read(hsN));
         endP = hn::IfThenElse(doneP, endP, read(hsP));
@@ -133,9 +153,8 @@ HWY_INLINE void Fxaa3dChunk(const Texture& tex, const ImageF& L, const LumaPlane
 }
 
 inline void Fxaa3dRowSimd(const Texture& tex, const ImageF& L, const LumaPlanes& planes, int y,
-                          const std::uint8_t* exitMask, const Fxaa3dParams& p, const Rgba8* src, Rgba8* dst,
-                          std::uint8_t* handled) {
-    RowChunks(L.width(), exitMask, handled,
+                          std::uint8_t* exitMask, const Fxaa3dParams& p, const Rgba8* src, Rgba8* dst) {
+    RowChunks(L.width(), exitMask,
               [&](int x) { Fxaa3dChunk(tex, L, planes, x, y, exitMask, p, src, dst); });
 }
 

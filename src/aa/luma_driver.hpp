@@ -23,52 +23,67 @@ const ImageF& scratchLumaPlane(ImageView<const Rgba8> in, const Exec& exec);
 //! exitMask[x] = 1 where pixel (x, y) is below the edge threshold (SIMD, in early_exit.cpp).
 void earlyExitRow(const ImageF& L, int y, float thresholdMin, float threshold, std::uint8_t* exitMask);
 
+//! Per-pixel states in a row's mask: early exit (copy), needs the scalar kernel, or
+//! already written by a vector row kernel.
+inline constexpr std::uint8_t kEdge = 0, kExit = 1, kWritten = 2;
+
+//! First index in [x, end) whose byte differs from `value`, scanning 8 bytes at a time.
+inline int skipBytes(const std::uint8_t* m, int x, int end, std::uint8_t value) {
+    const std::uint64_t pattern = 0x0101010101010101ull * value;
+    for (; x + 8 <= end; x += 8) {
+        std::uint64_t word;
+        std::memcpy(&word, m + x, 8);
+        if (word != pattern) break;
+    }
+    while (x < end && m[x] == value) ++x;
+    return x;
+}
+
 //! No vector row kernel: every edge pixel goes through the scalar kernel.
 struct NoRowKernel {
-    void operator()(int, const std::uint8_t*, const Rgba8*, Rgba8*, std::uint8_t*) const {}
+    void operator()(int, std::uint8_t*, const Rgba8*, Rgba8*) const {}
 };
 
-//! `rowKernel(y, exitMask, src, dst, handled)` may write any pixels of row y itself (a
-//! vector kernel across pixels) and marks them in `handled`; the rest is done here.
+//! `rowKernel(y, mask, src, dst)` may write pixels of row y itself (a vector kernel across
+//! pixels) and sets their mask bytes to kWritten; the driver copies kExit runs and runs the
+//! scalar `pixel` kernel on the kEdge pixels.
 template <class PixelFn, class RowKernel = NoRowKernel>
 void runLumaMethod(ImageView<const Rgba8> in, ImageView<Rgba8> out, const ImageF& L, float thresholdMin,
                    float threshold, const Exec& exec, bool reference, const PixelFn& pixel,
                    const RowKernel& rowKernel = {}) {
+    const int w = in.width();
     parallelRows(in.height(), exec, [&](int y0, int y1) {
-        std::vector<std::uint8_t> mask(std::size_t(in.width())), handled(std::size_t(in.width()));
+        std::vector<std::uint8_t> mask(static_cast<std::size_t>(w));
         for (int y = y0; y < y1; ++y) {
             const Rgba8* src = in.row(y);
             Rgba8* dst = out.row(y);
-            if (!reference) {
-                earlyExitRow(L, y, thresholdMin, threshold, mask.data());
-                std::fill(handled.begin(), handled.end(), std::uint8_t{0});
-                rowKernel(y, mask.data(), src, dst, handled.data());
-                // Copy runs of unchanged pixels at once; run the kernel on the others.
-                const std::uint8_t* m = mask.data();
-                const std::uint8_t* done = handled.data();
-                int x = 0;
-                while (x < in.width()) {
-                    int end = x;
-                    while (end < in.width() && m[end] && !done[end]) ++end;
-                    std::memcpy(dst + x, src + x, std::size_t(end - x) * sizeof(Rgba8));
-                    for (x = end; x < in.width() && (!m[x] || done[x]); ++x) {
-                        if (done[x]) continue;
-                        const Luma3x3 n = neighbourhood(L, x, y);
-                        float range;
-                        belowEdgeThreshold(n, thresholdMin, threshold, &range);
-                        dst[x] = toRgba8(pixel(x, y, n, range), src[x].a);
-                    }
+            if (reference) {
+                for (int x = 0; x < w; ++x) {
+                    const Luma3x3 n = neighbourhood(L, x, y);
+                    float range;
+                    dst[x] = belowEdgeThreshold(n, thresholdMin, threshold, &range)
+                                 ? src[x]
+                                 : toRgba8(pixel(x, y, n, range), src[x].a);
                 }
                 continue;
             }
-            for (int x = 0; x < in.width(); ++x) {
-                const Luma3x3 n = neighbourhood(L, x, y);
-                float range;
-                if (belowEdgeThreshold(n, thresholdMin, threshold, &range)) {
-                    dst[x] = src[x];
-                    continue;
+            std::uint8_t* m = mask.data();
+            earlyExitRow(L, y, thresholdMin, threshold, m);
+            rowKernel(y, m, src, dst);
+            for (int x = 0; x < w;) {
+                const std::uint8_t state = m[x];
+                const int end = skipBytes(m, x + 1, w, state);
+                if (state == kExit) {
+                    std::memcpy(dst + x, src + x, std::size_t(end - x) * sizeof(Rgba8));
+                } else if (state == kEdge) {
+                    for (int i = x; i < end; ++i) {
+                        const Luma3x3 n = neighbourhood(L, i, y);
+                        float range;
+                        belowEdgeThreshold(n, thresholdMin, threshold, &range);
+                        dst[i] = toRgba8(pixel(i, y, n, range), src[i].a);
+                    }
                 }
-                dst[x] = toRgba8(pixel(x, y, n, range), src[x].a);
+                x = end;
             }
         }
     });

@@ -15,14 +15,14 @@ namespace ssfx::aa::detail {
 
 HWY_EXPORT(LumaPlaneRows);
 
-LumaPlanes scratchLumaPlanes(ImageView<const Rgba8> in, const ImageF& L, bool withQuad, const Exec& exec) {
+LumaPlanes scratchLumaPlanes(ImageView<const Rgba8> in, bool withQuad, const Exec& exec) {
     thread_local std::vector<float> buffer;
     LumaPlanes planes{nullptr, in.width(), in.height(), withQuad};
     const std::size_t quadSize = withQuad ? std::size_t(in.height() + 1) * std::size_t(in.width() + 1) : 0;
     buffer.resize(planes.sizeH() + planes.sizeV() + quadSize);
     planes.data = buffer.data();
     parallelRows(in.height(), exec,
-                 [&](int y0, int y1) { HWY_DYNAMIC_DISPATCH(LumaPlaneRows)(in, L, y0, y1, planes); });
+                 [&](int y0, int y1) { HWY_DYNAMIC_DISPATCH(LumaPlaneRows)(in, y0, y1, planes); });
     return planes;
 }
 

@@ -50,6 +50,6 @@ bool walkReadsArePlaneReads(const Texture& tex, bool paperSearchQuirk);
 
 //! The planes of `in` (SIMD, threaded) in a buffer kept per calling thread and reused
 //! while the size stays the same. Valid until the next call on the same thread.
-LumaPlanes scratchLumaPlanes(ImageView<const Rgba8> in, const ImageF& L, bool withQuad, const Exec& exec);
+LumaPlanes scratchLumaPlanes(ImageView<const Rgba8> in, bool withQuad, const Exec& exec);
 
 }  // namespace ssfx::aa::detail

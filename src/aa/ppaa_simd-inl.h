@@ -13,6 +13,7 @@
 
 #include <hwy/highway.h>
 
+#include "src/aa/luma_driver.hpp"
 #include "src/aa/luma_planes.hpp"
 #include "src/aa/ppaa_common.hpp"
 
@@ -180,23 +181,21 @@ HWY_INLINE void StoreRgb(const RgbV& c, int x, const std::uint8_t* exitMask, con
 }
 
 // Runs `chunk` on the interior chunks of row y that hold at least one edge pixel and marks
-// their pixels in `handled`; the caller does x = 0, the tail and the exit pixels.
+// their pixels kWritten; the caller does x = 0, the tail, the exit runs and the rest.
 template <class Chunk>
-HWY_INLINE void RowChunks(int w, const std::uint8_t* exitMask, std::uint8_t* handled, const Chunk& chunk) {
+HWY_INLINE void RowChunks(int w, std::uint8_t* mask, const Chunk& chunk) {
     const int n = int(hn::Lanes(DF()));
     for (int x = 1; x + n <= w - 1; x += n) {
-        bool any = false;
-        for (int i = 0; i < n; ++i) any |= exitMask[x + i] == 0;
-        if (!any) continue;  // the caller copies exit pixels
+        if (skipBytes(mask, x, x + n, kExit) == x + n) continue;  // all exit: the caller copies
         chunk(x);
-        for (int i = 0; i < n; ++i) handled[x + i] = 1;
+        std::memset(mask + x, kWritten, std::size_t(n));
     }
 }
 
 // Luma planes for rows [y0, y1) (layout in luma_planes.hpp). Half-way reads between two
 // texels are 8 (a + b) / 4080 = (a + b) / 510 per channel, between four texels
 // 4 (a + b + c + d) / 4080 = (a + b + c + d) / 1020, both exactly (same real number).
-inline void LumaPlaneRows(ImageView<const Rgba8> in, const ImageF& L, int y0, int y1, const LumaPlanes& planes) {
+inline void LumaPlaneRows(ImageView<const Rgba8> in, int y0, int y1, const LumaPlanes& planes) {
     const DF df;
     const DI di;
     const DU du;
