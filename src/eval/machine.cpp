@@ -4,6 +4,7 @@
 #include <hwy/targets.h>
 
 #include <fstream>
+#include <vector>
 #include <thread>
 
 namespace ssfx::eval {
@@ -21,8 +22,9 @@ MachineInfo machineInfo(int threadsUsed) {
     }
     m.hardwareThreads = int(std::thread::hardware_concurrency());
     m.threads = threadsUsed;
-    const std::int64_t targets = hwy::SupportedTargets();
-    m.simdTarget = hwy::TargetName(targets & -targets);  // lowest bit = best target
+    // The target runtime dispatch picks: the best one both compiled in and supported.
+    const std::vector<std::int64_t> targets = hwy::SupportedAndGeneratedTargets();
+    m.simdTarget = targets.empty() ? "none" : hwy::TargetName(targets.front());
     return m;
 }
 

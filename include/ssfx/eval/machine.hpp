@@ -9,7 +9,7 @@ struct MachineInfo {
     std::string cpu;         //!< model name from /proc/cpuinfo ("unknown" elsewhere)
     int hardwareThreads = 0; //!< std::thread::hardware_concurrency
     int threads = 0;         //!< threads the measurement used
-    std::string simdTarget;  //!< Highway's best target on this CPU (e.g. AVX2)
+    std::string simdTarget;  //!< the Highway target runtime dispatch uses here (e.g. AVX2)
 };
 
 MachineInfo machineInfo(int threadsUsed);
