@@ -12,15 +12,6 @@ std::array<float, 4081> makeSixteenths() {
 
 const std::array<float, 4081> kSixteenthLevels = makeSixteenths();
 
-Texture::Quad Texture::fetch(const AxisPos& ax, const AxisPos& ay, int ox, int oy) const {
-    int x0, x1, y0, y1;
-    pair(ax.index + ox, w_, &x0, &x1);
-    pair(ay.index + oy, h_, &y0, &y1);
-    const Rgba8* r0 = img_.row(y0);
-    const Rgba8* r1 = img_.row(y1);
-    return {r0[x0], r0[x1], r1[x0], r1[x1]};
-}
-
 Rgb Texture::sampleGpu(const AxisPos& ax, const AxisPos& ay, int ox, int oy) const {
     const auto [t00, t10, t01, t11] = fetch(ax, ay, ox, oy);
     // Exact weights in 1/65536 units; the sum is at most 65536 * 255 (fits in int32).

@@ -113,7 +113,14 @@ private:
     struct Quad {
         Rgba8 t00, t10, t01, t11;  // (x0,y0) (x1,y0) (x0,y1) (x1,y1)
     };
-    Quad fetch(const AxisPos& ax, const AxisPos& ay, int ox, int oy) const;
+    Quad fetch(const AxisPos& ax, const AxisPos& ay, int ox, int oy) const {  // inline: hot in every read
+        int x0, x1, y0, y1;
+        pair(ax.index + ox, w_, &x0, &x1);
+        pair(ay.index + oy, h_, &y0, &y1);
+        const Rgba8* r0 = img_.row(y0);
+        const Rgba8* r1 = img_.row(y1);
+        return {r0[x0], r0[x1], r1[x0], r1[x1]};
+    }
     Rgb sampleGpu(const AxisPos& ax, const AxisPos& ay, int ox, int oy) const;
     Rgb sampleExact(const AxisPos& ax, const AxisPos& ay, int ox, int oy) const;
 
