@@ -34,8 +34,8 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Ddaa1Params& p, 
     checkOutput("ddaa1", in, out);
     validateDdaa1("ddaa1", p);
     const Texture tex(in, p.filtering);
-    const ImageF fresh = reference ? lumaPlaneReference(in) : ImageF();
-    const ImageF& L = reference ? fresh : scratchLumaPlane(in, exec);
+    ImageF fresh;
+    const ImageF& L = methodLumaPlane(in, reference, exec, fresh);
     auto pixel = [&](int x, int y, const Luma3x3& n, float) {
         const Diffusion d = diffusion(n, edgeSides(n), p);
         return diffuse(tex, x, y, d, p.maxDiffusion, 0.0f, 0.0f);

@@ -25,8 +25,8 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Fxaa3cParams& p,
     checkOutput("fxaa3c", in, out);
     validate(p);
     const Texture tex(in, p.filtering);
-    const ImageF fresh = reference ? lumaPlaneReference(in) : ImageF();
-    const ImageF& L = reference ? fresh : scratchLumaPlane(in, exec);
+    ImageF fresh;
+    const ImageF& L = methodLumaPlane(in, reference, exec, fresh);
     // At +-1 pixel the diagonal reads land on pixel centres, which return the pixel
     // (spec section 1): luma plane lookups.
     const bool centres = p.diagonalOffset == 1.0f;

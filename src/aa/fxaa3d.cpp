@@ -12,8 +12,6 @@
 #include "src/aa/fxaa3d-inl.h"
 
 #if HWY_ONCE
-#include <climits>
-
 #include "src/aa/luma_driver.hpp"
 #include "src/aa/luma_planes.hpp"
 #include "ssfx/aa/fxaa.hpp"
@@ -54,19 +52,11 @@ bool walkReadsArePlaneReads(const Texture& tex, bool quirk) {
                     }
                 }
             }
-            for (int across : {-1, 1}) {
-                const Texture::AxisPos a = split(c + (across < 0 ? -inv : inv) * 0.5f);
-                const int first = across < 0 ? i - 1 : i;
-                if (a.w != 128 || clampN(a.index) != clampN(first) || clampN(a.index + 1) != clampN(first + 1))
-                    return false;
-            }
+            if (!acrossIsHalfWay(n, inv, c, i, split)) return false;
         }
         return true;
     };
-    return axisOk(tex.width(), tex.invW(), [&](int x) { return tex.centreU(x); },
-                  [&](float u) { return tex.axisU(u); }) &&
-           axisOk(tex.height(), tex.invH(), [&](int y) { return tex.centreV(y); },
-                  [&](float v) { return tex.axisV(v); });
+    return forBothAxes(tex, axisOk);
 }
 
 namespace {
@@ -153,12 +143,12 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Fxaa3dParams& p,
     checkOutput("fxaa3d", in, out);
     validate(p);
     const Texture tex(in, p.filtering);
-    const ImageF fresh = reference ? lumaPlaneReference(in) : ImageF();
-    const ImageF& L = reference ? fresh : scratchLumaPlane(in, exec);
+    ImageF fresh;
+    const ImageF& L = methodLumaPlane(in, reference, exec, fresh);
     // The vector kernel across pixels: GPU filtering model, and walk reads provably equal to
     // plane lookups for this size (else everything takes the scalar kernel).
     const bool vector = !reference && p.filtering == Filtering::Gpu && walkReadsArePlaneReads(tex, p.paperSearchQuirk) &&
-                        std::int64_t(in.width() + 1) * (in.height() + 1) * 3 < INT_MAX;  // int32 gather indices
+                        planesFitGatherIndices(in.width(), in.height());
     const LumaPlanes planes = vector ? scratchLumaPlanes(in, true, exec) : LumaPlanes{};
     auto rows = [&](int y, std::uint8_t* mask, const Rgba8* src, Rgba8* dst) {
         if (vector) HWY_DYNAMIC_DISPATCH(Fxaa3dRowSimd)(tex, L, planes, y, mask, p, src, dst);

@@ -20,6 +20,14 @@ namespace ssfx::aa::detail {
 //! buffer is 4 bytes per pixel). The reference path computes a fresh plane pixel by pixel.
 const ImageF& scratchLumaPlane(ImageView<const Rgba8> in, const Exec& exec);
 
+//! The luma plane a method's run uses: computed pixel by pixel into `fresh` for the
+//! reference path, else the SIMD plane in the per-thread scratch buffer.
+inline const ImageF& methodLumaPlane(ImageView<const Rgba8> in, bool reference, const Exec& exec, ImageF& fresh) {
+    if (!reference) return scratchLumaPlane(in, exec);
+    fresh = lumaPlaneReference(in);
+    return fresh;
+}
+
 //! exitMask[x] = 1 where pixel (x, y) is below the edge threshold (SIMD, in early_exit.cpp).
 void earlyExitRow(const ImageF& L, int y, float thresholdMin, float threshold, std::uint8_t* exitMask);
 

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 
 #include "ssfx/core/color.hpp"
 #include "ssfx/core/image.hpp"
@@ -42,6 +43,35 @@ inline float quadLuma(const Rgba8& a, const Rgba8& b, const Rgba8& c, const Rgba
     return luma(kSixteenthLevels[std::size_t(4 * (a.r + b.r + c.r + d.r))],
                 kSixteenthLevels[std::size_t(4 * (a.g + b.g + c.g + d.g))],
                 kSixteenthLevels[std::size_t(4 * (a.b + b.b + c.b + d.b))]);
+}
+
+//! The vector kernels index the planes with int32 gather indices.
+inline bool planesFitGatherIndices(int width, int height) {
+    return std::int64_t(width + 1) * std::int64_t(height + 1) * 3 < std::int64_t(INT32_MAX);
+}
+
+//! Runs check(n, inv, centre(i), split(coord)) for the x axis, then the y axis, of a
+//! texture: the shape of the per-size exactness checks of the search/walk reads.
+template <class AxisCheck>
+bool forBothAxes(const Texture& tex, const AxisCheck& check) {
+    return check(tex.width(), tex.invW(), [&](int x) { return tex.centreU(x); },
+                 [&](float u) { return tex.axisU(u); }) &&
+           check(tex.height(), tex.invH(), [&](int y) { return tex.centreV(y); },
+                 [&](float v) { return tex.axisV(v); });
+}
+
+//! Half a pixel across from centre c of texel i (the steep side's offset, both ways) lands
+//! exactly half-way between texels i - 1 and i, or i and i + 1 (clamped): GPU weight 128.
+//! (ddaa2 writes the offset (+-1 * 0.5) * inv, fxaa3d (+-inv) * 0.5: both exact, equal.)
+template <class Split>
+bool acrossIsHalfWay(int n, float inv, float c, int i, const Split& split) {
+    auto clampN = [n](int k) { return k < 0 ? 0 : (k >= n ? n - 1 : k); };
+    for (int across : {-1, 1}) {
+        const Texture::AxisPos a = split(c + (across < 0 ? -inv : inv) * 0.5f);
+        const int first = across < 0 ? i - 1 : i;
+        if (a.w != 128 || clampN(a.index) != clampN(first) || clampN(a.index + 1) != clampN(first + 1)) return false;
+    }
+    return true;
 }
 
 //! True when every read of fxaa3d's walk on an image of this size equals a plane value
