@@ -3,8 +3,7 @@
 // Rows are converted once to float (v / 255, exact division) with one pixel of clamped
 // padding at both ends, so the vector loop also covers the borders. Each lane is one
 // channel of one pixel; the sums run in blurChannel()'s order (no FMA), so every lane
-// equals the scalar reference. Quantisation rounds the exact product v * 255 in double,
-// as toUnorm8() does.
+// equals the scalar reference; each vector is quantised as soon as it is computed.
 #if defined(SSFX_AA_BLUR_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef SSFX_AA_BLUR_INL_H_
 #undef SSFX_AA_BLUR_INL_H_
@@ -38,78 +37,67 @@ inline void ToFloatRow(const Rgba8* HWY_RESTRICT in, int w, float* HWY_RESTRICT 
     for (int c = 0; c < 4; ++c) out[c] = out[4 + c], out[4 + count + c] = out[count + c];
 }
 
-// One output row from three padded float rows (above, centre, below).
-inline void BlurFloatRow(const float* HWY_RESTRICT fa, const float* HWY_RESTRICT fc, const float* HWY_RESTRICT fb,
-                         int w, const BlurWeights& k, float* HWY_RESTRICT out) {
-    const hn::ScalableTag<float> df;
-    const int n = int(hn::Lanes(df));
-    const int count = 4 * w;
-    const auto w1 = hn::Set(df, k.w1), w2 = hn::Set(df, k.w2), norm = hn::Set(df, k.norm);
-    int i = 0;
-    for (; i + n <= count; i += n) {
-        const float* a = fa + 4 + i;
-        const float* c = fc + 4 + i;
-        const float* b = fb + 4 + i;
-        const auto horizontal = hn::Add(hn::LoadU(df, c - 4), hn::LoadU(df, c + 4));  // w + e
-        const auto vertical = hn::Add(hn::LoadU(df, a), hn::LoadU(df, b));            // s + n
-        const auto cornersAbove = hn::Add(hn::LoadU(df, a - 4), hn::LoadU(df, a + 4));  // sw + se
-        const auto cornersBelow = hn::Add(hn::LoadU(df, b - 4), hn::LoadU(df, b + 4));  // nw + ne
-        const auto direct = hn::Mul(hn::Add(horizontal, vertical), w1);
-        const auto corner = hn::Mul(hn::Add(cornersAbove, cornersBelow), w2);
-        hn::StoreU(hn::Mul(hn::Add(hn::Add(hn::LoadU(df, c), direct), corner), norm), df, out + i);
-    }
-    for (; i < count; ++i) {
-        const float* a = fa + 4 + i;
-        const float* c = fc + 4 + i;
-        const float* b = fb + 4 + i;
-        out[i] = blurChannel(c[0], c[-4], c[4], a[0], b[0], a[-4], a[4], b[-4], b[4], k);
-    }
-}
-
-// Floats to 8-bit with toUnorm8()'s rounding of the exact product v * 255; alpha comes
-// from the source pixel. The float product is within 2^-17 of the exact one, so it rounds
-// the same way unless it lies that close to a tie: such (rare) vectors take toUnorm8().
-inline void QuantizeRow(const float* HWY_RESTRICT in, const Rgba8* HWY_RESTRICT src, int w, Rgba8* HWY_RESTRICT dst) {
+// One output row from three padded float rows (above, centre, below), quantised as it is
+// computed: toUnorm8()'s rounding of the exact product v * 255 (the float product is within
+// 2^-17 of it, so it rounds the same way unless it lands on a tie: such (rare) vectors take
+// toUnorm8() lane by lane). Alpha comes from the source pixel.
+inline void BlurRowQuantized(const float* HWY_RESTRICT fa, const float* HWY_RESTRICT fc,
+                             const float* HWY_RESTRICT fb, int w, const BlurWeights& k, const Rgba8* HWY_RESTRICT src,
+                             Rgba8* HWY_RESTRICT dst) {
     const hn::ScalableTag<float> df;
     const hn::RebindToSigned<decltype(df)> di;
     const hn::Rebind<std::uint8_t, decltype(df)> d8;
     const int n = int(hn::Lanes(df));
-    auto* bytes = reinterpret_cast<std::uint8_t*>(dst);
-    const auto* srcBytes = reinterpret_cast<const std::uint8_t*>(src);
     const int count = 4 * w;
+    const auto w1 = hn::Set(df, k.w1), w2 = hn::Set(df, k.w2), norm = hn::Set(df, k.norm);
     const auto zero = hn::Zero(df), one = hn::Set(df, 1.0f), k255 = hn::Set(df, 255.0f), half = hn::Set(df, 0.5f);
     const auto tieBand = hn::Set(df, 1.0f / 65536.0f);
     const auto three = hn::Set(d8, std::uint8_t{3});
+    auto* bytes = reinterpret_cast<std::uint8_t*>(dst);
+    const auto* srcBytes = reinterpret_cast<const std::uint8_t*>(src);
+    auto scalar = [&](int i) {
+        const float* a = fa + 4 + i;
+        const float* c = fc + 4 + i;
+        const float* b = fb + 4 + i;
+        return blurChannel(c[0], c[-4], c[4], a[0], b[0], a[-4], a[4], b[-4], b[4], k);
+    };
     int i = 0;
     for (; i + n <= count; i += n) {
-        const auto v = hn::Min(hn::Max(hn::LoadU(df, in + i), zero), one);
-        const auto t = hn::Add(hn::Mul(v, k255), half);
+        const float* a = fa + 4 + i;
+        const float* c = fc + 4 + i;
+        const float* b = fb + 4 + i;
+        const auto horizontal = hn::Add(hn::LoadU(df, c - 4), hn::LoadU(df, c + 4));   // w + e
+        const auto vertical = hn::Add(hn::LoadU(df, a), hn::LoadU(df, b));             // s + n
+        const auto cornersAbove = hn::Add(hn::LoadU(df, a - 4), hn::LoadU(df, a + 4));  // sw + se
+        const auto cornersBelow = hn::Add(hn::LoadU(df, b - 4), hn::LoadU(df, b + 4));  // nw + ne
+        const auto direct = hn::Mul(hn::Add(horizontal, vertical), w1);
+        const auto corner = hn::Mul(hn::Add(cornersAbove, cornersBelow), w2);
+        const auto v = hn::Mul(hn::Add(hn::Add(hn::LoadU(df, c), direct), corner), norm);
+        const auto t = hn::Add(hn::Mul(hn::Min(hn::Max(v, zero), one), k255), half);
         const auto fl = hn::Floor(t);
         if (!hn::AllFalse(df, hn::Lt(hn::Sub(t, fl), tieBand))) {
-            for (int j = 0; j < n; ++j) bytes[i + j] = (i + j) % 4 == 3 ? srcBytes[i + j] : toUnorm8(in[i + j]);
+            for (int j = 0; j < n; ++j) bytes[i + j] = (i + j) % 4 == 3 ? srcBytes[i + j] : toUnorm8(scalar(i + j));
             continue;
         }
         const auto q = hn::DemoteTo(d8, hn::ConvertTo(di, fl));
         const auto isAlpha = hn::Eq(hn::And(hn::Iota(d8, std::uint8_t(i & 3)), three), three);
         hn::StoreU(hn::IfThenElse(isAlpha, hn::LoadU(d8, srcBytes + i), q), d8, bytes + i);
     }
-    for (; i < count; ++i) bytes[i] = i % 4 == 3 ? srcBytes[i] : toUnorm8(in[i]);
+    for (; i < count; ++i) bytes[i] = i % 4 == 3 ? srcBytes[i] : toUnorm8(scalar(i));
 }
 
 inline void BlurRows(ImageView<const Rgba8> in, ImageView<Rgba8> out, int y0, int y1, const BlurWeights& k) {
     const int w = in.width(), h = in.height();
     const std::size_t stride = std::size_t(4 * w + 8);
-    // Rolling window of three converted rows plus one output row of floats.
-    const auto buf = hwy::AllocateAligned<float>(4 * stride);
+    // Rolling window of three converted rows.
+    const auto buf = hwy::AllocateAligned<float>(3 * stride);
     float* rows[3] = {buf.get(), buf.get() + stride, buf.get() + 2 * stride};
-    float* outF = buf.get() + 3 * stride;
     auto clampY = [h](int y) { return y < 0 ? 0 : (y >= h ? h - 1 : y); };
     ToFloatRow(in.row(clampY(y0 - 1)), w, rows[0]);
     ToFloatRow(in.row(y0), w, rows[1]);
     for (int y = y0; y < y1; ++y) {
         ToFloatRow(in.row(clampY(y + 1)), w, rows[2]);
-        BlurFloatRow(rows[0], rows[1], rows[2], w, k, outF);
-        QuantizeRow(outF, in.row(y), w, out.row(y));
+        BlurRowQuantized(rows[0], rows[1], rows[2], w, k, in.row(y), out.row(y));
         float* t = rows[0];
         rows[0] = rows[1], rows[1] = rows[2], rows[2] = t;
     }

@@ -1,13 +1,15 @@
 // Driver shared by fxaa3d, ddaa1 and ddaa2: luma plane, early exit (spec section 1), then
-// the method's per-pixel kernel for the pixels that pass it.
+// the method's kernel for the pixels that pass it.
 //
-// The reference path evaluates everything one pixel at a time. The fast path computes the
-// luma plane and the early-exit mask with Highway (same float operations per lane, so the
-// same bits) and runs the kernel only where the mask says so, in parallel row blocks.
+// The reference path evaluates everything one pixel at a time with the scalar kernel. The
+// fast path computes the luma plane and the early-exit mask with Highway (same float
+// operations per lane, so the same bits), lets the method's vector kernel write the
+// 16-pixel chunks that hold edge pixels, copies the runs of unchanged pixels and gives
+// the few remaining edge pixels (image borders) to the scalar kernel; rows in parallel.
 #pragma once
 
-#include <cstdint>
 #include <algorithm>
+#include <cstdint>
 #include <cstring>
 #include <vector>
 
