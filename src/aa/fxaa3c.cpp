@@ -49,6 +49,9 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Fxaa3cParams& p,
         const float swMinusNe = lumaSW - lumaNE, seMinusNw = lumaSE - lumaNW;
         const float dirX = swMinusNe + seMinusNw, dirY = swMinusNe - seMinusNw;
         const float len = std::sqrt(dirX * dirX + dirY * dirY);
+        // No direction at all (possible only on exact float ties): a GPU would normalise 0
+        // to NaN and read at NaN coordinates; we define it as "leave the pixel".
+        if (!(len > 0.0f)) return m;
         const float d1x = dirX / len, d1y = dirY / len;
 
         const float h = 0.5f;  // first pair of taps at +-0.5 px along the edge

@@ -1,6 +1,8 @@
 // The GPU sampling model against hand-computed values (spec ppaa.md section 1).
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include "ssfx/core/sample.hpp"
 
 using namespace ssfx;
@@ -47,6 +49,13 @@ TEST(Sample, ClampToEdgeOutsideTheImage) {
     EXPECT_EQ(t.sample(-3.0f, 0.5f).r, 40.0f / 255.0f);
     EXPECT_EQ(t.sample(5.0f, 0.5f).r, 80.0f / 255.0f);
     EXPECT_EQ(t.sample(0.5f, -9.0f, 7, 3).r, 80.0f / 255.0f);  // texel offsets clamp too
+}
+
+TEST(Sample, NonFiniteCoordinatesReadTheEdgeWithoutUndefinedBehaviour) {
+    const auto img = row({40, 80});
+    const Texture t(img.view(), Filtering::Gpu);
+    EXPECT_EQ(t.sample(std::nanf(""), 0.5f).r, 40.0f / 255.0f);
+    EXPECT_EQ(t.sample(std::numeric_limits<float>::infinity(), 0.5f).r, 80.0f / 255.0f);
 }
 
 TEST(Sample, IntegerOffsetIsAddedAfterTheFloor) {

@@ -103,7 +103,8 @@ private:
         const float lim = static_cast<float>(n) + 4.0f;
         const float flc = fl >= -4.0f ? (fl < lim ? fl : lim) : -4.0f;
         const float frac = t - fl;
-        return {static_cast<int>(flc), frac, static_cast<int>(frac * 256.0f + 0.5f)};  // round half up to 1/256
+        // Round half up to 1/256. (NaN, from a caller bug, must not reach the int conversion.)
+        return {static_cast<int>(flc), frac, frac >= 0.0f ? static_cast<int>(frac * 256.0f + 0.5f) : 0};
     }
     // Clamped texel pair along an axis of n texels.
     static void pair(int i, int n, int* i0, int* i1) {
