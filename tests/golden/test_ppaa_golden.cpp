@@ -19,6 +19,7 @@ namespace {
 struct Case {
     std::string image, method;
 };
+void PrintTo(const Case& c, std::ostream* os) { *os << c.image << " " << c.method; }
 class Golden : public ::testing::TestWithParam<Case> {};
 }  // namespace
 

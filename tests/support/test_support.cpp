@@ -3,6 +3,12 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "ssfx/registry.hpp"
+
+namespace ssfx {
+void PrintTo(const MethodInfo* m, std::ostream* os) { *os << (m ? m->id : "null"); }
+}  // namespace ssfx
+
 namespace ssfx::test {
 
 ImageRgba8 ascii(const std::vector<std::string>& rows) {

@@ -2,10 +2,17 @@
 #pragma once
 
 #include <optional>
+#include <ostream>
 #include <string>
 #include <vector>
 
 #include "ssfx/core/image.hpp"
+
+namespace ssfx {
+struct MethodInfo;
+//! gtest prints registry parameters by id (readable ctest names).
+void PrintTo(const MethodInfo* m, std::ostream* os);
+}  // namespace ssfx
 
 namespace ssfx::test {
 
