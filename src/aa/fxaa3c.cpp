@@ -2,12 +2,22 @@
 // lumas, two short and two long taps along it, no edge search (spec ppaa.md "fxaa3c").
 // Deviation from Lottes' shader, as in the DDAA paper: diagonals at +-1 pixel, not +-0.5
 // (Fxaa3cParams::diagonalOffset).
-#include "luma_driver.hpp"
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "src/aa/fxaa3c-inl.h"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+#include <hwy/highway.h>
+
+#include "src/aa/fxaa3c-inl.h"
+
+#if HWY_ONCE
+#include "src/aa/luma_driver.hpp"
 #include "ssfx/aa/fxaa.hpp"
 
 namespace ssfx::aa {
 
 namespace detail {
+HWY_EXPORT(Fxaa3cRowSimd);
+
 namespace {
 
 Rgb scale(const Rgb& a, float k) { return {a.r * k, a.g * k, a.b * k}; }
@@ -31,7 +41,7 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Fxaa3cParams& p,
     // (spec section 1): luma plane lookups.
     const bool centres = p.diagonalOffset == 1.0f;
     const float du = p.diagonalOffset * tex.invW(), dv = p.diagonalOffset * tex.invH();
-    forEachPixel(out, exec, [&](int x, int y) -> Rgba8 {
+    auto pixel = [&](int x, int y) -> Rgba8 {
         const Rgba8 m = in(x, y);
         const float u = tex.centreU(x), v = tex.centreV(y);
         auto diag = [&](int sx, int sy) {
@@ -68,6 +78,20 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Fxaa3cParams& p,
         const float lumaB = luma(B);
         const Rgb result = (lumaB < lumaMin || lumaB > lumaMax) ? scale(A, 0.5f) : B;
         return toRgba8(result, m.a);
+    };
+    // The vector kernel across pixels covers the default (GPU model, diagonals at +-1 px);
+    // the first pixel and the tail of each row take the scalar kernel.
+    const bool vector = !reference && centres && p.filtering == Filtering::Gpu;
+    parallelRows(in.height(), exec, [&](int y0, int y1) {
+        for (int y = y0; y < y1; ++y) {
+            Rgba8* row = out.row(y);
+            int x = 0;
+            if (vector) {
+                row[0] = pixel(0, y);
+                x = HWY_DYNAMIC_DISPATCH(Fxaa3cRowSimd)(tex, L, y, p, in.row(y), row);
+            }
+            for (; x < in.width(); ++x) row[x] = pixel(x, y);
+        }
     });
 }
 
@@ -87,3 +111,4 @@ ImageRgba8 fxaa3cReference(ImageView<const Rgba8> in, const Fxaa3cParams& p) {
 }
 
 }  // namespace ssfx::aa
+#endif  // HWY_ONCE

@@ -35,3 +35,27 @@ TEST(SimdTargets, EveryTargetEqualsTheReference) {
     for (const std::int64_t t : targets) std::printf(" %s", hwy::TargetName(t));
     std::printf("\n");
 }
+
+// fxaa3c with a direction component exactly 0: d2 = 0/0 = NaN, which the scalar code's
+// fmax/fmin (and a GPU's clamp) turn into -2. This pixel pins that behaviour on every
+// target (on x86, maxps gives it by itself; the kernel also spells it out for targets that
+// propagate NaN). The greys were found by search: luma(254) - (luma(194) + 1/384) ==
+// luma(23) - luma(8) in float32.
+TEST(SimdTargets, Fxaa3cZeroDirectionComponentMatchesTheReference) {
+    const ResetTargets reset;
+    auto grey = [](int g) { return Rgba8{std::uint8_t(g), std::uint8_t(g), std::uint8_t(g), 255}; };
+    ImageRgba8 img(40, 9);
+    for (int y = 0; y < 9; ++y)  // a textured background, so that every tap matters
+        for (int x = 0; x < 40; ++x) img(x, y) = grey((x * x * 7 + y * y * 13 + x * y * 5) % 256);
+    img(19, 3) = grey(8);    // NW of pixel (20, 4) (Lottes: y down)
+    img(21, 5) = grey(23);   // SE
+    img(19, 5) = grey(254);  // SW
+    img(21, 3) = grey(194);  // NE
+    const MethodInfo& m = methodById("fxaa3c");
+    const ImageRgba8 expected = m.reference(img.view(), {}, {});
+    EXPECT_NE(expected(20, 4), img(20, 4));  // the pixel is processed, not early-exited
+    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+        hwy::SetSupportedTargetsForTest(target);
+        EXPECT_EQ(m.run(img.view(), {}, {}), expected) << hwy::TargetName(target);
+    }
+}

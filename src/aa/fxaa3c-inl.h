@@ -1,0 +1,101 @@
+// Highway body of fxaa3c across pixels (scalar oracle: fxaa3c.cpp). Diagonal lumas come
+// from the luma plane (reads at pixel centres), the four taps are gathered GPU-model reads;
+// every float operation mirrors the scalar code in order.
+#if defined(SSFX_AA_FXAA3C_INL_H_) == defined(HWY_TARGET_TOGGLE)
+#ifdef SSFX_AA_FXAA3C_INL_H_
+#undef SSFX_AA_FXAA3C_INL_H_
+#else
+#define SSFX_AA_FXAA3C_INL_H_
+#endif
+
+#include <hwy/highway.h>
+
+#include "src/aa/ppaa_simd-inl.h"
+#include "ssfx/aa/fxaa.hpp"
+
+HWY_BEFORE_NAMESPACE();
+namespace ssfx::aa::detail {
+namespace HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+// clamp(q, -2, 2) with std::fmax/fmin's NaN rule (the non-NaN operand), as the scalar code
+// and GPU clamp give for 0/0: NaN becomes -2. x86's maxps (and Highway's scalar Max)
+// already return -2 here; the rule is spelled out for targets whose Max propagates NaN
+// (e.g. NEON's vmaxq_f32).
+HWY_INLINE VF ClampTwo(VF q) {
+    const DF df;
+    const VF m2 = hn::Set(df, -2.0f);
+    return hn::IfThenElse(hn::Ne(q, q), m2, hn::Min(hn::Max(q, m2), hn::Set(df, 2.0f)));
+}
+
+// fxaa3c for pixels [x, x + N) of row y, 1 <= x, x + N <= W - 1; diagonals at +-1 pixel.
+HWY_INLINE void Fxaa3cChunk(const Texture& tex, const ImageF& L, int x, int y, const Fxaa3cParams& p,
+                            const Rgba8* src, Rgba8* dst) {
+    const DF df;
+    const DU du;
+    const int w = L.width(), h = L.height();
+    const float* ra = L.data() + std::size_t(y > 0 ? y - 1 : 0) * std::size_t(w);
+    const float* rc = L.data() + std::size_t(y) * std::size_t(w);
+    const float* rb = L.data() + std::size_t(y + 1 < h ? y + 1 : h - 1) * std::size_t(w);
+    // Lottes' names (y down): NW = (-1, -1), NE = (+1, -1), SW = (-1, +1), SE = (+1, +1).
+    const VF lumaNW = hn::LoadU(df, ra + x - 1), lumaSW = hn::LoadU(df, rb + x - 1);
+    const VF lumaSE = hn::LoadU(df, rb + x + 1);
+    const VF lumaNE = hn::Add(hn::LoadU(df, ra + x + 1), hn::Set(df, 1.0f / 384.0f));
+    const VF lumaM = hn::LoadU(df, rc + x);
+    const VF lumaMax = hn::Max(hn::Max(lumaNE, lumaSE), hn::Max(lumaNW, lumaSW));
+    const VF lumaMin = hn::Min(hn::Min(lumaNE, lumaSE), hn::Min(lumaNW, lumaSW));
+    const auto exit = hn::Lt(hn::Sub(hn::Max(lumaMax, lumaM), hn::Min(lumaMin, lumaM)),
+                             hn::Max(hn::Set(df, p.edgeThresholdMin), hn::Mul(lumaMax, hn::Set(df, p.edgeThreshold))));
+    if (hn::AllTrue(df, exit)) {
+        std::memcpy(dst + x, src + x, hn::Lanes(df) * sizeof(Rgba8));
+        return;
+    }
+    const VF swMinusNe = hn::Sub(lumaSW, lumaNE), seMinusNw = hn::Sub(lumaSE, lumaNW);
+    const VF dirX = hn::Add(swMinusNe, seMinusNw), dirY = hn::Sub(swMinusNe, seMinusNw);
+    const VF len = hn::Sqrt(hn::Add(hn::Mul(dirX, dirX), hn::Mul(dirY, dirY)));
+    const auto keep = hn::Or(exit, hn::Not(hn::Gt(len, hn::Zero(df))));  // no direction: unchanged
+    const VF d1x = hn::Div(dirX, len), d1y = hn::Div(dirY, len);
+
+    const VF u = CentreU(tex, x), v = hn::Set(df, tex.centreV(y));
+    const VF invW = hn::Set(df, tex.invW()), invH = hn::Set(df, tex.invH());
+    const VF half = hn::Set(df, 0.5f), two = hn::Set(df, 2.0f), quarter = hn::Set(df, 0.25f);
+    const VF s1x = hn::Mul(hn::Mul(d1x, half), invW), s1y = hn::Mul(hn::Mul(d1y, half), invH);
+    const RgbV n1 = SampleGpu(tex, hn::Sub(u, s1x), hn::Sub(v, s1y));
+    const RgbV p1 = SampleGpu(tex, hn::Add(u, s1x), hn::Add(v, s1y));
+    const VF minAbs = hn::Mul(hn::Min(hn::Abs(d1x), hn::Abs(d1y)), hn::Set(df, p.edgeSharpness));
+    const VF d2x = ClampTwo(hn::Div(d1x, minAbs)), d2y = ClampTwo(hn::Div(d1y, minAbs));
+    const VF s2x = hn::Mul(hn::Mul(d2x, two), invW), s2y = hn::Mul(hn::Mul(d2y, two), invH);
+    const RgbV n2 = SampleGpu(tex, hn::Sub(u, s2x), hn::Sub(v, s2y));
+    const RgbV p2 = SampleGpu(tex, hn::Add(u, s2x), hn::Add(v, s2y));
+
+    const RgbV A{hn::Add(n1.r, p1.r), hn::Add(n1.g, p1.g), hn::Add(n1.b, p1.b)};
+    const RgbV B{hn::Add(hn::Mul(hn::Add(n2.r, p2.r), quarter), hn::Mul(A.r, quarter)),
+                 hn::Add(hn::Mul(hn::Add(n2.g, p2.g), quarter), hn::Mul(A.g, quarter)),
+                 hn::Add(hn::Mul(hn::Add(n2.b, p2.b), quarter), hn::Mul(A.b, quarter))};
+    const VF lumaB = hn::Sqrt(hn::Add(hn::Add(hn::Mul(hn::Set(df, 0.299f), B.r), hn::Mul(hn::Set(df, 0.587f), B.g)),
+                                      hn::Mul(hn::Set(df, 0.114f), B.b)));
+    const auto twoTap = hn::Or(hn::Lt(lumaB, lumaMin), hn::Gt(lumaB, lumaMax));
+    const RgbV result{hn::IfThenElse(twoTap, hn::Mul(A.r, half), B.r), hn::IfThenElse(twoTap, hn::Mul(A.g, half), B.g),
+                      hn::IfThenElse(twoTap, hn::Mul(A.b, half), B.b)};
+    const VU srcV = hn::LoadU(du, reinterpret_cast<const std::uint32_t*>(src + x));
+    const VU rgb = hn::Or(hn::Or(hn::BitCast(du, Quantize(result.r)), hn::ShiftLeft<8>(hn::BitCast(du, Quantize(result.g)))),
+                          hn::ShiftLeft<16>(hn::BitCast(du, Quantize(result.b))));
+    const VU out = hn::Or(rgb, hn::And(srcV, hn::Set(du, 0xFF000000u)));
+    hn::StoreU(hn::IfThenElse(hn::RebindMask(du, keep), srcV, out), du, reinterpret_cast<std::uint32_t*>(dst + x));
+}
+
+// The interior chunks of row y; returns the first x not written (the caller does x = 0 and
+// [returned, W) with the scalar kernel).
+inline int Fxaa3cRowSimd(const Texture& tex, const ImageF& L, int y, const Fxaa3cParams& p, const Rgba8* src,
+                         Rgba8* dst) {
+    const int n = int(hn::Lanes(DF()));
+    int x = 1;
+    for (; x + n <= L.width() - 1; x += n) Fxaa3cChunk(tex, L, x, y, p, src, dst);
+    return x;
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace ssfx::aa::detail
+HWY_AFTER_NAMESPACE();
+
+#endif  // include guard
