@@ -8,6 +8,7 @@ PACKAGES=(
   libtbb-dev                         # threads (oneTBB)
   libhwy-dev                         # SIMD (Google Highway)
   libpng-dev zlib1g-dev              # PNG / APNG
+  libcairo2-dev fonts-dejavu-core fontconfig   # test images (aliased vector drawing, real text)
   libcli11-dev nlohmann-json3-dev libfmt-dev   # CLI, JSON, formatting
   clang libclang-rt-14-dev           # libFuzzer targets (fuzz smoke run in make test)
 )

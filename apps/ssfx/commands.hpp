@@ -9,5 +9,7 @@ void addAaCommand(CLI::App& app);
 void addMethodsCommand(CLI::App& app);
 void addBenchCommand(CLI::App& app);
 void addTestsceneCommand(CLI::App& app);
+void addTestimagesCommand(CLI::App& app);
+void addEvalCommand(CLI::App& app);
 
 }  // namespace ssfx::cli

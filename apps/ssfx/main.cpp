@@ -20,6 +20,8 @@ int main(int argc, char** argv) {
     ssfx::cli::addMethodsCommand(app);
     ssfx::cli::addBenchCommand(app);
     ssfx::cli::addTestsceneCommand(app);
+    ssfx::cli::addTestimagesCommand(app);
+    ssfx::cli::addEvalCommand(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

@@ -1,0 +1,100 @@
+// Image quality metrics (see metrics.hpp). Both reductions are deterministic for any
+// thread count: MSE sums exact integers; SSIM sums per window row into a vector that is
+// then added up in row order.
+#include "ssfx/eval/metrics.hpp"
+
+#include <fmt/format.h>
+
+#include <atomic>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace ssfx::eval {
+
+namespace {
+
+void checkSameSize(ImageView<const Rgba8> a, ImageView<const Rgba8> b, const char* what) {
+    if (a.width() != b.width() || a.height() != b.height())
+        throw Error(fmt::format("{}: images differ in size ({}x{} vs {}x{})", what, a.width(), a.height(),
+                                b.width(), b.height()));
+    if (a.empty()) throw Error(fmt::format("{}: empty images", what));
+}
+
+}  // namespace
+
+double mse(ImageView<const Rgba8> a, ImageView<const Rgba8> b, const Exec& exec) {
+    checkSameSize(a, b, "mse");
+    std::atomic<std::uint64_t> total{0};  // exact: at most 2^28 px * 3 * 255^2 < 2^46
+    parallelRows(a.height(), exec, [&](int y0, int y1) {
+        std::uint64_t s = 0;
+        for (int y = y0; y < y1; ++y) {
+            const Rgba8* pa = a.row(y);
+            const Rgba8* pb = b.row(y);
+            for (int x = 0; x < a.width(); ++x) {
+                const int dr = pa[x].r - pb[x].r, dg = pa[x].g - pb[x].g, db = pa[x].b - pb[x].b;
+                s += std::uint64_t(dr * dr + dg * dg + db * db);
+            }
+        }
+        total += s;
+    });
+    return double(total.load()) / (255.0 * 255.0) / (double(a.pixelCount()) * 3.0);
+}
+
+double psnrFromMse(double m) {
+    return m <= 0 ? std::numeric_limits<double>::infinity() : 10.0 * std::log10(1.0 / m);
+}
+
+double psnr(ImageView<const Rgba8> a, ImageView<const Rgba8> b, const Exec& exec) {
+    return psnrFromMse(mse(a, b, exec));
+}
+
+double ssim(ImageView<const Rgba8> a, ImageView<const Rgba8> b, const Exec& exec) {
+    checkSameSize(a, b, "ssim");
+    constexpr int kWin = 8;
+    const int wx = a.width() / kWin, wy = a.height() / kWin;
+    if (wx == 0 || wy == 0)
+        throw Error(fmt::format("ssim: images of {}x{} are smaller than one 8x8 window", a.width(), a.height()));
+    constexpr double kC1 = 0.01 * 0.01, kC2 = 0.03 * 0.03;  // Wang et al. 2004: K1 = 0.01, K2 = 0.03, L = 1
+    std::vector<double> rowSums(std::size_t(wy), 0.0);
+    // Window rows are independent; run them as "rows" of the parallel loop.
+    parallelRows(wy, exec, [&](int r0, int r1) {
+        for (int r = r0; r < r1; ++r) {
+            double rowSum = 0;
+            for (int w = 0; w < wx; ++w) {
+                // Integer moments per channel: exact, then one conversion.
+                std::int64_t sa[3] = {}, sb[3] = {}, saa[3] = {}, sbb[3] = {}, sab[3] = {};
+                for (int y = r * kWin; y < (r + 1) * kWin; ++y) {
+                    const Rgba8* pa = a.row(y) + w * kWin;
+                    const Rgba8* pb = b.row(y) + w * kWin;
+                    for (int x = 0; x < kWin; ++x) {
+                        const int va[3] = {pa[x].r, pa[x].g, pa[x].b};
+                        const int vb[3] = {pb[x].r, pb[x].g, pb[x].b};
+                        for (int c = 0; c < 3; ++c) {
+                            sa[c] += va[c];
+                            sb[c] += vb[c];
+                            saa[c] += va[c] * va[c];
+                            sbb[c] += vb[c] * vb[c];
+                            sab[c] += va[c] * vb[c];
+                        }
+                    }
+                }
+                constexpr double n = kWin * kWin, s = 1.0 / 255.0;
+                for (int c = 0; c < 3; ++c) {
+                    const double ma = sa[c] / n * s, mb = sb[c] / n * s;
+                    const double va = saa[c] / n * s * s - ma * ma;
+                    const double vb = sbb[c] / n * s * s - mb * mb;
+                    const double cov = sab[c] / n * s * s - ma * mb;
+                    rowSum += ((2 * ma * mb + kC1) * (2 * cov + kC2)) / ((ma * ma + mb * mb + kC1) * (va + vb + kC2));
+                }
+            }
+            rowSums[std::size_t(r)] = rowSum;
+        }
+    });
+    double total = 0;
+    for (double v : rowSums) total += v;
+    return total / (double(wx) * wy * 3);
+}
+
+}  // namespace ssfx::eval
