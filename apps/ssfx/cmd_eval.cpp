@@ -3,10 +3,14 @@
 // Long runs print progress on stderr.
 #include <fmt/format.h>
 
+#include <cmath>
 #include <filesystem>
+#include <map>
 
 #include "commands.hpp"
 #include "ssfx/eval/quality.hpp"
+#include "ssfx/eval/temporal.hpp"
+#include "ssfx/eval/test_images.hpp"
 #include "ssfx/io/png.hpp"
 
 namespace ssfx::cli {
@@ -59,12 +63,81 @@ void addQuality(CLI::App& eval) {
     });
 }
 
+void addTemporal(CLI::App& eval) {
+    struct Options {
+        std::string dir, name = "animated", out, json, markdown;
+        std::vector<std::string> methods;
+        int threads = 0;
+    };
+    auto o = std::make_shared<Options>();
+    auto* cmd = eval.add_subcommand("temporal", "Flicker of every method on an animation, against its x8 render");
+    cmd->add_option("--dir", o->dir,
+                    "Read NAME.png, NAMEx2/x4/x8.png (APNG) from here (default: draw ssfx's 'animated' directly)");
+    cmd->add_option("--image", o->name, "Animation name (default: animated)");
+    cmd->add_option("--out", o->out, "Write NAME_METHOD.png and NAME_reference.png (APNG) to this directory");
+    cmd->add_option("--json", o->json, "Also write the results as JSON");
+    cmd->add_option("--md", o->markdown, "Also write the results as Markdown");
+    cmd->add_option("--methods", o->methods, "Methods (default: the quality table's)")->delimiter(',');
+    cmd->add_option("--threads", o->threads, "Worker threads (0 = all)")->check(CLI::Range(0, 1024));
+    cmd->footer("flicker = RMS over frames, pixels and RGB of (dO_t - dR_t), in 8-bit levels, where dO_t is the\n"
+                "method's frame-to-frame difference and dR_t that of the x8 render resolved to 1x (around the\n"
+                "loop); tPSNR is the same as a PSNR; PSNR compares each output frame with the resolved frame.\n"
+                "Reading an x8 APNG holds all its frames in memory (about 3 GB for 'animated').");
+    cmd->callback([o] {
+        eval::FrameFn frame;
+        int frames = 0, fps = 25;
+        auto cache = std::make_shared<std::map<int, io::Animation>>();
+        if (o->dir.empty()) {
+            const auto& info = eval::testImageByName(o->name);
+            frames = info.frames;
+            fps = info.fps;
+            frame = [name = o->name](int t, int scale) { return eval::drawTestImage(name, scale, t); };
+        } else {
+            auto load = [dir = o->dir, name = o->name, cache](int scale) -> io::Animation& {
+                auto it = cache->find(scale);
+                if (it != cache->end()) return it->second;
+                const std::string file = (std::filesystem::path(dir) /
+                                          (scale == 1 ? name + ".png" : fmt::format("{}x{}.png", name, scale)))
+                                             .string();
+                return (*cache)[scale] = io::readApng(file);
+            };
+            const io::Animation& a = load(1);
+            frames = int(a.frames.size());
+            fps = int(std::lround(1.0 / a.frames[0].delaySeconds()));
+            frame = [load](int t, int scale) {
+                const io::Animation& anim = load(scale);
+                if (t >= int(anim.frames.size())) throw Error(fmt::format("x{} animation has fewer frames", scale));
+                return ImageRgba8::copyOf(anim.frames[std::size_t(t)].image.view());
+            };
+        }
+        eval::TemporalOptions t;
+        t.methods = o->methods;
+        t.exec = Exec{o->threads};
+        t.progress = progressLine;
+        const eval::TemporalRun run = eval::evaluateTemporal(frames, frame, t);
+        fmt::print("{}", eval::temporalMarkdown(run.results));
+        if (!o->out.empty()) {
+            std::filesystem::create_directories(o->out);
+            auto save = [&](const std::string& suffix, const std::vector<ImageRgba8>& images) {
+                io::Animation anim;
+                for (const auto& img : images) anim.frames.push_back({img, 1, std::uint16_t(fps)});
+                io::writeApng((std::filesystem::path(o->out) / (o->name + "_" + suffix + ".png")).string(), anim);
+            };
+            save("reference", run.reference);
+            for (std::size_t m = 0; m < run.results.size(); ++m) save(run.results[m].method, run.outputs[m]);
+        }
+        if (!o->json.empty()) writeText(o->json, eval::temporalJson(run.results));
+        if (!o->markdown.empty()) writeText(o->markdown, eval::temporalMarkdown(run.results));
+    });
+}
+
 }  // namespace
 
 void addEvalCommand(CLI::App& app) {
     auto* eval = app.add_subcommand("eval", "Evaluation harness: quality, temporal stability, speed, kernels, report");
     eval->require_subcommand(1);
     addQuality(*eval);
+    addTemporal(*eval);
 }
 
 }  // namespace ssfx::cli
