@@ -8,7 +8,9 @@
 #include <map>
 
 #include "commands.hpp"
+#include "ssfx/eval/kernels.hpp"
 #include "ssfx/eval/quality.hpp"
+#include "ssfx/eval/speed.hpp"
 #include "ssfx/eval/temporal.hpp"
 #include "ssfx/eval/test_images.hpp"
 #include "ssfx/io/png.hpp"
@@ -131,6 +133,59 @@ void addTemporal(CLI::App& eval) {
     });
 }
 
+void addKernels(CLI::App& eval) {
+    struct Options {
+        std::string json, markdown;
+        eval::KernelExperimentOptions k;
+    };
+    auto o = std::make_shared<Options>();
+    auto* cmd = eval.add_subcommand("kernels", "Angle error of derivative kernels on aliased lines (paper's Figure 3)");
+    cmd->add_option("--step", o->k.stepDegrees, "Angle step in degrees (default 0.5)")->check(CLI::Range(0.01, 45.0));
+    cmd->add_option("--widths", o->k.widths, "Line widths in pixels (default 1,2,4)")->delimiter(',');
+    cmd->add_option("--size", o->k.size, "Image side in pixels (default 64)")->check(CLI::Range(32, 1024));
+    cmd->add_option("--supersample", o->k.supersample, "1 = aliased lines (default); n = n x n coverage")
+        ->check(CLI::Range(1, 16));
+    cmd->add_flag_function(
+        "--edge", [o](std::int64_t) { o->k.shape = eval::KernelExperimentOptions::Shape::Edge; },
+        "Half-plane edges instead of lines");
+    cmd->add_option("--json", o->json, "Also write the results (with the error per angle) as JSON");
+    cmd->add_option("--md", o->markdown, "Also write the table as Markdown");
+    cmd->callback([o] {
+        const auto e = eval::runKernelExperiment(o->k);
+        fmt::print("{}", eval::kernelMarkdown(e));
+        if (!o->json.empty()) writeText(o->json, eval::kernelJson(e));
+        if (!o->markdown.empty()) writeText(o->markdown, eval::kernelMarkdown(e));
+    });
+}
+
+void addSpeed(CLI::App& eval) {
+    struct Options {
+        std::string dir, json, markdown;
+        eval::SpeedOptions s;
+        int threads = 0;
+    };
+    auto o = std::make_shared<Options>();
+    auto* cmd = eval.add_subcommand("speed", "Time every method on each image relative to blur = 100 (paper's Table 3)");
+    cmd->add_option("dir", o->dir, "Directory with NAME.png, NAMEx2/x4/x8.png (e.g. from 'ssfx testimages')")
+        ->required();
+    cmd->add_option("--methods", o->s.methods, "Methods (default: the quality table's; blur is always timed)")
+        ->delimiter(',');
+    cmd->add_option("--images", o->s.images, "Images (default: every NAME with NAMEx8.png in DIR)")->delimiter(',');
+    cmd->add_option("--reps", o->s.repetitions, "Timed repetitions (default 40)")->check(CLI::Range(4, 100000));
+    cmd->add_option("--warmup", o->s.warmup, "Untimed rounds first (default 3)")->check(CLI::Range(0, 1000));
+    cmd->add_option("--threads", o->threads, "Worker threads (0 = all)")->check(CLI::Range(0, 1024));
+    cmd->add_option("--json", o->json, "Also write the results as JSON");
+    cmd->add_option("--md", o->markdown, "Also write the tables as Markdown");
+    cmd->callback([o] {
+        o->s.exec = Exec{o->threads};
+        o->s.progress = progressLine;
+        const auto t = eval::measureSpeed(o->dir, o->s);
+        fmt::print("{}", eval::speedMarkdown(t));
+        if (!o->json.empty()) writeText(o->json, eval::speedJson(t));
+        if (!o->markdown.empty()) writeText(o->markdown, eval::speedMarkdown(t));
+    });
+}
+
 }  // namespace
 
 void addEvalCommand(CLI::App& app) {
@@ -138,6 +193,8 @@ void addEvalCommand(CLI::App& app) {
     eval->require_subcommand(1);
     addQuality(*eval);
     addTemporal(*eval);
+    addKernels(*eval);
+    addSpeed(*eval);
 }
 
 }  // namespace ssfx::cli

@@ -1,0 +1,99 @@
+// The speed protocol (see speed.hpp).
+#include "ssfx/eval/speed.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "ssfx/eval/quality.hpp"
+#include "ssfx/io/png.hpp"
+#include "ssfx/registry.hpp"
+
+namespace ssfx::eval {
+
+SpeedTable measureSpeed(const std::string& dir, const SpeedOptions& o) {
+    SpeedTable t;
+    t.images = o.images.empty() ? findRenderSets(dir) : o.images;
+    if (t.images.empty()) throw Error(fmt::format("no renders in '{}' (need NAME.png and NAMEx8.png)", dir));
+    t.methods = o.methods.empty() ? paperMethodOrder() : o.methods;
+    if (std::find(t.methods.begin(), t.methods.end(), "blur") == t.methods.end()) t.methods.push_back("blur");
+    t.repetitions = o.repetitions;
+    t.machine = machineInfo(resolvedThreads(o.exec));
+    for (const auto& name : t.images) {
+        auto file = [&](int scale) {
+            return (std::filesystem::path(dir) / (scale == 1 ? name + ".png" : fmt::format("{}x{}.png", name, scale)))
+                .string();
+        };
+        ImageRgba8 inputs[3];  // x1, x2, x4
+        inputs[0] = io::readPng(file(1));
+        std::vector<TimedMethod> timed;
+        std::vector<ImageRgba8> outputs;
+        outputs.reserve(t.methods.size());
+        const MethodSettings settings;
+        for (const auto& id : t.methods) {
+            const MethodInfo* m = &methodById(id);
+            const int slot = m->inputScale == 4 ? 2 : m->inputScale == 2 ? 1 : 0;
+            if (inputs[slot].empty()) inputs[slot] = io::readPng(file(m->inputScale));
+            const ImageRgba8& in = inputs[slot];
+            ImageRgba8& out = outputs.emplace_back(inputs[0].width(), inputs[0].height());
+            const Exec exec = o.exec;
+            timed.push_back({id, [m, &in, &out, &settings, exec] { m->runInto(in.view(), out.view(), settings, exec); }});
+        }
+        auto rounds = [&](int r, int n) {
+            if (o.progress && (r == n || r % 10 == 0)) o.progress(fmt::format("speed: {} round {}/{}", name, r, n));
+        };
+        t.results.push_back(timeInterleaved(timed, o.repetitions, o.warmup, "blur", rounds));
+    }
+    return t;
+}
+
+std::string speedMarkdown(const SpeedTable& t) {
+    std::string s = fmt::format(
+        "Machine: {}, {} of {} threads, SIMD target {}; {} repetitions per method and image, interleaved, "
+        "fastest and slowest quarter dropped.\n\n",
+        t.machine.cpu, t.machine.threads, t.machine.hardwareThreads, t.machine.simdTarget, t.repetitions);
+    for (int table = 0; table < 2; ++table) {
+        s += table == 0 ? "Relative to blur = 100 (trimmed means)\n\n" : "\nMedian time (ms)\n\n";
+        s += "| image |";
+        for (const auto& m : t.methods) s += " " + m + " |";
+        s += "\n|---|";
+        for (std::size_t m = 0; m < t.methods.size(); ++m) s += "---:|";
+        s += "\n";
+        std::vector<double> mean(t.methods.size(), 0.0);
+        for (std::size_t i = 0; i < t.images.size(); ++i) {
+            s += "| " + t.images[i] + " |";
+            for (std::size_t m = 0; m < t.methods.size(); ++m) {
+                const double v = table == 0 ? t.results[i][m].relative : t.results[i][m].medianMs;
+                mean[m] += v / double(t.images.size());
+                s += table == 0 ? fmt::format(" {:.0f} |", v) : fmt::format(" {:.3f} |", v);
+            }
+            s += "\n";
+        }
+        s += "| mean |";
+        for (double v : mean) s += table == 0 ? fmt::format(" {:.0f} |", v) : fmt::format(" {:.3f} |", v);
+        s += "\n";
+    }
+    return s;
+}
+
+std::string speedJson(const SpeedTable& t) {
+    nlohmann::ordered_json j;
+    j["machine"] = {{"cpu", t.machine.cpu},
+                    {"hardware_threads", t.machine.hardwareThreads},
+                    {"threads", t.machine.threads},
+                    {"simd_target", t.machine.simdTarget}};
+    j["protocol"] = {{"repetitions", t.repetitions},
+                     {"baseline", "blur"},
+                     {"relative", "trimmed mean (middle half) / blur's trimmed mean * 100"}};
+    for (std::size_t i = 0; i < t.images.size(); ++i)
+        for (std::size_t m = 0; m < t.methods.size(); ++m) {
+            const auto& r = t.results[i][m];
+            j["images"][t.images[i]][t.methods[m]] = {
+                {"median_ms", r.medianMs}, {"trimmed_mean_ms", r.trimmedMeanMs}, {"relative", r.relative}};
+        }
+    return j.dump(2) + "\n";
+}
+
+}  // namespace ssfx::eval
