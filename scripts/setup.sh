@@ -11,17 +11,29 @@ PACKAGES=(
   libcairo2-dev fonts-dejavu-core fontconfig   # test images (aliased vector drawing, real text)
   libcli11-dev nlohmann-json3-dev libfmt-dev   # CLI, JSON, formatting
   clang libclang-rt-14-dev           # libFuzzer targets (fuzz smoke run in make test)
+  chromium                           # the HTML report's browser test (headless, via playwright-core)
 )
 
 missing=()
 for p in "${PACKAGES[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
-[ ${#missing[@]} -eq 0 ] && exit 0
+# Node.js and npm: any installation will do (Debian's packages only when there is none).
+command -v node >/dev/null && command -v npm >/dev/null || missing+=(nodejs npm)
 
-echo "setup: installing ${missing[*]}" >&2
-SUDO=""
-[ "$(id -u)" -ne 0 ] && SUDO="sudo"
-export DEBIAN_FRONTEND=noninteractive
-$SUDO apt-get update -qq
-$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing ${missing[*]}" >&2
+  SUDO=""
+  [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+  export DEBIAN_FRONTEND=noninteractive
+  $SUDO apt-get update -qq
+  $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+# playwright-core for the report test, pinned by tests/report/package-lock.json (it drives
+# Debian's chromium; no browser download).
+REPORT_TEST="$(cd "$(dirname "$0")/.." && pwd)/tests/report"
+if [ ! -d "$REPORT_TEST/node_modules/playwright-core" ]; then
+  echo "setup: npm ci in tests/report" >&2
+  (cd "$REPORT_TEST" && PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD=1 npm ci --no-audit --no-fund --loglevel=error >/dev/null)
+fi

@@ -10,6 +10,7 @@
 #include "commands.hpp"
 #include "ssfx/eval/kernels.hpp"
 #include "ssfx/eval/quality.hpp"
+#include "ssfx/eval/report.hpp"
 #include "ssfx/eval/speed.hpp"
 #include "ssfx/eval/temporal.hpp"
 #include "ssfx/eval/test_images.hpp"
@@ -186,6 +187,26 @@ void addSpeed(CLI::App& eval) {
     });
 }
 
+void addReport(CLI::App& eval) {
+    auto o = std::make_shared<eval::ReportOptions>();
+    auto threads = std::make_shared<int>(0);
+    auto* cmd = eval.add_subcommand("report", "Run the whole evaluation and write the HTML report");
+    cmd->add_option("--out", o->outDir, "Output directory (created if missing); open DIR/index.html")->required();
+    cmd->add_option("--reference", o->referenceDir,
+                    "The DDAA author's data (e.g. ../shared/reference/ppaa): adds the paper's rows reproduced");
+    cmd->add_option("--methods", o->methods, "Methods (default: all, in the paper's order)")->delimiter(',');
+    cmd->add_option("--reps", o->speedRepetitions, "Timed repetitions per method and image (default 20)")
+        ->check(CLI::Range(4, 100000));
+    cmd->add_flag("--quick", o->quick, "Fewer repetitions and every 4th animation frame (tests)");
+    cmd->add_option("--threads", *threads, "Worker threads (0 = all)")->check(CLI::Range(0, 1024));
+    cmd->callback([o, threads] {
+        o->exec = Exec{*threads};
+        o->progress = progressLine;
+        eval::writeReport(*o);
+        std::fprintf(stderr, "eval: wrote %s/index.html\n", o->outDir.c_str());
+    });
+}
+
 }  // namespace
 
 void addEvalCommand(CLI::App& app) {
@@ -195,6 +216,7 @@ void addEvalCommand(CLI::App& app) {
     addTemporal(*eval);
     addKernels(*eval);
     addSpeed(*eval);
+    addReport(*eval);
 }
 
 }  // namespace ssfx::cli

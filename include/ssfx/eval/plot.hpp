@@ -1,0 +1,29 @@
+// Charts for the report, drawn with Cairo (antialiased, DejaVu Sans) into RGBA images that
+// the caller writes as PNG: grouped bars (one group per category, one bar per series, as
+// the DDAA paper's Figure 8 PSNR chart) and line charts (the kernel experiment).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "ssfx/core/image.hpp"
+
+namespace ssfx::eval {
+
+struct Series {
+    std::string name;
+    std::vector<double> values;  //!< one per category (bars) or per x value (lines); NaN = no value
+};
+
+struct ChartStyle {
+    int width = 880, height = 420;
+    std::string title, xLabel, yLabel;
+    bool logY = false;  //!< logarithmic y axis (values must be > 0)
+    bool zeroBased = true;  //!< bars start at 0; false: the axis starts just below the smallest value
+};
+
+ImageRgba8 groupedBarChart(const std::vector<std::string>& categories, const std::vector<Series>& series,
+                           const ChartStyle& style);
+ImageRgba8 lineChart(const std::vector<double>& x, const std::vector<Series>& series, const ChartStyle& style);
+
+}  // namespace ssfx::eval

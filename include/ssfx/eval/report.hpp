@@ -1,0 +1,36 @@
+// The HTML report: a self-contained static site (relative paths only, no network at view
+// time) with the evaluation's tables, plots, an image comparison viewer and the
+// animations. `ssfx eval report --out DIR` and `make demo` write it.
+//
+//   DIR/index.html                 tables, plots, viewers, method notes
+//   DIR/images/NAME*.png           renders (x1..x8), NAME_METHOD.png outputs, NAME_reference.png
+//   DIR/anim/NAME_METHOD.png       animated outputs (APNG), NAME_reference.png, NAME_input.png
+//   DIR/plots/*.png                charts (Cairo)
+//   DIR/data/*.json, *.md          every table as data
+//   DIR/methods/ID.html            each method's doc (embedded in the binary at build time)
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "ssfx/core/parallel.hpp"
+
+namespace ssfx::eval {
+
+struct ReportOptions {
+    std::string outDir;
+    std::vector<std::string> methods;  //!< empty = the quality table's order
+    int speedRepetitions = 20;         //!< per method and image
+    //! The DDAA author's data (../shared/reference/ppaa); when it exists the report adds the
+    //! reproduction of the paper's rows from the author's outputs and from ours.
+    std::string referenceDir;
+    //! Fewer repetitions and every 4th animation frame: for tests of the report itself.
+    bool quick = false;
+    Exec exec;
+    std::function<void(const std::string&)> progress;
+};
+
+void writeReport(const ReportOptions& options);
+
+}  // namespace ssfx::eval

@@ -1,0 +1,217 @@
+// Report charts (see plot.hpp).
+#include "ssfx/eval/plot.hpp"
+
+#include <cairo.h>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+
+#include "ssfx/core/error.hpp"
+
+namespace ssfx::eval {
+
+namespace {
+
+// Colour-blind-friendly palette (Okabe and Ito, 2008), then greys.
+constexpr double kPalette[][3] = {{0.90, 0.62, 0.00}, {0.34, 0.71, 0.91}, {0.00, 0.62, 0.45}, {0.94, 0.89, 0.26},
+                                  {0.00, 0.45, 0.70}, {0.84, 0.37, 0.00}, {0.80, 0.47, 0.65}, {0.30, 0.30, 0.30},
+                                  {0.65, 0.65, 0.65}, {0.10, 0.10, 0.10}};
+
+struct Surface {
+    std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)> s{nullptr, cairo_surface_destroy};
+    std::unique_ptr<cairo_t, decltype(&cairo_destroy)> cr{nullptr, cairo_destroy};
+    Surface(int w, int h) {
+        s.reset(cairo_image_surface_create(CAIRO_FORMAT_RGB24, w, h));
+        cr.reset(cairo_create(s.get()));
+        cairo_set_source_rgb(cr.get(), 1, 1, 1);
+        cairo_paint(cr.get());
+        cairo_select_font_face(cr.get(), "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+    }
+    ImageRgba8 image() {
+        cairo_surface_flush(s.get());
+        const int w = cairo_image_surface_get_width(s.get()), h = cairo_image_surface_get_height(s.get());
+        const int stride = cairo_image_surface_get_stride(s.get());
+        const unsigned char* d = cairo_image_surface_get_data(s.get());
+        ImageRgba8 out(w, h);
+        for (int y = 0; y < h; ++y) {
+            const auto* row = reinterpret_cast<const std::uint32_t*>(d + std::ptrdiff_t(y) * stride);
+            for (int x = 0; x < w; ++x)
+                out(x, y) = {std::uint8_t(row[x] >> 16), std::uint8_t(row[x] >> 8), std::uint8_t(row[x]), 255};
+        }
+        return out;
+    }
+};
+
+void text(cairo_t* cr, double x, double y, const std::string& s, double size, double alignX, bool bold = false) {
+    cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL,
+                           bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
+    cairo_set_font_size(cr, size);
+    cairo_text_extents_t e;
+    cairo_text_extents(cr, s.c_str(), &e);
+    cairo_move_to(cr, x - alignX * e.x_advance, y);
+    cairo_show_text(cr, s.c_str());
+}
+
+// A value axis: maps values to pixels, with "nice" ticks.
+struct Axis {
+    double lo, hi;
+    bool log;
+    double top, bottom;
+    double map(double v) const {
+        const double a = log ? std::log10(lo) : lo, b = log ? std::log10(hi) : hi;
+        const double t = ((log ? std::log10(v) : v) - a) / (b - a);
+        return bottom - t * (bottom - top);
+    }
+    std::vector<double> ticks() const {
+        std::vector<double> t;
+        if (log) {
+            for (double p = std::pow(10.0, std::floor(std::log10(lo))); p <= hi * 1.0001; p *= 10)
+                if (p >= lo * 0.9999) t.push_back(p);
+            return t;
+        }
+        const double raw = (hi - lo) / 6, mag = std::pow(10.0, std::floor(std::log10(raw)));
+        const double step = raw / mag < 1.5 ? mag : raw / mag < 3.5 ? 2 * mag : raw / mag < 7.5 ? 5 * mag : 10 * mag;
+        for (double v = std::ceil(lo / step) * step; v <= hi + 1e-9; v += step) t.push_back(v);
+        return t;
+    }
+};
+
+Axis valueAxis(const std::vector<Series>& series, const ChartStyle& st, double top, double bottom) {
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (const auto& s : series)
+        for (double v : s.values)
+            if (std::isfinite(v) && (!st.logY || v > 0)) lo = std::min(lo, v), hi = std::max(hi, v);
+    if (!std::isfinite(lo)) lo = 0, hi = 1;
+    if (st.logY) {
+        lo = std::pow(10.0, std::floor(std::log10(lo)));
+        hi = std::pow(10.0, std::ceil(std::log10(hi)));
+        if (hi <= lo) hi = lo * 10;
+    } else {
+        const double pad = (hi - lo) * 0.08 + 1e-9;
+        lo = st.zeroBased ? std::min(0.0, lo) : lo - pad;
+        hi = hi + pad;
+        if (hi - lo > 5) lo = std::floor(lo), hi = std::ceil(hi);
+    }
+    return {lo, hi, st.logY, top, bottom};
+}
+
+void frame(cairo_t* cr, const ChartStyle& st, const Axis& ax, double left, double right) {
+    cairo_set_line_width(cr, 1);
+    for (double t : ax.ticks()) {
+        const double y = std::round(ax.map(t)) + 0.5;
+        cairo_set_source_rgb(cr, 0.88, 0.88, 0.88);
+        cairo_move_to(cr, left, y);
+        cairo_line_to(cr, right, y);
+        cairo_stroke(cr);
+        cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
+        text(cr, left - 6, y + 4, std::abs(t) >= 1000 || t == std::floor(t) ? fmt::format("{:g}", t)
+                                                                              : fmt::format("{:.1f}", t),
+             11, 1.0);
+    }
+    cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
+    cairo_rectangle(cr, left + 0.5, ax.top + 0.5, right - left, ax.bottom - ax.top);
+    cairo_stroke(cr);
+    text(cr, st.width / 2.0, 22, st.title, 15, 0.5, true);
+    if (!st.xLabel.empty()) text(cr, (left + right) / 2, st.height - 8, st.xLabel, 12, 0.5);
+    cairo_save(cr);
+    cairo_translate(cr, 16, (ax.top + ax.bottom) / 2);
+    cairo_rotate(cr, -M_PI / 2);
+    text(cr, 0, 0, st.yLabel, 12, 0.5);
+    cairo_restore(cr);
+}
+
+void legend(cairo_t* cr, const std::vector<Series>& series, double x, double y) {
+    for (std::size_t i = 0; i < series.size(); ++i) {
+        const auto* c = kPalette[i % std::size(kPalette)];
+        cairo_set_source_rgb(cr, c[0], c[1], c[2]);
+        cairo_rectangle(cr, x, y + 18.0 * double(i), 12, 12);
+        cairo_fill(cr);
+        cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+        text(cr, x + 18, y + 18.0 * double(i) + 10, series[i].name, 12, 0.0);
+    }
+}
+
+void checkStyle(const ChartStyle& st) {
+    if (st.width < 200 || st.height < 150 || st.width > 4000 || st.height > 4000)
+        throw Error(fmt::format("chart size {}x{} is not in [200, 4000] x [150, 4000]", st.width, st.height));
+}
+
+}  // namespace
+
+ImageRgba8 groupedBarChart(const std::vector<std::string>& categories, const std::vector<Series>& series,
+                           const ChartStyle& st) {
+    checkStyle(st);
+    for (const auto& s : series)
+        if (s.values.size() != categories.size())
+            throw Error(fmt::format("chart: series '{}' has {} values for {} categories", s.name, s.values.size(),
+                                    categories.size()));
+    Surface sf(st.width, st.height);
+    cairo_t* cr = sf.cr.get();
+    const double left = 64, right = st.width - 110, top = 36, bottom = st.height - 48;
+    const Axis ax = valueAxis(series, st, top, bottom);
+    frame(cr, st, ax, left, right);
+    const double groupW = (right - left) / double(std::max<std::size_t>(1, categories.size()));
+    const double barW = groupW * 0.8 / double(std::max<std::size_t>(1, series.size()));
+    for (std::size_t g = 0; g < categories.size(); ++g) {
+        const double gx = left + groupW * double(g) + groupW * 0.1;
+        for (std::size_t s = 0; s < series.size(); ++s) {
+            const double v = series[s].values[g];
+            if (!std::isfinite(v) || (st.logY && v <= 0)) continue;
+            const double y = ax.map(std::clamp(v, ax.lo, ax.hi));
+            const auto* c = kPalette[s % std::size(kPalette)];
+            cairo_set_source_rgb(cr, c[0], c[1], c[2]);
+            cairo_rectangle(cr, gx + barW * double(s), y, barW - 1, bottom - y);
+            cairo_fill(cr);
+        }
+        cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+        text(cr, gx + groupW * 0.4, bottom + 16, categories[g], 12, 0.5);
+    }
+    legend(cr, series, right + 12, top + 4);
+    return sf.image();
+}
+
+ImageRgba8 lineChart(const std::vector<double>& x, const std::vector<Series>& series, const ChartStyle& st) {
+    checkStyle(st);
+    if (x.size() < 2) throw Error("chart: a line chart needs at least two x values");
+    for (const auto& s : series)
+        if (s.values.size() != x.size())
+            throw Error(fmt::format("chart: series '{}' has {} values for {} x values", s.name, s.values.size(),
+                                    x.size()));
+    Surface sf(st.width, st.height);
+    cairo_t* cr = sf.cr.get();
+    const double left = 64, right = st.width - 110, top = 36, bottom = st.height - 48;
+    const Axis ax = valueAxis(series, st, top, bottom);
+    frame(cr, st, ax, left, right);
+    const double x0 = x.front(), x1 = x.back();
+    auto mapX = [&](double v) { return left + (v - x0) / (x1 - x0) * (right - left); };
+    cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
+    for (int i = 0; i <= 6; ++i) {
+        const double v = x0 + (x1 - x0) * i / 6;
+        text(cr, mapX(v), bottom + 16, fmt::format("{:g}", std::round(v * 10) / 10), 11, 0.5);
+    }
+    for (std::size_t s = 0; s < series.size(); ++s) {
+        const auto* c = kPalette[s % std::size(kPalette)];
+        cairo_set_source_rgb(cr, c[0], c[1], c[2]);
+        cairo_set_line_width(cr, 1.5);
+        bool pen = false;
+        for (std::size_t i = 0; i < x.size(); ++i) {
+            const double v = series[s].values[i];
+            if (!std::isfinite(v)) {
+                pen = false;
+                continue;
+            }
+            const double px = mapX(x[i]), py = ax.map(std::clamp(v, ax.lo, ax.hi));
+            if (pen) cairo_line_to(cr, px, py);
+            else cairo_move_to(cr, px, py);
+            pen = true;
+        }
+        cairo_stroke(cr);
+    }
+    legend(cr, series, right + 12, top + 4);
+    return sf.image();
+}
+
+}  // namespace ssfx::eval

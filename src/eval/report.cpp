@@ -1,0 +1,403 @@
+// The HTML report (see report.hpp). Runs the whole evaluation: draws the test images,
+// scores every method (quality.hpp), measures flicker (temporal.hpp), speed (speed.hpp)
+// and the kernel experiment (kernels.hpp), draws the charts (plot.hpp) and writes one
+// static page with relative links only.
+#include "ssfx/eval/report.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "report_assets.hpp"
+#include "ssfx/aa/resolve.hpp"
+#include "ssfx/eval/kernels.hpp"
+#include "ssfx/eval/plot.hpp"
+#include "ssfx/eval/quality.hpp"
+#include "ssfx/eval/speed.hpp"
+#include "ssfx/eval/temporal.hpp"
+#include "ssfx/eval/test_images.hpp"
+#include "ssfx/io/png.hpp"
+#include "ssfx/registry.hpp"
+
+namespace ssfx::eval {
+
+namespace detail {
+const std::vector<std::pair<std::string_view, std::string_view>>& methodDocs();  // generated
+}
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string esc(std::string_view s) {
+    std::string o;
+    for (char c : s) {
+        switch (c) {
+            case '&': o += "&amp;"; break;
+            case '<': o += "&lt;"; break;
+            case '>': o += "&gt;"; break;
+            case '"': o += "&quot;"; break;
+            default: o += c;
+        }
+    }
+    return o;
+}
+
+void writeText(const fs::path& path, const std::string& text) {
+    io::writeFileAtomic(path.string(), {reinterpret_cast<const std::uint8_t*>(text.data()), text.size()});
+}
+
+std::string fmtValue(double v, int decimals) {
+    if (std::isnan(v)) return "-";
+    if (std::isinf(v)) return "inf";
+    return fmt::format("{:.{}f}", v, decimals);
+}
+
+// An HTML table of rows x methods; the best value of each row (higher or lower) in bold.
+std::string htmlTable(const std::vector<std::string>& rowNames, const std::vector<std::string>& cols,
+                      const std::vector<std::vector<double>>& values, int decimals, bool higherIsBetter,
+                      const std::string& corner = "image") {
+    std::string s = "<table><tr><th>" + esc(corner) + "</th>";
+    for (const auto& c : cols) s += "<th>" + esc(c) + "</th>";
+    s += "</tr>\n";
+    for (std::size_t r = 0; r < rowNames.size(); ++r) {
+        double best = higherIsBetter ? -INFINITY : INFINITY;
+        for (double v : values[r])
+            if (!std::isnan(v)) best = higherIsBetter ? std::max(best, v) : std::min(best, v);
+        s += "<tr><td>" + esc(rowNames[r]) + "</td>";
+        for (double v : values[r])
+            s += fmt::format("<td{}>{}</td>", v == best ? " class=\"best\"" : "", fmtValue(v, decimals));
+        s += "</tr>\n";
+    }
+    return s + "</table>\n";
+}
+
+std::vector<std::vector<double>> withMean(const QualityTable& t, bool psnr) {
+    auto v = psnr ? t.psnr : t.ssim;
+    std::vector<double> mean;
+    for (std::size_t m = 0; m < t.methods.size(); ++m) mean.push_back(psnr ? t.meanPsnr(m) : t.meanSsim(m));
+    v.push_back(mean);
+    return v;
+}
+
+std::vector<std::string> rowsWithMean(std::vector<std::string> rows) {
+    rows.push_back("mean");
+    return rows;
+}
+
+std::string methodNote(const MethodInfo& m) {
+    return fmt::format("<dt id=\"m-{0}\">{0}</dt><dd>{1} <em>{2}</em> (<a href=\"methods/{0}.html\">doc</a>)</dd>\n",
+                       esc(m.id), esc(m.summary), esc(m.citation));
+}
+
+// A viewer section over `sources` (label -> relative URL), `initial` picked at first.
+std::string viewer(const std::string& id, int w, int h, const std::vector<std::pair<std::string, std::string>>& sources,
+                   const std::vector<std::string>& initial) {
+    nlohmann::ordered_json src = nlohmann::ordered_json::object();
+    for (const auto& [label, url] : sources) src[label] = url;
+    const nlohmann::json init = initial;
+    std::string s = fmt::format(
+        "<section class=\"viewer\" id=\"viewer-{}\" data-width=\"{}\" data-height=\"{}\" data-pane-width=\"{}\" "
+        "data-pane-height=\"{}\" data-sources=\"{}\" data-initial=\"{}\">\n<div class=\"controls\">"
+        "<span>methods</span>",
+        esc(id), w, h, 400, 400, esc(src.dump()), esc(init.dump()));
+    for (const auto& [label, url] : sources) s += fmt::format("<button data-method=\"{0}\">{0}</button>", esc(label));
+    s += "<span>mode</span><button data-mode=\"side\">side by side</button><button data-mode=\"flip\">flip</button>"
+         "<button data-action=\"flip\" title=\"next picked method (key f)\">next</button>"
+         "<button data-action=\"auto\">auto-flip</button><span>zoom</span>";
+    for (int z : {1, 2, 4, 8, 16}) s += fmt::format("<button data-zoom=\"{0}\">{0}x</button>", z);
+    s += "</div>\n<div class=\"panes\"></div>\n</section>\n";
+    return s;
+}
+
+}  // namespace
+
+void writeReport(const ReportOptions& o) {
+    if (o.outDir.empty()) throw Error("report: no output directory");
+    auto say = [&](const std::string& s) {
+        if (o.progress) o.progress(s);
+    };
+    const fs::path out(o.outDir);
+    for (const char* sub : {"images", "anim", "plots", "data", "methods"}) fs::create_directories(out / sub);
+    const std::vector<std::string> methodIds = o.methods.empty() ? paperMethodOrder() : o.methods;
+    for (const auto& id : methodIds) methodById(id);
+    nlohmann::ordered_json all;
+
+    // 1. Test images at 1x..8x, and the x8 render resolved to 1x (the viewer's reference).
+    std::vector<std::string> stills;
+    for (const auto& t : testImages()) {
+        if (t.frames != 1) continue;
+        stills.emplace_back(t.name);
+        say(fmt::format("report: drawing {}", t.name));
+        for (int s : {1, 2, 4, 8}) {
+            const ImageRgba8 img = drawTestImage(t.name, s);
+            const std::string file = s == 1 ? std::string(t.name) + ".png" : fmt::format("{}x{}.png", t.name, s);
+            io::writePng((out / "images" / file).string(), img.view());
+            if (s == 8)
+                io::writePng((out / "images" / (std::string(t.name) + "_reference.png")).string(),
+                             aa::downscaleMitchell(img.view(), 8, {}, o.exec).view());
+        }
+    }
+
+    // 2. Quality (Table 2) on our images, writing every output for the viewer.
+    QualityOptions qo;
+    qo.methods = methodIds;
+    qo.outputsDir = (out / "images").string();
+    qo.exec = o.exec;
+    qo.progress = o.progress;
+    const QualityTable quality = evaluateQuality((out / "images").string(), qo);
+    writeText(out / "data" / "quality.json", qualityJson(quality));
+    writeText(out / "data" / "quality.md", qualityMarkdown(quality));
+    all["quality"] = nlohmann::ordered_json::parse(qualityJson(quality));
+
+    // 3. The paper's rows from the author's data, when present.
+    std::string reproduction;
+    if (!o.referenceDir.empty() && fs::is_directory(o.referenceDir) && !o.quick) {
+        QualityOptions ro;
+        ro.methods = {"ssaax4", "ssaax2", "blur", "fxaa3c", "fxaa3d", "ddaa1", "ddaa2", "ddaa2p"};
+        ro.exec = o.exec;
+        ro.progress = o.progress;
+        ro.source = OutputSource::Given;
+        const QualityTable given = evaluateQuality(o.referenceDir, ro);
+        ro.source = OutputSource::Compute;
+        const QualityTable ours = evaluateQuality(o.referenceDir, ro);
+        writeText(out / "data" / "reference_given.json", qualityJson(given));
+        writeText(out / "data" / "reference_ours.json", qualityJson(ours));
+        all["reference"] = {{"given", nlohmann::ordered_json::parse(qualityJson(given))},
+                            {"ours", nlohmann::ordered_json::parse(qualityJson(ours))}};
+        reproduction =
+            "<h3>The paper's rows, reproduced on the author's images</h3>\n<p class=\"note\">PSNR (dB) of the "
+            "DDAA author's GPU outputs (<code>--source given</code>) and of ssfx's outputs on the same inputs, "
+            "with the paper's published (rounded) values. Source: the author's ppaa-experiments repository "
+            "(see <code>../shared/reference/README.md</code>).</p>\n";
+        const std::vector<std::vector<double>> published{{17.3, 17.2, 16.2, 16.2, 16.0, 17.1, 16.9, NAN},
+                                                         {22.5, 22.4, 21.3, 21.6, 21.8, 22.3, 22.2, NAN}};
+        std::vector<std::string> rows;
+        std::vector<std::vector<double>> vals;
+        for (std::size_t i = 0; i < given.images.size(); ++i) {
+            const bool known = given.images[i] == "lines" || given.images[i] == "circles";
+            if (known) {
+                rows.push_back(given.images[i] + " (paper)");
+                vals.push_back(published[given.images[i] == "lines" ? 0 : 1]);
+            }
+            rows.push_back(given.images[i] + " (author's outputs)");
+            vals.push_back(given.psnr[i]);
+            rows.push_back(given.images[i] + " (ssfx)");
+            vals.push_back(ours.psnr[i]);
+        }
+        reproduction += htmlTable(rows, given.methods, vals, 3, true);
+    }
+
+    // 4. Temporal stability on the animation.
+    const TestImageInfo& anim = testImageByName("animated");
+    const int stride = o.quick ? 4 : 1, frames = anim.frames / stride;
+    TemporalOptions to;
+    to.methods = methodIds;
+    to.exec = o.exec;
+    to.progress = o.progress;
+    const TemporalRun temporal = evaluateTemporal(
+        frames, [&](int t, int s) { return drawTestImage(anim.name, s, t * stride); }, to);
+    auto saveAnim = [&](const std::string& suffix, const std::vector<ImageRgba8>& images) {
+        io::Animation a;
+        for (const auto& img : images) a.frames.push_back({img, std::uint16_t(stride), std::uint16_t(anim.fps)});
+        io::writeApng((out / "anim" / fmt::format("{}_{}.png", anim.name, suffix)).string(), a);
+    };
+    saveAnim("reference", temporal.reference);
+    for (std::size_t m = 0; m < methodIds.size(); ++m) saveAnim(methodIds[m], temporal.outputs[m]);
+    writeText(out / "data" / "temporal.json", temporalJson(temporal.results));
+    writeText(out / "data" / "temporal.md", temporalMarkdown(temporal.results));
+    all["temporal"] = nlohmann::ordered_json::parse(temporalJson(temporal.results));
+
+    // 5. Speed (Table 3 layout).
+    SpeedOptions so;
+    so.methods = methodIds;
+    so.repetitions = o.quick ? 4 : o.speedRepetitions;
+    so.warmup = o.quick ? 1 : 3;
+    so.exec = o.exec;
+    so.progress = o.progress;
+    const SpeedTable speed = measureSpeed((out / "images").string(), so);
+    writeText(out / "data" / "speed.json", speedJson(speed));
+    writeText(out / "data" / "speed.md", speedMarkdown(speed));
+    all["speed"] = nlohmann::ordered_json::parse(speedJson(speed));
+
+    // 6. Kernel experiment, aliased (the PPAA case) and with 4x4 coverage (for contrast).
+    say("report: kernel experiment");
+    KernelExperimentOptions ko;
+    if (o.quick) ko.stepDegrees = 2;
+    const KernelExperiment kernels = runKernelExperiment(ko);
+    ko.supersample = 4;
+    const KernelExperiment kernelsAa = runKernelExperiment(ko);
+    writeText(out / "data" / "kernels.json", kernelJson(kernels));
+    writeText(out / "data" / "kernels_supersampled.json", kernelJson(kernelsAa));
+    all["kernels"] = nlohmann::ordered_json::parse(kernelJson(kernels));
+
+    // 7. Charts.
+    say("report: charts");
+    {
+        std::vector<Series> ps, ss;
+        for (std::size_t m = 0; m < quality.methods.size(); ++m) {
+            Series p{quality.methods[m], {}}, s{quality.methods[m], {}};
+            for (std::size_t i = 0; i < quality.images.size(); ++i) {
+                p.values.push_back(quality.psnr[i][m]);
+                s.values.push_back(quality.ssim[i][m]);
+            }
+            ps.push_back(p);
+            ss.push_back(s);
+        }
+        io::writePng((out / "plots" / "psnr.png").string(),
+                     groupedBarChart(quality.images, ps, {880, 400, "PSNR per image and method (higher is better)",
+                                                          "", "PSNR (dB)", false, false})
+                         .view());
+        io::writePng((out / "plots" / "ssim.png").string(),
+                     groupedBarChart(quality.images, ss,
+                                     {880, 400, "SSIM per image and method (8x8 windows)", "", "SSIM", false, false})
+                         .view());
+        std::vector<Series> sp;
+        for (std::size_t m = 0; m < speed.methods.size(); ++m) {
+            Series s{speed.methods[m], {}};
+            for (std::size_t i = 0; i < speed.images.size(); ++i) s.values.push_back(speed.results[i][m].relative);
+            sp.push_back(s);
+        }
+        io::writePng((out / "plots" / "speed.png").string(),
+                     groupedBarChart(speed.images, sp,
+                                     {880, 400, "Time relative to blur = 100 (log scale, lower is faster)", "",
+                                      "% of blur", true, true})
+                         .view());
+        Series fl{"flicker", {}};
+        std::vector<std::string> ids;
+        for (const auto& r : temporal.results) fl.values.push_back(r.flickerLevels), ids.push_back(r.method);
+        std::vector<Series> flv;
+        for (std::size_t m = 0; m < ids.size(); ++m) {
+            Series s{ids[m], std::vector<double>{fl.values[m]}};
+            flv.push_back(s);
+        }
+        io::writePng((out / "plots" / "flicker.png").string(),
+                     groupedBarChart({std::string(anim.name)}, flv,
+                                     {880, 360, "Flicker: RMS error of frame-to-frame differences (lower is steadier)",
+                                      "", "8-bit levels", false, true})
+                         .view());
+        std::vector<Series> ks;
+        for (std::size_t k = 0; k < kernels.kernels.size(); ++k) ks.push_back({kernels.kernels[k], kernels.errorAt[k]});
+        io::writePng((out / "plots" / "kernels.png").string(),
+                     lineChart(kernels.angles, ks,
+                               {880, 400, "Angle error on aliased lines (mean over widths 1, 2, 4 px)",
+                                "line angle (degrees)", "error (degrees)", false, true})
+                         .view());
+    }
+
+    // 8. Method docs.
+    for (const auto& [id, text] : detail::methodDocs()) {
+        writeText(out / "methods" / (std::string(id) + ".html"),
+                  fmt::format("<!DOCTYPE html><html lang=\"en\"><head><meta charset=\"utf-8\"><title>ssfx: {0}</title>"
+                              "<style>{1}</style></head><body><p><a href=\"../index.html\">back to the report</a></p>"
+                              "<pre class=\"doc\">{2}</pre></body></html>\n",
+                              esc(id), detail::kReportCss, esc(text)));
+    }
+    writeText(out / "data" / "all.json", all.dump(1) + "\n");
+
+    // 9. The page.
+    say("report: index.html");
+    const MachineInfo& mi = speed.machine;
+    std::string h = fmt::format(
+        "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
+        "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">"
+        "<title>ssfx evaluation report</title><link rel=\"icon\" href=\"data:,\"><style>{}</style></head><body>\n",
+        detail::kReportCss);
+    h += "<h1>ssfx: post-processing anti-aliasing, evaluated</h1>\n<p class=\"note\">The DDAA paper's evaluation "
+         "(spec <code>ppaa.md</code> section 3) on ssfx's own test images, drawn with Cairo without antialiasing at 1x, "
+         "2x, 4x and 8x. Every number on this page was computed by the run that wrote it; the data is in "
+         "<a href=\"data/all.json\">data/all.json</a>.</p>\n";
+    h += "<h2>Methods</h2>\n<dl class=\"methods\">\n";
+    for (const auto& id : methodIds) h += methodNote(methodById(id));
+    h += "</dl>\n";
+
+    h += "<h2>Quality (the paper's Table 2 protocol)</h2>\n<p class=\"note\">Each method's 1x output (ssaax2 and "
+         "ddaa2p from the x2 render, ssaax4 from the x4 render) is upscaled x8 with the Mitchell filter and compared "
+         "with the x8 render. PSNR over RGB in [0,1]; SSIM on non-overlapping 8x8 windows (one window per 1x pixel). "
+         "Best per row in bold. <code>noaa</code> is the aliased input itself.</p>\n";
+    h += "<h3>PSNR (dB)</h3>\n" + htmlTable(rowsWithMean(quality.images), quality.methods, withMean(quality, true), 3, true);
+    h += "<img class=\"plot\" src=\"plots/psnr.png\" alt=\"PSNR per image and method\">\n";
+    h += "<h3>SSIM</h3>\n" + htmlTable(rowsWithMean(quality.images), quality.methods, withMean(quality, false), 4, true);
+    h += "<img class=\"plot\" src=\"plots/ssim.png\" alt=\"SSIM per image and method\">\n";
+    h += reproduction;
+
+    h += "<h2>Compare the outputs</h2>\n<p class=\"note\">Pick one or more methods; <em>side by side</em> shows them "
+         "together, <em>flip</em> shows one at a time (button <em>next</em> or key <kbd>f</kbd>, or auto-flip). Zoom "
+         "is nearest-neighbour; drag or scroll to pan (all panes move together). <code>reference</code> is the x8 "
+         "render resolved to 1x with the Mitchell filter.</p>\n";
+    for (const auto& name : quality.images) {
+        const TestImageInfo& info = testImageByName(name);
+        std::vector<std::pair<std::string, std::string>> src{{"reference", "images/" + name + "_reference.png"}};
+        for (const auto& id : methodIds) src.emplace_back(id, fmt::format("images/{}_{}.png", name, id));
+        h += fmt::format("<h3>{}</h3><p class=\"note\">{}</p>\n", esc(name), esc(info.description));
+        h += viewer(name, info.width, info.height, src, {"noaa", "ddaa2"});
+    }
+
+    h += "<h2>Temporal stability</h2>\n<p class=\"note\">Each method applied to every frame of <code>animated</code>"
+         " (" + std::to_string(frames) + " frames" + (o.quick ? ", every 4th frame" : "") +
+         "); the reference is the x8 animation resolved to 1x. Flicker is the RMS error of the method's "
+         "frame-to-frame differences against the reference's (around the loop), in 8-bit levels; tPSNR is the same "
+         "as a PSNR; PSNR compares each frame with the reference frame (docs/evaluation.md).</p>\n";
+    {
+        std::vector<std::vector<double>> rows;
+        std::vector<std::string> names;
+        for (const auto& r : temporal.results) {
+            names.push_back(r.method);
+            rows.push_back({r.flickerLevels, r.temporalPsnr, r.psnr});
+        }
+        h += htmlTable(names, {"flicker (levels)", "tPSNR (dB)", "PSNR (dB)"}, rows, 3, false, "method");
+    }
+    h += "<img class=\"plot\" src=\"plots/flicker.png\" alt=\"flicker per method\">\n<div class=\"anims\">\n";
+    h += "<figure><img src=\"anim/animated_reference.png\" alt=\"reference animation\"><figcaption>reference (x8 "
+         "resolved)</figcaption></figure>\n";
+    for (const auto& r : temporal.results)
+        h += fmt::format("<figure><img src=\"anim/animated_{0}.png\" alt=\"{0} animation\"><figcaption>{0}: flicker "
+                         "{1:.2f}</figcaption></figure>\n",
+                         esc(r.method), r.flickerLevels);
+    h += "</div>\n<h3>Animation, zoomable</h3>\n";
+    {
+        std::vector<std::pair<std::string, std::string>> src{{"reference", "anim/animated_reference.png"}};
+        for (const auto& id : methodIds) src.emplace_back(id, fmt::format("anim/animated_{}.png", id));
+        h += viewer("animated", anim.width, anim.height, src, {"noaa", "ddaa2"});
+    }
+
+    h += "<h2>Speed (the paper's Table 3 layout)</h2>\n";
+    h += fmt::format("<p class=\"note\">Machine: {}, {} of {} threads, SIMD target {}. Each method timed {} times per "
+                     "image, interleaved with the others; the fastest and slowest quarter dropped; relative to blur = "
+                     "100 from the same run. The paper's GPU figures: fxaa3c 81-105, ddaa1 94-150, fxaa3d 160-352, "
+                     "ddaa2 175-255, ssaax2 71-94.</p>\n",
+                     esc(mi.cpu), mi.threads, mi.hardwareThreads, esc(mi.simdTarget), speed.repetitions);
+    {
+        std::vector<std::vector<double>> rel, med;
+        for (const auto& row : speed.results) {
+            rel.emplace_back();
+            med.emplace_back();
+            for (const auto& r : row) rel.back().push_back(r.relative), med.back().push_back(r.medianMs);
+        }
+        h += "<h3>Relative to blur = 100</h3>\n" + htmlTable(speed.images, speed.methods, rel, 0, false);
+        h += "<h3>Median (ms)</h3>\n" + htmlTable(speed.images, speed.methods, med, 3, false);
+    }
+    h += "<img class=\"plot\" src=\"plots/speed.png\" alt=\"speed relative to blur\">\n";
+
+    h += "<h2>Kernel experiment (the paper's Figure 3)</h2>\n<p class=\"note\">Angle of aliased lines (widths 1, 2 "
+         "and 4 px, 0 to 90 degrees) estimated from the gradient at the pixels a PPAA method processes; error in "
+         "degrees (docs/evaluation.md). Right column: the same lines with 4x4 coverage (antialiased) for "
+         "contrast.</p>\n";
+    {
+        std::vector<std::vector<double>> rows;
+        for (std::size_t k = 0; k < kernels.kernels.size(); ++k)
+            rows.push_back({kernels.meanError[k], kernels.maxError[k], kernelsAa.meanError[k]});
+        h += htmlTable(kernels.kernels, {"mean error, aliased", "max per-angle mean, aliased", "mean error, 4x4 coverage"},
+                       rows, 3, false, "kernel");
+    }
+    h += "<img class=\"plot\" src=\"plots/kernels.png\" alt=\"angle error per kernel\">\n";
+    h += fmt::format("<p class=\"note\">Written by ssfx 0.1.0. Tables as Markdown: <a href=\"data/quality.md\">quality"
+                     "</a>, <a href=\"data/temporal.md\">temporal</a>, <a href=\"data/speed.md\">speed</a>.</p>\n");
+    h += "<script>" + std::string(detail::kReportJs) + "</script>\n</body></html>\n";
+    writeText(out / "index.html", h);
+}
+
+}  // namespace ssfx::eval

@@ -1,0 +1,144 @@
+// Headless-Chromium test of the HTML report written by `ssfx eval report` (issue #3):
+// the page loads with no console errors, every image and local link resolves, nothing
+// points to the network, and the comparison viewer switches methods and zooms: the pixels
+// of its screenshots are compared with the PNG files they should show (nearest-neighbour
+// zoom: each image pixel becomes a z x z block).
+// Usage: node test_report.mjs REPORT_DIR
+import { chromium } from "playwright-core";
+import fs from "node:fs";
+import path from "node:path";
+import zlib from "node:zlib";
+
+const dir = path.resolve(process.argv[2]);
+let failures = 0;
+function check(ok, what) {
+  console.log(`${ok ? "ok  " : "FAIL"} ${what}`);
+  if (!ok) failures++;
+}
+
+// Minimal PNG decoder: 8-bit RGB or RGBA, not interlaced (what Chromium and ssfx write).
+function decodePng(buf) {
+  let pos = 8, width = 0, height = 0, type = 0;
+  const idat = [];
+  while (pos < buf.length) {
+    const len = buf.readUInt32BE(pos), kind = buf.toString("latin1", pos + 4, pos + 8);
+    const data = buf.subarray(pos + 8, pos + 8 + len);
+    if (kind === "IHDR") {
+      width = data.readUInt32BE(0); height = data.readUInt32BE(4); type = data[9];
+      if (data[8] !== 8 || (type !== 2 && type !== 6) || data[12] !== 0) throw new Error("unsupported PNG");
+    } else if (kind === "IDAT") idat.push(data);
+    else if (kind === "IEND") break;
+    pos += 12 + len;
+  }
+  const bpp = type === 6 ? 4 : 3, stride = width * bpp;
+  const raw = zlib.inflateSync(Buffer.concat(idat));
+  const px = Buffer.alloc(width * height * 4);
+  let prev = Buffer.alloc(stride);
+  for (let y = 0; y < height; y++) {
+    const f = raw[y * (stride + 1)], line = Buffer.from(raw.subarray(y * (stride + 1) + 1, (y + 1) * (stride + 1)));
+    for (let i = 0; i < stride; i++) {
+      const a = i >= bpp ? line[i - bpp] : 0, b = prev[i], c = i >= bpp ? prev[i - bpp] : 0;
+      let p = 0;
+      if (f === 1) p = a; else if (f === 2) p = b; else if (f === 3) p = (a + b) >> 1;
+      else if (f === 4) { const q = a + b - c, pa = Math.abs(q - a), pb = Math.abs(q - b), pc = Math.abs(q - c);
+        p = pa <= pb && pa <= pc ? a : pb <= pc ? b : c; }
+      line[i] = (line[i] + p) & 255;
+    }
+    for (let x = 0; x < width; x++)
+      for (let k = 0; k < 4; k++) px[(y * width + x) * 4 + k] = k < bpp ? line[x * bpp + k] : 255;
+    prev = line;
+  }
+  return { width, height, px };
+}
+
+// Share of the visible pane pixels equal (within 1 level) to image pixel
+// ((scrollLeft + x) / zoom, (scrollTop + y) / zoom).
+function matchShare(shot, img, view, zoom) {
+  let same = 0, total = 0;
+  for (let y = 0; y < view.h; y++)
+    for (let x = 0; x < view.w; x++) {
+      const ix = Math.floor((view.left + x) / zoom), iy = Math.floor((view.top + y) / zoom);
+      const s = (y * shot.width + x) * 4, i = (iy * img.width + ix) * 4;
+      let ok = true;
+      for (let k = 0; k < 3; k++) if (Math.abs(shot.px[s + k] - img.px[i + k]) > 1) ok = false;
+      same += ok; total++;
+    }
+  return same / total;
+}
+
+const browser = await chromium.launch({
+  executablePath: process.env.CHROMIUM || "/usr/bin/chromium",
+  args: ["--no-sandbox", "--disable-gpu", "--allow-file-access-from-files"],
+});
+const page = await browser.newPage({ viewport: { width: 1280, height: 1000 }, deviceScaleFactor: 1 });
+const errors = [];
+page.on("console", m => { if (m.type() === "error") errors.push(m.text()); });
+page.on("pageerror", e => errors.push(String(e)));
+page.on("requestfailed", r => errors.push("request failed: " + r.url()));
+page.on("request", r => { if (!r.url().startsWith("file:") && !r.url().startsWith("data:")) errors.push("network: " + r.url()); });
+await page.goto("file://" + path.join(dir, "index.html"), { waitUntil: "load" });
+
+// Every <img> decodes (the viewers' images are created by the script on load).
+const broken = await page.evaluate(async () => {
+  const imgs = [...document.images];
+  await Promise.all(imgs.map(i => i.decode().catch(() => {})));
+  return { count: imgs.length, bad: imgs.filter(i => !i.complete || i.naturalWidth === 0).map(i => i.src) };
+});
+check(broken.count >= 20 && broken.bad.length === 0, `${broken.count} images load (broken: ${broken.bad.join(", ") || "none"})`);
+const links = await page.evaluate(() => [...document.querySelectorAll("a[href]")].map(a => a.getAttribute("href")));
+const badLinks = links.filter(h => /^[a-z]+:\/\//i.test(h) || !fs.existsSync(path.join(dir, h.split("#")[0])));
+check(links.length > 5 && badLinks.length === 0, `${links.length} links are local and exist (bad: ${badLinks.join(", ") || "none"})`);
+
+// The viewer of 'lines': starts with noaa and ddaa2 side by side.
+const v = page.locator("#viewer-lines");
+await v.scrollIntoViewIfNeeded();
+const initial = await v.locator(".pane img").evaluateAll(ims => ims.map(i => i.dataset.method));
+check(JSON.stringify(initial) === JSON.stringify(["noaa", "ddaa2"]), `side by side shows ${initial}`);
+
+async function paneShot(zoom, expectMethod) {
+  const scroll = v.locator(".pane .scroll").first();
+  await v.locator(".pane img").first().evaluate(i => i.decode());
+  const method = await v.locator(".pane img").first().evaluate(i => i.dataset.method);
+  const view = await scroll.evaluate(s => ({ w: s.clientWidth, h: s.clientHeight, left: s.scrollLeft, top: s.scrollTop }));
+  const shot = decodePng(await scroll.screenshot());
+  const img = decodePng(fs.readFileSync(path.join(dir, "images", `lines_${expectMethod}.png`)));
+  return { method, share: matchShare(shot, img, view, zoom), view, shot };
+}
+
+await v.locator("button[data-mode=flip]").click();
+const a = await paneShot(1, "noaa");
+check(a.method === "noaa" && a.share > 0.999, `flip mode shows noaa: ${(a.share * 100).toFixed(2)} % of pixels match lines_noaa.png`);
+await v.locator("button[data-action=flip]").click();
+const b = await paneShot(1, "ddaa2");
+check(b.method === "ddaa2" && b.share > 0.999, `'next' flips to ddaa2: ${(b.share * 100).toFixed(2)} % match lines_ddaa2.png`);
+const bAsNoaa = matchShare(b.shot, decodePng(fs.readFileSync(path.join(dir, "images", "lines_noaa.png"))), b.view, 1);
+check(bAsNoaa < 0.99, `and the pixels changed (${(bAsNoaa * 100).toFixed(2)} % still equal to noaa)`);
+
+// Zoom 8x: crisp blocks of the image around the same centre.
+await v.locator("button[data-zoom='8']").click();
+const z = await paneShot(8, "ddaa2");
+check(z.view.left > 0 && z.share > 0.999,
+  `zoom 8x: scrolled to (${z.view.left}, ${z.view.top}), ${(z.share * 100).toFixed(2)} % of pixels are 8x8 blocks of lines_ddaa2.png`);
+// Pan by dragging: the view moves and stays pixel-exact.
+const box = await v.locator(".pane .scroll").first().boundingBox();
+await page.mouse.move(box.x + 200, box.y + 200);
+await page.mouse.down();
+await page.mouse.move(box.x + 120, box.y + 150, { steps: 4 });
+await page.mouse.up();
+const p = await paneShot(8, "ddaa2");
+check(p.view.left === z.view.left + 80 && p.view.top === z.view.top + 50 && p.share > 0.999,
+  `drag pans to (${p.view.left}, ${p.view.top}), still ${(p.share * 100).toFixed(2)} % exact`);
+// Picking a third method in side-by-side mode adds a pane.
+await v.locator("button[data-mode=side]").click();
+await v.locator("button[data-method=ssaax4]").click();
+const three = await v.locator(".pane img").evaluateAll(ims => ims.map(i => i.dataset.method));
+check(three.length === 3 && three.includes("ssaax4"), `side by side with ssaax4 added shows ${three}`);
+
+// Animations are APNGs with several frames (acTL chunk present).
+const anim = fs.readFileSync(path.join(dir, "anim", "animated_ddaa2.png"));
+check(anim.includes(Buffer.from("acTL")), "anim/animated_ddaa2.png is an APNG");
+
+check(errors.length === 0, `no console errors (${errors.join(" | ") || "none"})`);
+await browser.close();
+console.log(failures ? `${failures} check(s) failed` : "all checks passed");
+process.exit(failures ? 1 : 0);
