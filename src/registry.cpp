@@ -68,43 +68,49 @@ constexpr ParamInfo kThrMin{"edgeThresholdMin", "luma", 0.0625, 0, 1, ParamKind:
 constexpr ParamInfo kThr{"edgeThreshold", "ratio", 0.166, 0, 1, ParamKind::Float,
                          "contrast threshold relative to the local maximum luma"};
 
+constexpr ParamInfo kChroma{"chromaWeight", "", 0, 0, 4, ParamKind::Float,
+                            "opt-in colour-aware contrast: luma + chromaWeight * (max - min of RGB); 0 = luma"};
+
 constexpr std::array<ParamInfo, 1> kBlurInfo{{{"sigma", "px", 0.6, 0.05, 10, ParamKind::Float, "Gaussian sigma"}}};
 const std::array<Member<BlurParams>, 1> kBlurMembers{&BlurParams::sigma};
 
-constexpr std::array<ParamInfo, 4> kFxaa3cInfo{{
+constexpr std::array<ParamInfo, 5> kFxaa3cInfo{{
     kThrMin, kThr,
     {"edgeSharpness", "", 8, 1, 64, ParamKind::Float, "FXAA console sharpness (limits the long taps)"},
     {"diagonalOffset", "px", 1, 1e-3, 2, ParamKind::Float, "offset of the diagonal reads (Lottes: 0.5)"},
+    kChroma,
 }};
-const std::array<Member<Fxaa3cParams>, 4> kFxaa3cMembers{&Fxaa3cParams::edgeThresholdMin,
-                                                         &Fxaa3cParams::edgeThreshold, &Fxaa3cParams::edgeSharpness,
-                                                         &Fxaa3cParams::diagonalOffset};
+const std::array<Member<Fxaa3cParams>, 5> kFxaa3cMembers{
+    &Fxaa3cParams::edgeThresholdMin, &Fxaa3cParams::edgeThreshold, &Fxaa3cParams::edgeSharpness,
+    &Fxaa3cParams::diagonalOffset, &Fxaa3cParams::chromaWeight};
 
-constexpr std::array<ParamInfo, 4> kFxaa3dInfo{{
+constexpr std::array<ParamInfo, 5> kFxaa3dInfo{{
     kThrMin, kThr,
     {"subpix", "", 0.75, 0, 1, ParamKind::Float, "sub-pixel aliasing removal amount"},
     {"paperSearchQuirk", "bool", 1, 0, 1, ParamKind::Bool,
      "1: side 2 steps back after its first read, as in the paper's shader; 0: FXAA 3.11 as written"},
+    kChroma,
 }};
-const std::array<Member<Fxaa3dParams>, 4> kFxaa3dMembers{&Fxaa3dParams::edgeThresholdMin,
+const std::array<Member<Fxaa3dParams>, 5> kFxaa3dMembers{&Fxaa3dParams::edgeThresholdMin,
                                                          &Fxaa3dParams::edgeThreshold, &Fxaa3dParams::subpix,
-                                                         &Fxaa3dParams::paperSearchQuirk};
+                                                         &Fxaa3dParams::paperSearchQuirk, &Fxaa3dParams::chromaWeight};
 
 constexpr ParamInfo kStrength{"strength", "", 3, 0, 100, ParamKind::Float,
                               "DDAA_STRENGTH: diffusion = min(1, strength * sqrt(|gradient|))"};
 constexpr ParamInfo kMaxDiff{"maxDiffusion", "px", 0.51, 0, 1, ParamKind::Float, "largest diffusion offset"};
 constexpr ParamInfo kRidge{"ridgeFactor", "", 10, 0, 1000, ParamKind::Float,
                            "small-structure preservation: ridges/valleys diffuse less"};
-constexpr std::array<ParamInfo, 5> kDdaa1Info{{kThrMin, kThr, kStrength, kMaxDiff, kRidge}};
-const std::array<Member<Ddaa1Params>, 5> kDdaa1Members{&Ddaa1Params::edgeThresholdMin, &Ddaa1Params::edgeThreshold,
-                                                       &Ddaa1Params::strength, &Ddaa1Params::maxDiffusion,
-                                                       &Ddaa1Params::ridgeFactor};
-constexpr std::array<ParamInfo, 6> kDdaa2Info{
+constexpr std::array<ParamInfo, 6> kDdaa1Info{{kThrMin, kThr, kStrength, kMaxDiff, kRidge, kChroma}};
+const std::array<Member<Ddaa1Params>, 6> kDdaa1Members{&Ddaa1Params::edgeThresholdMin, &Ddaa1Params::edgeThreshold,
+                                                       &Ddaa1Params::strength,         &Ddaa1Params::maxDiffusion,
+                                                       &Ddaa1Params::ridgeFactor,      &Ddaa1Params::chromaWeight};
+constexpr std::array<ParamInfo, 7> kDdaa2Info{
     {kThrMin, kThr, kStrength, kMaxDiff, kRidge,
-     {"searchRounds", "", 5, 1, 5, ParamKind::Int, "edge-search rounds of 3 pixels per side"}}};
-const std::array<Member<Ddaa2Params>, 6> kDdaa2Members{
+     {"searchRounds", "", 5, 1, 5, ParamKind::Int, "edge-search rounds of 3 pixels per side"}, kChroma}};
+const std::array<Member<Ddaa2Params>, 7> kDdaa2Members{
     &Ddaa2Params::edgeThresholdMin, &Ddaa2Params::edgeThreshold, &Ddaa2Params::strength,
-    &Ddaa2Params::maxDiffusion,     &Ddaa2Params::ridgeFactor,   &Ddaa2Params::searchRounds};
+    &Ddaa2Params::maxDiffusion,     &Ddaa2Params::ridgeFactor,   &Ddaa2Params::searchRounds,
+    &Ddaa2Params::chromaWeight};
 
 constexpr std::array<ParamInfo, 2> kMitchellInfo{{
     {"B", "", 1.0 / 3.0, 0, 1, ParamKind::Float, "Mitchell-Netravali B"},

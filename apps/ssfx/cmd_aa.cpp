@@ -10,15 +10,6 @@
 
 namespace ssfx::cli {
 
-namespace {
-
-struct AaOptions {
-    std::string method, input, output, preset, filtering = "gpu";
-    std::vector<std::string> params;
-    int threads = 0;
-    bool listPresets = false;
-};
-
 std::pair<std::string, double> parseParam(const std::string& text) {
     const auto eq = text.find('=');
     if (eq == std::string::npos || eq == 0)
@@ -32,6 +23,16 @@ std::pair<std::string, double> parseParam(const std::string& text) {
         throw Error(fmt::format("parameter {}: '{}' is not a number", name, value));
     return {name, v};
 }
+
+namespace {
+
+struct AaOptions {
+    std::string method, input, output, preset, filtering = "gpu";
+    std::vector<std::string> params;
+    int threads = 0;
+    bool listPresets = false;
+};
+
 
 void printPresets() {
     fmt::print("Edge-threshold presets of fxaa3c, fxaa3d, ddaa1, ddaa2, ddaa2p: a pixel is left unchanged\n"

@@ -29,7 +29,7 @@ void progressLine(const std::string& s) { std::fprintf(stderr, "eval: %s\n", s.c
 void addQuality(CLI::App& eval) {
     struct Options {
         std::string dir, json, markdown, source = "compute", outputs;
-        std::vector<std::string> methods, images;
+        std::vector<std::string> methods, images, params;
         int threads = 0;
     };
     auto o = std::make_shared<Options>();
@@ -46,6 +46,8 @@ void addQuality(CLI::App& eval) {
                                              "ddaa2p,noaa)")
         ->delimiter(',');
     cmd->add_option("--images", o->images, "Image rows (default: every NAME with NAMEx8.png in DIR)")->delimiter(',');
+    cmd->add_option("-p,--param", o->params,
+                    "NAME=VALUE for the methods that have parameter NAME (repeatable), e.g. -p chromaWeight=1");
     cmd->add_option("--threads", o->threads, "Worker threads (0 = all)")->check(CLI::Range(0, 1024));
     cmd->footer("Each method's 1x output (x2 render for ssaax2/ddaa2p, x4 for ssaax4) is upscaled x8 with the\n"
                 "Mitchell filter and compared with NAMEx8.png: PSNR = 10 log10(1 / MSE) over RGB in [0,1];\n"
@@ -54,6 +56,7 @@ void addQuality(CLI::App& eval) {
         eval::QualityOptions q;
         q.methods = o->methods;
         q.images = o->images;
+        for (const auto& text : o->params) q.settings.params.push_back(parseParam(text));
         q.source = o->source == "given" ? eval::OutputSource::Given : eval::OutputSource::Compute;
         q.outputsDir = o->outputs;
         if (!q.outputsDir.empty()) std::filesystem::create_directories(q.outputsDir);

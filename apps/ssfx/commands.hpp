@@ -3,7 +3,13 @@
 
 #include <CLI/CLI.hpp>
 
+#include <string>
+#include <utility>
+
 namespace ssfx::cli {
+
+//! Parses NAME=VALUE (VALUE a number, true or false) of -p options; throws ssfx::Error.
+std::pair<std::string, double> parseParam(const std::string& text);
 
 void addAaCommand(CLI::App& app);
 void addMethodsCommand(CLI::App& app);

@@ -26,6 +26,7 @@ void validateDdaa1(const char* method, const Ddaa1Params& p) {
     checkParam(method, "strength", p.strength, 0.0, 100.0);
     checkParam(method, "maxDiffusion", p.maxDiffusion, 0.0, 1.0);
     checkParam(method, "ridgeFactor", p.ridgeFactor, 0.0, 1000.0);
+    checkParam(method, "chromaWeight", p.chromaWeight, 0.0, 4.0);
 }
 
 namespace {
@@ -35,17 +36,19 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Ddaa1Params& p, 
     validateDdaa1("ddaa1", p);
     const Texture tex(in, p.filtering);
     ImageF fresh;
-    const ImageF& L = methodLumaPlane(in, reference, exec, fresh);
+    // The colour-aware measure (chromaWeight > 0) runs the scalar kernel, on all threads.
+    const bool scalar = reference || p.chromaWeight != 0.0f;
+    const ImageF& L = methodLumaPlane(in, scalar, exec, fresh, p.chromaWeight);
     auto pixel = [&](int x, int y, const Luma3x3& n, float) {
         const Diffusion d = diffusion(n, edgeSides(n), p);
         return diffuse(tex, x, y, d, p.maxDiffusion, 0.0f, 0.0f);
     };
     // The vector kernel across pixels covers the GPU filtering model (the default).
     auto rows = [&](int y, std::uint8_t* mask, const Rgba8* src, Rgba8* dst) {
-        if (p.filtering == Filtering::Gpu)
+        if (!scalar && p.filtering == Filtering::Gpu)
             HWY_DYNAMIC_DISPATCH(Ddaa1RowSimd)(tex, L, y, mask, p, src, dst);
     };
-    runLumaMethod(in, out, L, p.edgeThresholdMin, p.edgeThreshold, exec, reference, pixel, rows);
+    runLumaMethod(in, out, L, p.edgeThresholdMin, p.edgeThreshold, exec, scalar, pixel, rows);
 }
 }  // namespace
 }  // namespace detail

@@ -34,7 +34,8 @@ struct SideResult {
 
 // Offset across the edge, in pixels (signed: towards the steep side), from the distances
 // to both ends of the edge (FXAA 3.11 quality's span rule, without skipping).
-float edgeSearchOffset(const Texture& tex, int x, int y, const Luma3x3& n, const EdgeSides& s, int rounds) {
+float edgeSearchOffset(const Texture& tex, int x, int y, const Luma3x3& n, const EdgeSides& s, int rounds,
+                       float chromaWeight) {
     const bool steep2 = std::fabs(s.g2) > std::fabs(s.g1);  // ties go to side 1
     const float lumaSteep = steep2 ? s.luma2 : s.luma1;
     const float gradientScaled = 0.25f * maxf(std::fabs(s.g1), std::fabs(s.g2));
@@ -66,7 +67,7 @@ float edgeSearchOffset(const Texture& tex, int x, int y, const Luma3x3& n, const
     auto deltaAt = [&](const Texture::AxisPos& along, int texelOffset) {
         const Rgb c = s.horizontal ? tex.sample(along, acrossPos, texelOffset, 0)
                                    : tex.sample(acrossPos, along, 0, texelOffset);
-        return luma(c) - localAverage;
+        return edgeLuma(c, chromaWeight) - localAverage;
     };
     auto alongAxis = [&](float move) { return s.horizontal ? tex.axisU(cu + move) : tex.axisV(cv + move); };
 
@@ -150,20 +151,22 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Ddaa2Params& p, 
     validate(p);
     const Texture tex(in, p.filtering);
     ImageF fresh;
-    const ImageF& L = methodLumaPlane(in, reference, exec, fresh);
+    // The colour-aware measure (chromaWeight > 0) runs the scalar kernel, on all threads.
+    const bool scalar = reference || p.chromaWeight != 0.0f;
+    const ImageF& L = methodLumaPlane(in, scalar, exec, fresh, p.chromaWeight);
     // The vector kernel across pixels: GPU filtering model, and search reads provably equal
     // to pair-plane lookups for this size (else everything takes the scalar kernel).
-    const bool vector = !reference && p.filtering == Filtering::Gpu && searchReadsArePairReads(tex, p.searchRounds) &&
+    const bool vector = !scalar && p.filtering == Filtering::Gpu && searchReadsArePairReads(tex, p.searchRounds) &&
                         planesFitGatherIndices(in.width(), in.height());
     const LumaPlanes planes = vector ? scratchLumaPlanes(in, false, exec) : LumaPlanes{};
     auto rows = [&](int y, std::uint8_t* mask, const Rgba8* src, Rgba8* dst) {
         if (vector) HWY_DYNAMIC_DISPATCH(Ddaa2RowSimd)(tex, L, planes, y, mask, p, src, dst);
     };
-    runLumaMethod(in, out, L, p.edgeThresholdMin, p.edgeThreshold, exec, reference,
+    runLumaMethod(in, out, L, p.edgeThresholdMin, p.edgeThreshold, exec, scalar,
                   [&](int x, int y, const Luma3x3& n, float) {
                       const EdgeSides s = edgeSides(n);
                       Diffusion d = diffusion(n, s, p);
-                      const float offset = edgeSearchOffset(tex, x, y, n, s, p.searchRounds);
+                      const float offset = edgeSearchOffset(tex, x, y, n, s, p.searchRounds, p.chromaWeight);
                       // Combination (section 2.3): the search offset moves both diffusion
                       // reads, and a large offset (near an edge's end) weakens the diffusion.
                       const float edgeStrength = minf(1.0f, 2.0f * std::fabs(offset));

@@ -28,6 +28,7 @@ void validate(const Fxaa3cParams& p) {
     checkParam("fxaa3c", "edgeThreshold", p.edgeThreshold, 0.0, 1.0);
     checkParam("fxaa3c", "edgeSharpness", p.edgeSharpness, 1.0, 64.0);
     checkParam("fxaa3c", "diagonalOffset", p.diagonalOffset, 1e-3, 2.0);
+    checkParam("fxaa3c", "chromaWeight", p.chromaWeight, 0.0, 4.0);
 }
 
 void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Fxaa3cParams& p, const Exec& exec, bool reference) {
@@ -36,7 +37,9 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Fxaa3cParams& p,
     validate(p);
     const Texture tex(in, p.filtering);
     ImageF fresh;
-    const ImageF& L = methodLumaPlane(in, reference, exec, fresh);
+    // The colour-aware measure (chromaWeight > 0) runs the scalar kernel, on all threads.
+    const bool scalar = reference || p.chromaWeight != 0.0f;
+    const ImageF& L = methodLumaPlane(in, scalar, exec, fresh, p.chromaWeight);
     // At +-1 pixel the diagonal reads land on pixel centres, which return the pixel
     // (spec section 1): luma plane lookups.
     const bool centres = p.diagonalOffset == 1.0f;
@@ -46,7 +49,7 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Fxaa3cParams& p,
         const float u = tex.centreU(x), v = tex.centreV(y);
         auto diag = [&](int sx, int sy) {
             return centres ? L(std::clamp(x + sx, 0, in.width() - 1), std::clamp(y + sy, 0, in.height() - 1))
-                           : luma(tex.sample(u + float(sx) * du, v + float(sy) * dv));
+                           : edgeLuma(tex.sample(u + float(sx) * du, v + float(sy) * dv), p.chromaWeight);
         };
         const float lumaNW = diag(-1, -1), lumaSW = diag(-1, +1), lumaSE = diag(+1, +1);
         const float lumaNE = diag(+1, -1) + 1.0f / 384.0f;  // FXAA: keeps dir from being 0
@@ -75,13 +78,13 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Fxaa3cParams& p,
         const Rgb p2 = tex.sample(u + d2x * 2.0f * tex.invW(), v + d2y * 2.0f * tex.invH());
         const Rgb A = add(n1, p1);
         const Rgb B = add(scale(add(n2, p2), 0.25f), scale(A, 0.25f));
-        const float lumaB = luma(B);
+        const float lumaB = edgeLuma(B, p.chromaWeight);
         const Rgb result = (lumaB < lumaMin || lumaB > lumaMax) ? scale(A, 0.5f) : B;
         return toRgba8(result, m.a);
     };
     // The vector kernel across pixels covers the default (GPU model, diagonals at +-1 px);
     // the first pixel and the tail of each row take the scalar kernel.
-    const bool vector = !reference && centres && p.filtering == Filtering::Gpu;
+    const bool vector = !scalar && centres && p.filtering == Filtering::Gpu;
     parallelRows(in.height(), exec, [&](int y0, int y1) {
         for (int y = y0; y < y1; ++y) {
             Rgba8* row = out.row(y);

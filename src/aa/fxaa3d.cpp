@@ -90,7 +90,7 @@ Rgb fxaa3dPixel(const Texture& tex, int x, int y, const Luma3x3& n, float range,
     const Texture::AxisPos across = s.horizontal ? tex.axisV(bv) : tex.axisU(bu);
     auto walkLuma = [&](float wu, float wv) {
         const Rgb c = s.horizontal ? tex.sample(tex.axisU(wu), across, 0, 0) : tex.sample(across, tex.axisV(wv), 0, 0);
-        return luma(c) - localAverage;
+        return edgeLuma(c, p.chromaWeight) - localAverage;
     };
     float endN = walkLuma(nU, nV);
     float endP = walkLuma(pU, pV);
@@ -136,6 +136,7 @@ void validate(const Fxaa3dParams& p) {
     checkParam("fxaa3d", "edgeThresholdMin", p.edgeThresholdMin, 0.0, 1.0);
     checkParam("fxaa3d", "edgeThreshold", p.edgeThreshold, 0.0, 1.0);
     checkParam("fxaa3d", "subpix", p.subpix, 0.0, 1.0);
+    checkParam("fxaa3d", "chromaWeight", p.chromaWeight, 0.0, 4.0);
 }
 
 void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Fxaa3dParams& p, const Exec& exec, bool reference) {
@@ -144,17 +145,19 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Fxaa3dParams& p,
     validate(p);
     const Texture tex(in, p.filtering);
     ImageF fresh;
-    const ImageF& L = methodLumaPlane(in, reference, exec, fresh);
+    // The colour-aware measure (chromaWeight > 0) runs the scalar kernel, on all threads.
+    const bool scalar = reference || p.chromaWeight != 0.0f;
+    const ImageF& L = methodLumaPlane(in, scalar, exec, fresh, p.chromaWeight);
     // The vector kernel across pixels: GPU filtering model, and walk reads provably equal to
     // plane lookups for this size (else everything takes the scalar kernel).
-    const bool vector = !reference && p.filtering == Filtering::Gpu && walkReadsArePlaneReads(tex, p.paperSearchQuirk) &&
+    const bool vector = !scalar && p.filtering == Filtering::Gpu && walkReadsArePlaneReads(tex, p.paperSearchQuirk) &&
                         planesFitGatherIndices(in.width(), in.height());
     const LumaPlanes planes = vector ? scratchLumaPlanes(in, true, exec) : LumaPlanes{};
     auto rows = [&](int y, std::uint8_t* mask, const Rgba8* src, Rgba8* dst) {
         if (vector) HWY_DYNAMIC_DISPATCH(Fxaa3dRowSimd)(tex, L, planes, y, mask, p, src, dst);
     };
     runLumaMethod(
-        in, out, L, p.edgeThresholdMin, p.edgeThreshold, exec, reference,
+        in, out, L, p.edgeThresholdMin, p.edgeThreshold, exec, scalar,
         [&](int x, int y, const Luma3x3& n, float range) { return fxaa3dPixel(tex, x, y, n, range, p); }, rows);
 }
 

@@ -23,10 +23,12 @@ namespace ssfx::aa::detail {
 const ImageF& scratchLumaPlane(ImageView<const Rgba8> in, const Exec& exec);
 
 //! The luma plane a method's run uses: computed pixel by pixel into `fresh` for the
-//! reference path, else the SIMD plane in the per-thread scratch buffer.
-inline const ImageF& methodLumaPlane(ImageView<const Rgba8> in, bool reference, const Exec& exec, ImageF& fresh) {
-    if (!reference) return scratchLumaPlane(in, exec);
-    fresh = lumaPlaneReference(in);
+//! reference path, else the SIMD plane in the per-thread scratch buffer. A non-zero
+//! chromaWeight (colour-aware contrast) always takes the pixel-by-pixel plane.
+inline const ImageF& methodLumaPlane(ImageView<const Rgba8> in, bool reference, const Exec& exec, ImageF& fresh,
+                                     float chromaWeight = 0.0f) {
+    if (!reference && chromaWeight == 0.0f) return scratchLumaPlane(in, exec);
+    fresh = lumaPlaneReference(in, chromaWeight);
     return fresh;
 }
 

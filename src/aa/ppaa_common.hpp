@@ -123,13 +123,14 @@ void forEachPixel(ImageView<Rgba8> out, const Exec& exec, const Kernel& kernel) 
     });
 }
 
-//! Luma plane computed one pixel at a time (the scalar oracle of lumaPlane()).
-inline ImageF lumaPlaneReference(ImageView<const Rgba8> in) {
+//! Luma plane computed one pixel at a time (the scalar oracle of lumaPlane()); with a
+//! non-zero chromaWeight, the colour-aware edgeLuma() instead.
+inline ImageF lumaPlaneReference(ImageView<const Rgba8> in, float chromaWeight = 0.0f) {
     ImageF L(in.width(), in.height());
     for (int y = 0; y < in.height(); ++y)
         for (int x = 0; x < in.width(); ++x) {
             const Rgba8 p = in(x, y);
-            L(x, y) = luma(kUnorm8[p.r], kUnorm8[p.g], kUnorm8[p.b]);
+            L(x, y) = edgeLuma(Rgb{kUnorm8[p.r], kUnorm8[p.g], kUnorm8[p.b]}, chromaWeight);
         }
     return L;
 }

@@ -85,12 +85,32 @@ Score scoreAgainstX8(ImageView<const Rgba8> output1x, ImageView<const Rgba8> ref
     return {psnr(up.view(), reference8x, exec), ssim(up.view(), reference8x, exec)};
 }
 
+MethodSettings settingsFor(const MethodInfo& m, const MethodSettings& s) {
+    MethodSettings r;
+    r.filtering = s.filtering;
+    if (m.usesPresets) r.preset = s.preset;
+    for (const auto& [name, value] : s.params)
+        for (const ParamInfo& p : m.params)
+            if (p.name == name) r.params.emplace_back(name, value);
+    return r;
+}
+
+void checkSettingsApply(const std::vector<std::string>& methods, const MethodSettings& s) {
+    for (const auto& [name, value] : s.params) {
+        bool used = false;
+        for (const auto& id : methods)
+            for (const ParamInfo& p : methodById(id).params) used = used || p.name == name;
+        if (!used) throw Error(fmt::format("no chosen method has a parameter '{}'", name));
+    }
+}
+
 QualityTable evaluateQuality(const std::string& dir, const QualityOptions& o) {
     QualityTable t;
     t.images = o.images.empty() ? findRenderSets(dir) : o.images;
     if (t.images.empty()) throw Error(fmt::format("no renders in '{}' (need NAME.png and NAMEx8.png)", dir));
     t.methods = o.methods.empty() ? paperMethodOrder() : o.methods;
     for (const auto& id : t.methods) methodById(id);  // unknown ids fail before any work
+    checkSettingsApply(t.methods, o.settings);
     auto say = [&](const std::string& s) {
         if (o.progress) o.progress(s);
     };
@@ -128,7 +148,7 @@ QualityTable evaluateQuality(const std::string& dir, const QualityOptions& o) {
                     }
                     input = &s;
                 }
-                output = info.run(input->view(), o.settings, o.exec);
+                output = info.run(input->view(), settingsFor(info, o.settings), o.exec);
                 if (!o.outputsDir.empty())
                     io::writePng(pathIn(o.outputsDir, fmt::format("{}_{}.png", name, info.id)), output.view());
             }

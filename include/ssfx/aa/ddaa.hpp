@@ -17,6 +17,10 @@ struct Ddaa1Params {
     float strength = 3.0f;             //!< [0, 100] DDAA_STRENGTH: diffusion = min(1, strength*sqrt(|e|))
     float maxDiffusion = 0.51f;        //!< [0, 1] px; largest sample offset (paper Fig. 5: ~half a pixel)
     float ridgeFactor = 10.0f;         //!< [0, 1000] small-structure preservation (section 2.2)
+    //! [0, 4] opt-in colour-aware contrast (our extension, spec section 4): edges are found on
+    //! luma + chromaWeight * chroma (ssfx::edgeLuma) so equal-luma colours differ. 0 = the
+    //! paper's luma (default, outputs unchanged). Non-zero runs the scalar kernel.
+    float chromaWeight = 0.0f;
     Filtering filtering = Filtering::Gpu;
 };
 

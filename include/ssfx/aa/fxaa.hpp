@@ -16,6 +16,10 @@ struct Fxaa3cParams {
     float edgeThreshold = 0.166f;      //!< [0, 1] contrast relative to the local max luma
     float edgeSharpness = 8.0f;        //!< [1, 64] FXAA console sharpness: limits the long taps
     float diagonalOffset = 1.0f;       //!< (0, 2] px; 1 as in the DDAA paper, 0.5 in Lottes' shader
+    //! [0, 4] opt-in colour-aware contrast (our extension, spec section 4): edges are found on
+    //! luma + chromaWeight * chroma (ssfx::edgeLuma) so equal-luma colours differ. 0 = the
+    //! paper's luma (default, outputs unchanged). Non-zero runs the scalar kernel.
+    float chromaWeight = 0.0f;
     Filtering filtering = Filtering::Gpu;
 };
 
@@ -27,6 +31,10 @@ struct Fxaa3dParams {
     //! read (spec ppaa.md fxaa3d step 4). true reproduces the paper; false gives FXAA 3.11
     //! as Lottes wrote it.
     bool paperSearchQuirk = true;
+    //! [0, 4] opt-in colour-aware contrast (our extension, spec section 4): edges are found on
+    //! luma + chromaWeight * chroma (ssfx::edgeLuma) so equal-luma colours differ. 0 = the
+    //! paper's luma (default, outputs unchanged). Non-zero runs the scalar kernel.
+    float chromaWeight = 0.0f;
     Filtering filtering = Filtering::Gpu;
 };
 

@@ -19,6 +19,20 @@ inline float luma(float r, float g, float b) {
 }
 inline float luma(const Rgb& c) { return luma(c.r, c.g, c.b); }
 
+//! The opt-in colour-aware contrast measure of the luma-based PPAA methods (our extension
+//! for the limitation of spec ppaa.md section 4): luma plus `chromaWeight` times the
+//! chroma max(r,g,b) - min(r,g,b). Colours of equal luma but different saturation (the
+//! paper's green on grey) then differ; greys (chroma 0) keep their luma exactly, and with
+//! chromaWeight = 0 this is luma() bit for bit. Colours equal in both luma and chroma
+//! (hue changes at constant lightness and saturation) remain invisible.
+inline float edgeLuma(const Rgb& c, float chromaWeight) {
+    const float l = luma(c);
+    if (chromaWeight == 0.0f) return l;
+    const float hi = c.r > c.g ? (c.r > c.b ? c.r : c.b) : (c.g > c.b ? c.g : c.b);
+    const float lo = c.r < c.g ? (c.r < c.b ? c.r : c.b) : (c.g < c.b ? c.g : c.b);
+    return l + chromaWeight * (hi - lo);
+}
+
 //! Float in [0, 1] (clamped; NaN gives 0) to the nearest 8-bit level. The product v * 255
 //! is rounded exactly (in double, where it is exact), not after a float32 rounding: GPUs
 //! convert this way, and a float32 product turns values just below k + 0.5 into ties.

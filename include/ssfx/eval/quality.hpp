@@ -35,7 +35,9 @@ struct QualityOptions {
     std::vector<std::string> methods;  //!< ids in column order; empty = paperMethodOrder()
     std::vector<std::string> images;   //!< names; empty = findRenderSets(dir)
     OutputSource source = OutputSource::Compute;
-    MethodSettings settings;           //!< applied to every method (Compute)
+    //! Compute: preset and filtering apply to every method that accepts them; each named
+    //! parameter to the methods that have it (an error if no chosen method has it).
+    MethodSettings settings;
     std::string outputsDir;            //!< Compute: also write NAME_METHOD.png here when set
     Exec exec;
     std::function<void(const std::string&)> progress;  //!< one line per image and method
@@ -58,6 +60,11 @@ struct Score {
 Score scoreAgainstX8(ImageView<const Rgba8> output1x, ImageView<const Rgba8> reference8x, const Exec& exec = {});
 
 QualityTable evaluateQuality(const std::string& dir, const QualityOptions& options);
+
+//! The part of `settings` that applies to `method` (see QualityOptions::settings).
+MethodSettings settingsFor(const MethodInfo& method, const MethodSettings& settings);
+//! Throws ssfx::Error naming any parameter of `settings` that none of `methods` has.
+void checkSettingsApply(const std::vector<std::string>& methods, const MethodSettings& settings);
 
 //! {"psnr": {IMAGE: {METHOD: dB}}, "ssim": {...}, "mean": {"psnr": {...}, "ssim": {...}}};
 //! infinite PSNR is written as null.
