@@ -407,9 +407,9 @@ void writeReport(const ReportOptions& o) {
          "with the x8 render. PSNR over RGB in [0,1]; SSIM on non-overlapping 8x8 windows (one window per 1x pixel). "
          "Best per row in bold. <code>noaa</code> is the aliased input itself.</p>\n";
     h += "<h3>PSNR (dB)</h3>\n" + htmlTable(rowsWithMean(quality.images), quality.methods, withMean(quality, true), 3, true);
-    h += "<img class=\"plot\" src=\"plots/psnr.png\" alt=\"PSNR per image and method\">\n";
+    h += "<img class=\"plot\" width=\"880\" height=\"400\" src=\"plots/psnr.png\" alt=\"PSNR per image and method\">\n";
     h += "<h3>SSIM</h3>\n" + htmlTable(rowsWithMean(quality.images), quality.methods, withMean(quality, false), 4, true);
-    h += "<img class=\"plot\" src=\"plots/ssim.png\" alt=\"SSIM per image and method\">\n";
+    h += "<img class=\"plot\" width=\"880\" height=\"400\" src=\"plots/ssim.png\" alt=\"SSIM per image and method\">\n";
     h += reproduction;
     h += colourSection;
 
@@ -439,7 +439,7 @@ void writeReport(const ReportOptions& o) {
         }
         h += htmlTable(names, {"flicker (levels)", "tPSNR (dB)", "PSNR (dB)"}, rows, 3, false, "method");
     }
-    h += "<img class=\"plot\" src=\"plots/flicker.png\" alt=\"flicker per method\">\n<div class=\"anims\">\n";
+    h += "<img class=\"plot\" width=\"880\" height=\"360\" src=\"plots/flicker.png\" alt=\"flicker per method\">\n<div class=\"anims\">\n";
     h += "<figure><img src=\"anim/animated_reference.png\" alt=\"reference animation\"><figcaption>reference (x8 "
          "resolved)</figcaption></figure>\n";
     for (const auto& r : temporal.results)
@@ -469,7 +469,7 @@ void writeReport(const ReportOptions& o) {
         h += "<h3>Relative to blur = 100</h3>\n" + htmlTable(speed.images, speed.methods, rel, 0, false);
         h += "<h3>Median (ms)</h3>\n" + htmlTable(speed.images, speed.methods, med, 3, false);
     }
-    h += "<img class=\"plot\" src=\"plots/speed.png\" alt=\"speed relative to blur\">\n";
+    h += "<img class=\"plot\" width=\"880\" height=\"400\" src=\"plots/speed.png\" alt=\"speed relative to blur\">\n";
 
     h += "<h2>Kernel experiment (the paper's Figure 3)</h2>\n<p class=\"note\">Angle of aliased lines (widths 1, 2 "
          "and 4 px, 0 to 90 degrees) estimated from the gradient at the pixels a PPAA method processes; error in "
@@ -482,7 +482,7 @@ void writeReport(const ReportOptions& o) {
         h += htmlTable(kernels.kernels, {"mean error, aliased", "max per-angle mean, aliased", "mean error, 4x4 coverage"},
                        rows, 3, false, "kernel");
     }
-    h += "<img class=\"plot\" src=\"plots/kernels.png\" alt=\"angle error per kernel\">\n";
+    h += "<img class=\"plot\" width=\"880\" height=\"400\" src=\"plots/kernels.png\" alt=\"angle error per kernel\">\n";
     h += fmt::format("<p class=\"note\">Written by ssfx 0.1.0. Tables as Markdown: <a href=\"data/quality.md\">quality"
                      "</a>, <a href=\"data/temporal.md\">temporal</a>, <a href=\"data/speed.md\">speed</a>.</p>\n");
     h += "<script>" + std::string(detail::kReportJs) + "</script>\n</body></html>\n";

@@ -21,7 +21,7 @@ th, td { border: 1px solid #ccc; padding: 3px 8px; text-align: right; }
 th:first-child, td:first-child { text-align: left; }
 td.best { font-weight: bold; background: #e8f4e8; }
 .note { color: #444; font-size: 14px; max-width: 900px; }
-img.plot { max-width: 100%; border: 1px solid #eee; }
+img.plot { max-width: 100%; height: auto; border: 1px solid #eee; }
 .viewer { border: 1px solid #ccc; padding: 8px; margin: 12px 0 24px; }
 .viewer .controls { display: flex; flex-wrap: wrap; gap: 4px; align-items: center; margin-bottom: 8px; }
 .viewer .controls span { margin: 0 4px 0 12px; font-size: 13px; color: #555; }
@@ -30,7 +30,7 @@ img.plot { max-width: 100%; border: 1px solid #eee; }
 .viewer button[aria-pressed="true"] { background: #2a5db0; color: #fff; border-color: #2a5db0; }
 .viewer .panes { display: flex; flex-wrap: wrap; gap: 8px; }
 .viewer .pane { border: 1px solid #bbb; }
-.viewer .pane .label { font-size: 12px; padding: 2px 6px; background: #eee; }
+.viewer .pane .label { font-size: 12px; height: 18px; line-height: 18px; padding: 0 6px; background: #eee; overflow: hidden; }
 .viewer .scroll { overflow: auto; width: var(--pane-w); height: var(--pane-h); cursor: grab; background: #888; }
 .viewer .scroll img { display: block; image-rendering: pixelated; image-rendering: crisp-edges; max-width: none; }
 .anims { display: flex; flex-wrap: wrap; gap: 12px; }
@@ -99,7 +99,19 @@ function initViewer(v) {
         if (drag) { scroll.scrollLeft = drag.l - (e.clientX - drag.x); scroll.scrollTop = drag.t - (e.clientY - drag.y); }
       });
     }
+    snap();
   }
+  // Crisp pixels need the panes on whole device pixels: text above may leave the viewer at a
+  // fractional offset, which would resample every image pixel. Shift the panes to snap.
+  function snap() {
+    panes.style.marginLeft = panes.style.marginTop = "0px";
+    const r = panes.getBoundingClientRect(), dpr = window.devicePixelRatio || 1;
+    const fx = (r.left + window.scrollX) * dpr, fy = (r.top + window.scrollY) * dpr;
+    panes.style.marginLeft = (Math.ceil(fx - 1e-6) - fx) / dpr + "px";
+    panes.style.marginTop = (Math.ceil(fy - 1e-6) - fy) / dpr + "px";
+  }
+  window.addEventListener("load", snap);
+  window.addEventListener("resize", snap);
   function setZoom(z) {
     // Keep the centre of the view where it is.
     const cx = (state.x + paneW / 2) / state.zoom, cy = (state.y + paneH / 2) / state.zoom;

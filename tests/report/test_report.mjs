@@ -10,6 +10,7 @@ import path from "node:path";
 import zlib from "node:zlib";
 
 const dir = path.resolve(process.argv[2]);
+const debug = process.env.SSFX_REPORT_DEBUG;
 let failures = 0;
 function check(ok, what) {
   console.log(`${ok ? "ok  " : "FAIL"} ${what}`);
@@ -102,6 +103,15 @@ async function paneShot(zoom, expectMethod) {
   const view = await scroll.evaluate(s => ({ w: s.clientWidth, h: s.clientHeight, left: s.scrollLeft, top: s.scrollTop }));
   const shot = decodePng(await scroll.screenshot());
   const img = decodePng(fs.readFileSync(path.join(dir, "images", `lines_${expectMethod}.png`)));
+  if (debug) {
+    let first = null;
+    for (let y = 0; y < view.h && !first; y++) for (let x = 0; x < view.w && !first; x++) {
+      const ix = Math.floor((view.left + x) / zoom), iy = Math.floor((view.top + y) / zoom);
+      const s = (y * shot.width + x) * 4, i = (iy * img.width + ix) * 4;
+      if (Math.abs(shot.px[s] - img.px[i]) > 1) first = [x, y, shot.px[s], img.px[i]];
+    }
+    console.log(JSON.stringify({ view, shotW: shot.width, shotH: shot.height, first }));
+  }
   return { method, share: matchShare(shot, img, view, zoom), view, shot };
 }
 
