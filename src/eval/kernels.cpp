@@ -74,7 +74,9 @@ KernelExperiment runKernelExperiment(const KernelExperimentOptions& o) {
     const int n = o.size, ss = o.supersample;
     const bool edge = o.shape == KernelExperimentOptions::Shape::Edge;
     const double c = n / 2.0, reach = n / 2.0 - 8;
-    const double offsets[][2] = {{0, 0}, {0.25, 0.1}, {0.5, 0.37}, {0.13, 0.71}};
+    // Sub-pixel placements of the line; none dyadic, so that no pixel centre lies exactly on
+    // the line's border (where the rounding of sin/cos would decide, e.g. at 90 degrees).
+    const double offsets[][2] = {{0.0137, 0.0291}, {0.2637, 0.1291}, {0.5137, 0.3791}, {0.1437, 0.7091}};
     std::vector<double> img(std::size_t(n * n));
     for (std::size_t a = 0; a < e.angles.size(); ++a) {
         const double th = e.angles[a] * kPi / 180;

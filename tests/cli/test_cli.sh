@@ -18,7 +18,10 @@ contains() {  # contains NAME FILE TEXT
 }
 
 check help 0 "$SSFX" --help
-for c in aa methods bench testscene; do check "help_$c" 0 "$SSFX" "$c" --help; done
+for c in aa methods bench testscene testimages eval; do check "help_$c" 0 "$SSFX" "$c" --help; done
+for c in quality temporal speed kernels report; do check "help_eval_$c" 0 "$SSFX" eval "$c" --help; done
+contains help_eval_quality "$OUT/help_eval_quality.out" "Mitchell"
+contains help_eval_temporal "$OUT/help_eval_temporal.out" "flicker"
 contains help_aa "$OUT/help_aa.out" "ddaa2"
 check methods 0 "$SSFX" methods
 contains methods "$OUT/methods.out" "searchRounds"
@@ -70,6 +73,28 @@ contains range "$OUT/range.err" "strength"
 check odd 2 "$SSFX" aa -m ssaax2 "$OUT/trunc.png" -o "$OUT/o.png"
 check usage 2 "$SSFX" aa --threads=-3
 check nocmd 2 "$SSFX"
+
+# The evaluation harness on a small scale: test images, quality table with JSON and
+# Markdown, a parameter for the methods that have it, kernels; and its errors.
+check testimages 0 "$SSFX" testimages --out "$OUT/ti" --images circles --scales 1,2,4,8
+for f in circles circlesx2 circlesx4 circlesx8; do [ -s "$OUT/ti/$f.png" ] || { echo "FAIL testimages: no $f.png"; fail=1; }; done
+check quality 0 "$SSFX" eval quality "$OUT/ti" --methods noaa,ddaa2,ssaax2 --json "$OUT/q.json" --md "$OUT/q.md"
+contains quality "$OUT/q.json" '"circles"'
+contains quality "$OUT/q.md" "| circles |"
+check quality_param 0 "$SSFX" eval quality "$OUT/ti" --methods noaa,ddaa2 -p chromaWeight=0.5
+check quality_badparam 2 "$SSFX" eval quality "$OUT/ti" --methods noaa,blur -p chromaWeight=0.5
+contains quality_badparam "$OUT/quality_badparam.err" "chromaWeight"
+check quality_nodir 2 "$SSFX" eval quality "$OUT/nonexistent"
+contains quality_nodir "$OUT/quality_nodir.err" "not a directory"
+check quality_empty 2 "$SSFX" eval quality "$OUT/scene"
+contains quality_empty "$OUT/quality_empty.err" "no renders"
+check quality_given 0 "$SSFX" eval quality "$OUT/ti" --source given --methods ddaa2
+check kernels 0 "$SSFX" eval kernels --step 10 --widths 1,2 --json "$OUT/k.json"
+contains kernels "$OUT/kernels.out" "scharr"
+check kernels_width 2 "$SSFX" eval kernels --widths 0
+check testimages_bad 2 "$SSFX" testimages --out "$OUT/ti2" --images nope
+contains testimages_bad "$OUT/testimages_bad.err" "unknown test image"
+check eval_nosub 2 "$SSFX" eval
 
 # An existing output survives a failed run untouched.
 cp "$OUT/ddaa2.png" "$OUT/keep.png"
