@@ -1,17 +1,20 @@
 #!/usr/bin/env bash
-# The demo job: draw the synthetic test scene at 1x/2x/4x, anti-alias it with every method,
-# and time them (Table 3 layout). Outputs land in $2.
+# The demo job: the whole evaluation (ssfx eval report) -> $2/index.html. With the DDAA
+# author's data beside the checkout (../shared/reference/ppaa), the report also reproduces
+# the paper's rows from it.
 set -euo pipefail
 SSFX=$1
 OUT=$2
-"$SSFX" testscene --out "$OUT"
-for m in $("$SSFX" methods --ids); do
-  case $m in
-    ssaax2|ddaa2p) in="$OUT/scenex2.png" ;;
-    ssaax4) in="$OUT/scenex4.png" ;;
-    *) in="$OUT/scene.png" ;;
-  esac
-  "$SSFX" aa -m "$m" "$in" -o "$OUT/scene_$m.png"
-done
-echo "demo: wrote $(ls "$OUT" | wc -l) images to $OUT"
-"$SSFX" bench --reps 20 --json "$OUT/bench.json"
+ROOT=$(cd "$(dirname "$0")/.." && pwd)
+REF="$ROOT/../shared/reference/ppaa"
+args=(eval report --out "$OUT")
+if [ -d "$REF" ]; then args+=(--reference "$REF"); else echo "demo: $REF absent, the paper's rows are left out" >&2; fi
+"$SSFX" "${args[@]}"
+echo
+echo "Quality (PSNR, x8 upscale vs x8 render; the paper's Table 2 protocol):"
+awk 'NR > 2 { if ($0 == "") exit; print }' "$OUT/data/quality.md"
+echo
+echo "Flicker on 'animated' (lower is steadier):"
+cat "$OUT/data/temporal.md"
+echo
+echo "demo: open $OUT/index.html"
