@@ -95,6 +95,9 @@ check kernels_width 2 "$SSFX" eval kernels --widths 0
 check testimages_bad 2 "$SSFX" testimages --out "$OUT/ti2" --images nope
 contains testimages_bad "$OUT/testimages_bad.err" "unknown test image"
 check eval_nosub 2 "$SSFX" eval
+mkdir -p "$OUT/badset" && cp "$OUT/trunc.png" "$OUT/badset/c.png" && cp "$OUT/ti/circlesx8.png" "$OUT/badset/cx8.png"
+check quality_corrupt 2 "$SSFX" eval quality "$OUT/badset" --methods noaa
+contains quality_corrupt "$OUT/quality_corrupt.err" "c.png"
 
 # An existing output survives a failed run untouched.
 cp "$OUT/ddaa2.png" "$OUT/keep.png"
