@@ -9,6 +9,7 @@
 #include <limits>
 #include <memory>
 
+#include "cairo_image.hpp"
 #include "ssfx/core/error.hpp"
 
 namespace ssfx::eval {
@@ -30,19 +31,7 @@ struct Surface {
         cairo_paint(cr.get());
         cairo_select_font_face(cr.get(), "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
     }
-    ImageRgba8 image() {
-        cairo_surface_flush(s.get());
-        const int w = cairo_image_surface_get_width(s.get()), h = cairo_image_surface_get_height(s.get());
-        const int stride = cairo_image_surface_get_stride(s.get());
-        const unsigned char* d = cairo_image_surface_get_data(s.get());
-        ImageRgba8 out(w, h);
-        for (int y = 0; y < h; ++y) {
-            const auto* row = reinterpret_cast<const std::uint32_t*>(d + std::ptrdiff_t(y) * stride);
-            for (int x = 0; x < w; ++x)
-                out(x, y) = {std::uint8_t(row[x] >> 16), std::uint8_t(row[x] >> 8), std::uint8_t(row[x]), 255};
-        }
-        return out;
-    }
+    ImageRgba8 image() { return detail::imageFromCairo(s.get()); }
 };
 
 void text(cairo_t* cr, double x, double y, const std::string& s, double size, double alignX, bool bold = false) {
@@ -139,20 +128,32 @@ void checkStyle(const ChartStyle& st) {
         throw Error(fmt::format("chart size {}x{} is not in [200, 4000] x [150, 4000]", st.width, st.height));
 }
 
+// The parts every chart shares: validated sizes, a white surface, the plot area, the value
+// axis with its grid and labels, the title.
+struct Chart {
+    Surface sf;
+    double left, right, top, bottom;
+    Axis ax;
+    Chart(const ChartStyle& st, const std::vector<Series>& series, std::size_t valuesPerSeries, const char* unit)
+        : sf((checkStyle(st), st.width), st.height),
+          left(64), right(st.width - 110), top(36), bottom(st.height - 48),
+          ax(valueAxis(series, st, top, bottom)) {
+        for (const auto& s : series)
+            if (s.values.size() != valuesPerSeries)
+                throw Error(fmt::format("chart: series '{}' has {} values for {} {}", s.name, s.values.size(),
+                                        valuesPerSeries, unit));
+        frame(sf.cr.get(), st, ax, left, right);
+    }
+};
+
 }  // namespace
 
 ImageRgba8 groupedBarChart(const std::vector<std::string>& categories, const std::vector<Series>& series,
                            const ChartStyle& st) {
-    checkStyle(st);
-    for (const auto& s : series)
-        if (s.values.size() != categories.size())
-            throw Error(fmt::format("chart: series '{}' has {} values for {} categories", s.name, s.values.size(),
-                                    categories.size()));
-    Surface sf(st.width, st.height);
-    cairo_t* cr = sf.cr.get();
-    const double left = 64, right = st.width - 110, top = 36, bottom = st.height - 48;
-    const Axis ax = valueAxis(series, st, top, bottom);
-    frame(cr, st, ax, left, right);
+    Chart ch(st, series, categories.size(), "categories");
+    cairo_t* cr = ch.sf.cr.get();
+    const double left = ch.left, right = ch.right, top = ch.top, bottom = ch.bottom;
+    const Axis& ax = ch.ax;
     const double groupW = (right - left) / double(std::max<std::size_t>(1, categories.size()));
     const double barW = groupW * 0.8 / double(std::max<std::size_t>(1, series.size()));
     for (std::size_t g = 0; g < categories.size(); ++g) {
@@ -170,21 +171,15 @@ ImageRgba8 groupedBarChart(const std::vector<std::string>& categories, const std
         text(cr, gx + groupW * 0.4, bottom + 16, categories[g], 12, 0.5);
     }
     legend(cr, series, right + 12, top + 4);
-    return sf.image();
+    return ch.sf.image();
 }
 
 ImageRgba8 lineChart(const std::vector<double>& x, const std::vector<Series>& series, const ChartStyle& st) {
-    checkStyle(st);
     if (x.size() < 2) throw Error("chart: a line chart needs at least two x values");
-    for (const auto& s : series)
-        if (s.values.size() != x.size())
-            throw Error(fmt::format("chart: series '{}' has {} values for {} x values", s.name, s.values.size(),
-                                    x.size()));
-    Surface sf(st.width, st.height);
-    cairo_t* cr = sf.cr.get();
-    const double left = 64, right = st.width - 110, top = 36, bottom = st.height - 48;
-    const Axis ax = valueAxis(series, st, top, bottom);
-    frame(cr, st, ax, left, right);
+    Chart ch(st, series, x.size(), "x values");
+    cairo_t* cr = ch.sf.cr.get();
+    const double left = ch.left, right = ch.right, bottom = ch.bottom;
+    const Axis& ax = ch.ax;
     const double x0 = x.front(), x1 = x.back();
     auto mapX = [&](double v) { return left + (v - x0) / (x1 - x0) * (right - left); };
     cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
@@ -210,8 +205,8 @@ ImageRgba8 lineChart(const std::vector<double>& x, const std::vector<Series>& se
         }
         cairo_stroke(cr);
     }
-    legend(cr, series, right + 12, top + 4);
-    return sf.image();
+    legend(cr, series, right + 12, ch.top + 4);
+    return ch.sf.image();
 }
 
 }  // namespace ssfx::eval

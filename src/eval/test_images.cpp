@@ -13,6 +13,7 @@
 #include <numbers>
 #include <string>
 
+#include "cairo_image.hpp"
 #include "ssfx/core/error.hpp"
 
 namespace ssfx::eval {
@@ -93,23 +94,7 @@ public:
         cairo_show_text(cr(), s.c_str());
     }
 
-    ImageRgba8 image() const {
-        cairo_surface_flush(surface_.get());
-        const int w = cairo_image_surface_get_width(surface_.get());
-        const int h = cairo_image_surface_get_height(surface_.get());
-        const int stride = cairo_image_surface_get_stride(surface_.get());
-        const unsigned char* data = cairo_image_surface_get_data(surface_.get());
-        ImageRgba8 out(w, h);
-        for (int y = 0; y < h; ++y) {
-            // CAIRO_FORMAT_RGB24: one native-endian uint32 per pixel, 0x00RRGGBB.
-            const auto* row = reinterpret_cast<const std::uint32_t*>(data + std::ptrdiff_t(y) * stride);
-            for (int x = 0; x < w; ++x) {
-                const std::uint32_t p = row[x];
-                out(x, y) = {std::uint8_t(p >> 16), std::uint8_t(p >> 8), std::uint8_t(p), 255};
-            }
-        }
-        return out;
-    }
+    ImageRgba8 image() const { return detail::imageFromCairo(surface_.get()); }
 
 private:
     struct SurfaceDel {
