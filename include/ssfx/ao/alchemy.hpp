@@ -1,0 +1,37 @@
+// The AlchemyAO baseline (McGuire, Osman, Bukowski, Hennessy, "The Alchemy Screen-Space
+// Ambient Obscurance Algorithm", HPG 2011), as SAO's paper compares against it (spec
+// sao.md "Baseline"): position and normal from the same depth buffer, but *no* z pyramid
+// (every tap reads full resolution, so its cost grows with the radius), s = 12 taps on the
+// same spiral, the original estimator (SAO paper eq. 1)
+//   A = max(0, 1 - (2 sigma / s) * sum max(0, v.n + z_C beta) / (v.v + epsilon))^k,
+// and the same separable bilateral blur (no 2x2 quad pass, which is SAO's).
+#pragma once
+
+#include "ssfx/ao/depth.hpp"
+#include "ssfx/ao/sao.hpp"
+
+namespace ssfx::ao {
+
+struct AlchemyParams {
+    float radius = 1.0f;     //!< (0, 100] m: world-space sample radius
+    float sigma = 1.0f;      //!< [0, 100]: sigma, intensity scale ("chosen for aesthetics")
+    float beta = 1e-4f;      //!< [0, 1]: bias per metre of depth (z_C beta), AlchemyAO's 10^-4
+    float epsilon = 1e-4f;   //!< (0, 1] m^2: AlchemyAO's 0.0001
+    float k = 1.0f;          //!< [0, 10]: contrast exponent
+    int numSamples = 12;     //!< [1, 64]: s (AlchemyAO: 12)
+    int numSpiralTurns = 5;  //!< [1, 64]: spiralTurnsFor(12)
+    BlurParams blur;
+    int guardBand = 0;       //!< [0, 4096] px on each side not output
+};
+
+void validate(const AlchemyParams& p);
+
+//! The raw sample pass over `region` of the z buffer (before the blur).
+ImageF alchemySamplePass(ImageView<const float> z, const Projection& proj, Region region, const AlchemyParams& p,
+                         const Exec& exec = {});
+
+//! The whole baseline: depth (guard band included) -> A for the inner region.
+ImageF alchemy(ImageView<const float> depth, const Camera& camera, const AlchemyParams& params = {},
+               const Exec& exec = {});
+
+}  // namespace ssfx::ao

@@ -1,0 +1,70 @@
+// Depth buffer -> camera-space z and the z pyramid of Scalable Ambient Obscurance
+// (McGuire, Mara, Luebke, "Scalable Ambient Obscurance", HPG 2012, sections 2.1-2.2;
+// spec sao.md "Passes" 1-2).
+//
+// Conventions (spec sao.md): camera space is right-handed and the camera looks down -z,
+// so visible points have z < 0; zNear and zFar are negative (zFar = -infinity allowed).
+// Hardware depth d is in [0, 1], 0 at the near plane. Pixel (x, y) has its centre at
+// (x + 0.5, y + 0.5), y down. Sky (d = 1 with an infinite far plane) becomes z = -infinity
+// and every later pass treats it as "nothing there".
+#pragma once
+
+#include <cmath>
+#include <vector>
+
+#include "ssfx/core/image.hpp"
+#include "ssfx/core/parallel.hpp"
+
+namespace ssfx::ao {
+
+//! A symmetric perspective camera for the *whole* depth buffer (guard band included).
+struct Camera {
+    double zNear = -0.1;                   //!< m, < 0: the near plane
+    double zFar = -INFINITY;               //!< m, < zNear, or -infinity (infinite far plane)
+    double fovY = 1.0471975511965976;      //!< rad, (0, pi): vertical field of view (default 60 deg)
+};
+
+//! What the passes need from a camera and a buffer size, derived once.
+struct Projection {
+    double c0, c1, c2;  //!< z(d) = c0 / (d * c1 + c2) (paper eq. 2)
+    float p00, p11;    //!< projection matrix P[0][0], P[1][1] (OpenGL convention)
+    int width, height;
+    float pixelsPerMeter;  //!< S: pixel size of a 1 m object at z = -1 m, h / (2 tan(fovY / 2)) (eq. 5)
+};
+
+//! Throws ssfx::Error for a camera that is not as documented or a non-positive size.
+Projection projection(const Camera& camera, int width, int height);
+
+//! Camera-space position of the point with depth z at (fractional) pixel position (px, py)
+//! (paper eq. 3 with y down): x = z / P00 * (1 - 2 px / w), y = z / P11 * (2 py / h - 1).
+struct Vec3 {
+    float x, y, z;
+};
+inline Vec3 reconstructPosition(const Projection& p, float px, float py, float z) {
+    return {z / p.p00 * (1.0f - 2.0f * px / float(p.width)), z / p.p11 * (2.0f * py / float(p.height) - 1.0f), z};
+}
+
+//! Pass 1: hardware depth -> camera-space z (float32). Evaluated in double and rounded
+//! once, so z is the correctly rounded value for the stored depth: what remains is the
+//! depth format's own precision (the Figure 3 experiment), not the arithmetic's. Throws
+//! ssfx::Error naming the pixel for a depth that is NaN, infinite or outside [0, 1].
+ImageF depthToZ(ImageView<const float> depth, const Camera& camera, const Exec& exec = {});
+
+//! The inverse, for tests and synthetic buffers: the depth a point at camera-space z gets.
+double zToDepth(double z, const Camera& camera);
+
+//! Pass 2 filters: the paper's default and its Table 1 alternatives.
+enum class PyramidFilter {
+    RotatedGrid,   //!< level m+1 (x, y) = level m (2x + (y & 1), 2y + (x & 1)): a real scene value
+    Mean,          //!< arithmetic mean of the 2x2 block
+    HarmonicMean,  //!< 4 / sum(1 / z)
+    Min,           //!< most negative z of the block (farthest)
+    Max,           //!< least negative z (nearest)
+};
+
+//! Levels 0..maxMip: level 0 is `z`, each next level half the size (rounding down, at
+//! least 1). Reads beyond the previous level's edge are clamped.
+std::vector<ImageF> zPyramid(ImageView<const float> z, int maxMip, PyramidFilter filter = PyramidFilter::RotatedGrid,
+                             const Exec& exec = {});
+
+}  // namespace ssfx::ao

@@ -1,0 +1,91 @@
+// Scalable Ambient Obscurance (McGuire, Mara, Luebke, HPG 2012; spec sao.md), on the CPU.
+//
+// Pipeline: depth -> camera-space z (depth.hpp) -> z pyramid -> AO sample pass (spiral
+// taps with a per-pixel hash rotation, a pyramid level per tap, the paper's updated
+// falloff, 2x2 quad bilateral) -> two separable bilateral passes. The depth buffer may be
+// larger than the output by a guard band of g pixels on each side (section 2.5): the
+// guard band's geometry occludes, only the inner region is computed and returned.
+// Output: ambient visibility A in [0, 1] (1 = unoccluded; sky stays 1).
+//
+// Every pass is a separate function so that the experiments and tests can look at each;
+// sao() runs them all. Float32 arithmetic as a shader would do; rows in parallel, the
+// same bytes for any thread count.
+#pragma once
+
+#include <vector>
+
+#include "ssfx/ao/depth.hpp"
+#include "ssfx/core/image.hpp"
+#include "ssfx/core/parallel.hpp"
+
+namespace ssfx::ao {
+
+//! Where the sample pass and blur run: the inner region of the buffer.
+struct Region {
+    int x0 = 0, y0 = 0, width = 0, height = 0;
+};
+
+//! The separable bilateral reconstruction (section 2.4); shared with the baseline.
+struct BlurParams {
+    int blurRadius = 3;           //!< [0, 8] taps on each side (the paper's 7-tap filter)
+    int blurStride = 3;           //!< [1, 8] px between taps (the 2x2 pass already averaged)
+    float blurSigma = 2.0f;       //!< (0, 16] Gaussian sigma in taps (the paper gives none; our choice)
+    //! [0, 1e6] 1/m: a tap's weight is multiplied by max(0, 1 - edgeSharpness * |z_tap - z|).
+    //! The paper's 2^11 on its key z / (-200 m) is 2048 / 200 = 10.24 per metre.
+    float edgeSharpness = 10.24f;
+};
+
+struct SaoParams {
+    float radius = 1.0f;        //!< (0, 100] m: world-space sample radius r
+    float bias = 0.01f;         //!< [0, 1] m: beta, ignores tiny occluders from depth precision
+    float epsilon = 0.01f;      //!< (0, 1] m^2: keeps the falloff finite as v.v -> 0
+    float intensity = 1.0f;     //!< [0, 10]: A is raised to this power
+    int numSamples = 9;         //!< [1, 64]: s (paper: 9)
+    int numSpiralTurns = 7;     //!< [1, 64]: tau (paper: 7 for s = 9; see spiralTurnsFor())
+    int logQ = 3;               //!< [0, 8]: log2 q', the mip-level switch distance (2^3..2^5 equivalent)
+    int maxMip = 5;             //!< [0, 16]: MAX_MIP, pyramid levels above 0
+    bool usePyramid = true;     //!< false: every tap reads level 0 ("SAO without pyramid", Fig. 5)
+    PyramidFilter pyramidFilter = PyramidFilter::RotatedGrid;
+    float quadThreshold = 0.02f;  //!< [0, 10] m: 2x2 bilateral averages where |dz| is below this
+    BlurParams blur;
+    int guardBand = 0;          //!< [0, 4096] px on each side of the depth buffer not output
+};
+
+//! The discrepancy-minimising number of spiral turns for s samples (s = 1..30; spec sao.md);
+//! the paper's default pairs s = 9 with tau = 7 instead.
+int spiralTurnsFor(int numSamples);
+
+//! AlchemyAO's per-pixel rotation angle (paper eq. 8, the released code's form):
+//! phi = 10 * float((3 x) ^ (y + x y)) radians, with C operator precedence.
+float hashAngle(int x, int y);
+
+//! Throws ssfx::Error naming the first out-of-range field.
+void validate(const SaoParams& p);
+
+//! The raw AO sample pass over `region` of the z buffer (the pyramid's level 0): A per
+//! pixel of the region, before any filtering. Pixels whose normal cannot be formed (a
+//! sky neighbour in their quad) and sky pixels get A = 1.
+ImageF saoSamplePass(const std::vector<ImageF>& pyramid, const Projection& proj, Region region, const SaoParams& p,
+                     const Exec& exec = {});
+
+//! The 2x2 quad bilateral (end of section 2.3): within each 2x2 quad of the *buffer* grid,
+//! where |dz| < threshold, A is averaged over the pair in x, then in y. In place.
+void quadBilateral(ImageF& a, ImageView<const float> z, Region region, float threshold);
+
+//! One separable bilateral pass (horizontal or vertical) over the region; taps are clamped
+//! to the region, sky pixels stay 1 and do not contribute.
+ImageF bilateralPass(const ImageF& a, ImageView<const float> z, Region region, const BlurParams& p, bool horizontal,
+                     const Exec& exec = {});
+
+//! The whole pipeline: `depth` (hardware depth in [0, 1], guard band included), the camera
+//! of the whole buffer. Returns A for the inner region (size minus 2 * guardBand).
+ImageF sao(ImageView<const float> depth, const Camera& camera, const SaoParams& params = {}, const Exec& exec = {});
+
+//! Per-pass timings of one sao() run, for the speed experiments (milliseconds).
+struct SaoTimings {
+    double z, pyramid, sample, blur, total;
+};
+ImageF sao(ImageView<const float> depth, const Camera& camera, const SaoParams& params, const Exec& exec,
+           SaoTimings* timings);
+
+}  // namespace ssfx::ao

@@ -1,0 +1,70 @@
+// The AlchemyAO baseline (see alchemy.hpp).
+#include "ssfx/ao/alchemy.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "ao_sampling.hpp"
+#include "ssfx/core/error.hpp"
+
+namespace ssfx::ao {
+
+namespace {
+
+template <class T>
+void checkRange(const char* name, T v, T lo, T hi) {
+    if (!(v >= lo && v <= hi)) throw Error(fmt::format("alchemy: {} = {} is not in [{}, {}]", name, v, lo, hi));
+}
+
+// SAO paper eq. 1 (AlchemyAO's estimator).
+struct AlchemyEstimator {
+    float beta, epsilon, scale, k;
+    float term(float vv, float vn, float zc) const { return std::max(0.0f, vn + zc * beta) / (vv + epsilon); }
+    float finish(float sum) const {
+        const float a = std::max(0.0f, 1.0f - scale * sum);
+        return k == 1.0f ? a : std::pow(a, k);
+    }
+};
+
+}  // namespace
+
+void validate(const AlchemyParams& p) {
+    checkRange("radius", p.radius, 1e-6f, 100.0f);
+    checkRange("sigma", p.sigma, 0.0f, 100.0f);
+    checkRange("beta", p.beta, 0.0f, 1.0f);
+    checkRange("epsilon", p.epsilon, 1e-9f, 1.0f);
+    checkRange("k", p.k, 0.0f, 10.0f);
+    checkRange("numSamples", p.numSamples, 1, 64);
+    checkRange("numSpiralTurns", p.numSpiralTurns, 1, 64);
+    checkRange("guardBand", p.guardBand, 0, 4096);
+    SaoParams blurCheck;
+    blurCheck.blur = p.blur;
+    validate(blurCheck);
+}
+
+ImageF alchemySamplePass(ImageView<const float> z, const Projection& proj, Region region, const AlchemyParams& p,
+                         const Exec& exec) {
+    validate(p);
+    std::vector<ImageF> level0;
+    level0.push_back(ImageF::copyOf(z));
+    const AlchemyEstimator est{p.beta, p.epsilon, 2.0f * p.sigma / float(p.numSamples), p.k};
+    const detail::SampleSetup setup{p.numSamples, p.numSpiralTurns, 0, 0, p.radius, false};
+    return detail::samplePass(level0, proj, region, setup, est, exec);
+}
+
+ImageF alchemy(ImageView<const float> depth, const Camera& camera, const AlchemyParams& p, const Exec& exec) {
+    validate(p);
+    const int g = p.guardBand;
+    if (depth.width() <= 2 * g || depth.height() <= 2 * g)
+        throw Error(fmt::format("alchemy: a {}x{} depth buffer has no pixels inside a guard band of {}", depth.width(),
+                                depth.height(), g));
+    const Projection proj = projection(camera, depth.width(), depth.height());
+    const ImageF z = depthToZ(depth, camera, exec);
+    const Region out{g, g, depth.width() - 2 * g, depth.height() - 2 * g};
+    const ImageF a = alchemySamplePass(z.view(), proj, out, p, exec);
+    const ImageF h = bilateralPass(a, z.view(), out, p.blur, true, exec);
+    return bilateralPass(h, z.view(), out, p.blur, false, exec);
+}
+
+}  // namespace ssfx::ao

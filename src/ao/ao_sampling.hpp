@@ -1,0 +1,107 @@
+// The screen-space sample loop shared by SAO and the AlchemyAO baseline (sao.cpp,
+// alchemy.cpp): position and face normal from the z buffer, spiral taps with the hash
+// rotation, a pyramid level per tap; the estimator is a template parameter.
+#pragma once
+
+#include <bit>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "ssfx/ao/depth.hpp"
+#include "ssfx/ao/sao.hpp"
+
+namespace ssfx::ao::detail {
+
+inline Vec3 sub(Vec3 a, Vec3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+inline float dot(Vec3 a, Vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+inline Vec3 cross(Vec3 a, Vec3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
+
+//! The two pixels of `v`'s 2x2-quad pair along one axis (clamped into [0, n) for an odd n).
+inline void quadPair(int v, int n, int& a, int& b) {
+    a = v & ~1, b = a + 1;
+    if (b >= n) a = n - 2, b = n - 1;
+}
+
+struct SampleSetup {
+    int numSamples, spiralTurns, logQ, maxMip;
+    float radius;
+    bool usePyramid;
+};
+
+//! floor(log2(n)) for n >= 1, -1 for n <= 0 (GLSL findMSB on a non-negative int).
+inline int findMsb(int n) { return n <= 0 ? -1 : int(std::bit_width(unsigned(n))) - 1; }
+
+//! Runs the sample loop for every pixel of `region`; est.term(vv, vn, zC) accumulates one
+//! tap, est.finish(sum) gives A.
+template <class Estimator>
+ImageF samplePass(const std::vector<ImageF>& pyr, const Projection& proj, Region region, const SampleSetup& s,
+                  const Estimator& est, const Exec& exec) {
+    const ImageView<const float> z0 = pyr[0].view();
+    const int w = z0.width(), h = z0.height();
+    ImageF out(region.width, region.height);
+    const float twoPiTau = float(2.0 * std::numbers::pi) * float(s.spiralTurns);
+    const int levels = s.usePyramid ? std::min<int>(s.maxMip, int(pyr.size()) - 1) : 0;
+    auto pos = [&](int x, int y, float z) { return reconstructPosition(proj, float(x) + 0.5f, float(y) + 0.5f, z); };
+    parallelRows(region.height, exec, [&](int r0, int r1) {
+        for (int j = r0; j < r1; ++j) {
+            const int y = region.y0 + j;
+            for (int i = 0; i < region.width; ++i) {
+                const int x = region.x0 + i;
+                const float zc = z0(x, y);
+                float a = 1.0f;
+                if (std::isinf(zc) || w < 2 || h < 2) {
+                    out(i, j) = a;
+                    continue;
+                }
+                const Vec3 c = pos(x, y, zc);
+                // Face normal from the quad-pair differences a GPU's fine derivatives take
+                // (paper eq. 4): n = normalize(dC/dy x dC/dx).
+                int xa, xb, ya, yb;
+                quadPair(x, w, xa, xb);
+                quadPair(y, h, ya, yb);
+                const Vec3 ddx = sub(pos(xb, y, z0(xb, y)), pos(xa, y, z0(xa, y)));
+                const Vec3 ddy = sub(pos(x, yb, z0(x, yb)), pos(x, ya, z0(x, ya)));
+                Vec3 n = cross(ddy, ddx);
+                const float len = std::sqrt(dot(n, n));
+                if (!(len > 0.0f) || !std::isfinite(len)) {  // a sky neighbour: no surface to shade
+                    out(i, j) = a;
+                    continue;
+                }
+                n = {n.x / len, n.y / len, n.z / len};
+                // Screen-space radius (eq. 5) and the per-pixel rotation (eq. 8).
+                const float ssRadius = -s.radius * proj.pixelsPerMeter / zc;
+                const float phi = hashAngle(x, y);
+                float sum = 0.0f;
+                for (int k = 0; k < s.numSamples; ++k) {
+                    // Spiral tap (eqs. 6-7): alpha = (k + 0.5) / s, h = r' alpha.
+                    const float alpha = (float(k) + 0.5f) / float(s.numSamples);
+                    const float hk = ssRadius * alpha;
+                    const float theta = alpha * twoPiTau + phi;
+                    // GLSL ivec2(float): truncation toward zero.
+                    const int sx = x + int(hk * std::cos(theta)), sy = y + int(hk * std::sin(theta));
+                    // Level (eqs. 9-10): m = clamp(findMSB(int(h)) - log2 q', 0, MAX_MIP).
+                    const int m = std::clamp(findMsb(int(hk)) - s.logQ, 0, levels);
+                    const ImageView<const float> zm = pyr[std::size_t(m)].view();
+                    const float zq = zm.clamped(sx >> m, sy >> m);
+                    if (std::isinf(zq)) continue;  // sky occludes nothing
+                    const Vec3 v = sub(pos(sx, sy, zq), c);
+                    sum += est.term(dot(v, v), dot(v, n), zc);
+                }
+                a = est.finish(sum);
+                out(i, j) = a;
+            }
+        }
+    });
+    return out;
+}
+
+//! The output region grown to whole 2x2 quads of the buffer grid (clamped to the buffer),
+//! so that every output pixel's quad partner has a sample-pass value.
+inline Region quadAligned(Region r, int w, int h) {
+    const int x0 = r.x0 & ~1, y0 = r.y0 & ~1;
+    const int x1 = std::min(w, (r.x0 + r.width + 1) & ~1), y1 = std::min(h, (r.y0 + r.height + 1) & ~1);
+    return {x0, y0, x1 - x0, y1 - y0};
+}
+
+}  // namespace ssfx::ao::detail

@@ -1,0 +1,110 @@
+// z reconstruction and the z pyramid (see depth.hpp).
+#include "ssfx/ao/depth.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <numbers>
+
+#include "ssfx/core/error.hpp"
+
+namespace ssfx::ao {
+
+Projection projection(const Camera& c, int width, int height) {
+    if (!(c.zNear < 0) || !std::isfinite(c.zNear))
+        throw Error(fmt::format("camera: zNear must be a finite negative number (got {})", c.zNear));
+    if (!(c.zFar < c.zNear)) throw Error(fmt::format("camera: zFar ({}) must be below zNear ({})", c.zFar, c.zNear));
+    if (!(c.fovY > 0 && c.fovY < std::numbers::pi))
+        throw Error(fmt::format("camera: fovY must be in (0, pi) radians (got {})", c.fovY));
+    if (width < 1 || height < 1) throw Error(fmt::format("camera: buffer size {}x{} is empty", width, height));
+    Projection p{};
+    // Paper eq. 2: c = (zn zf, zn - zf, zf) for a finite far plane, (zn, -1, +1) for an
+    // infinite one; in double (section 2.1: compose the projection in double precision).
+    if (std::isinf(c.zFar)) {
+        p.c0 = c.zNear, p.c1 = -1.0, p.c2 = 1.0;
+    } else {
+        p.c0 = c.zNear * c.zFar, p.c1 = c.zNear - c.zFar, p.c2 = c.zFar;
+    }
+    const double t = std::tan(c.fovY / 2);
+    p.p11 = float(1.0 / t);
+    p.p00 = float(1.0 / (t * double(width) / double(height)));
+    p.width = width, p.height = height;
+    p.pixelsPerMeter = float(double(height) / (2.0 * t));
+    return p;
+}
+
+double zToDepth(double z, const Camera& c) {
+    // Inverse of z = c0 / (d c1 + c2): d = (c0 / z - c2) / c1, in double.
+    if (std::isinf(c.zFar)) return std::isinf(z) ? 1.0 : (c.zNear / z - 1.0) / -1.0;
+    return (c.zNear * c.zFar / z - c.zFar) / (c.zNear - c.zFar);
+}
+
+ImageF depthToZ(ImageView<const float> depth, const Camera& camera, const Exec& exec) {
+    const Projection p = projection(camera, depth.width(), depth.height());
+    ImageF z(depth.width(), depth.height());
+    // The first bad pixel in row-major order is reported, whatever the thread count.
+    std::atomic<std::int64_t> firstBad{std::int64_t{1} << 62};
+    parallelRows(depth.height(), exec, [&](int y0, int y1) {
+        for (int y = y0; y < y1; ++y) {
+            const float* d = depth.row(y);
+            float* out = z.view().row(y);
+            for (int x = 0; x < depth.width(); ++x) {
+                const float v = d[x];
+                if (!(v >= 0.0f && v <= 1.0f)) {  // also NaN
+                    std::int64_t idx = std::int64_t(y) * depth.width() + x, cur = firstBad.load();
+                    while (idx < cur && !firstBad.compare_exchange_weak(cur, idx)) {
+                    }
+                    out[x] = 0;
+                    continue;
+                }
+                // Eq. 2; d = 1 with zFar = -inf gives -inf (sky).
+                out[x] = float(p.c0 / (double(v) * p.c1 + p.c2));
+            }
+        }
+    });
+    if (firstBad.load() != std::int64_t{1} << 62) {
+        const std::int64_t i = firstBad.load();
+        const int x = int(i % depth.width()), y = int(i / depth.width());
+        throw Error(fmt::format("depth at pixel ({}, {}) is {}, not in [0, 1]", x, y, depth(x, y)));
+    }
+    return z;
+}
+
+std::vector<ImageF> zPyramid(ImageView<const float> z, int maxMip, PyramidFilter filter, const Exec& exec) {
+    if (maxMip < 0 || maxMip > 16) throw Error(fmt::format("z pyramid: maxMip {} is not in [0, 16]", maxMip));
+    std::vector<ImageF> levels;
+    levels.push_back(ImageF::copyOf(z));
+    for (int m = 1; m <= maxMip; ++m) {
+        const ImageF& prev = levels.back();
+        const int w = std::max(1, prev.width() / 2), h = std::max(1, prev.height() / 2);
+        ImageF next(w, h);
+        const ImageView<const float> pv = prev.view();
+        parallelRows(h, exec, [&](int y0, int y1) {
+            for (int y = y0; y < y1; ++y)
+                for (int x = 0; x < w; ++x) {
+                    float v;
+                    if (filter == PyramidFilter::RotatedGrid) {
+                        v = pv.clamped(2 * x + (y & 1), 2 * y + (x & 1));
+                    } else {
+                        const float a = pv.clamped(2 * x, 2 * y), b = pv.clamped(2 * x + 1, 2 * y);
+                        const float c = pv.clamped(2 * x, 2 * y + 1), d = pv.clamped(2 * x + 1, 2 * y + 1);
+                        switch (filter) {
+                            case PyramidFilter::Mean: v = (a + b + c + d) * 0.25f; break;
+                            case PyramidFilter::HarmonicMean:
+                                v = 4.0f / (1.0f / a + 1.0f / b + 1.0f / c + 1.0f / d);
+                                break;
+                            case PyramidFilter::Min: v = std::min(std::min(a, b), std::min(c, d)); break;
+                            default: v = std::max(std::max(a, b), std::max(c, d)); break;
+                        }
+                    }
+                    next(x, y) = v;
+                }
+        });
+        levels.push_back(std::move(next));
+    }
+    return levels;
+}
+
+}  // namespace ssfx::ao

@@ -1,0 +1,162 @@
+// Scalable Ambient Obscurance (see sao.hpp; spec sao.md).
+#include "ssfx/ao/sao.hpp"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cmath>
+
+#include "ao_sampling.hpp"
+#include "ssfx/core/error.hpp"
+
+namespace ssfx::ao {
+
+namespace {
+
+template <class T>
+void checkRange(const char* name, T v, T lo, T hi) {
+    if (!(v >= lo && v <= hi)) throw Error(fmt::format("sao: {} = {} is not in [{}, {}]", name, v, lo, hi));
+}
+
+// The paper's updated falloff (appendix, June 2012):
+// A = max(0, 1 - 5 / (r^6 s) * sum max(r^2 - v.v, 0)^3 * max((v.n - beta) / (v.v + eps), 0)) ^ intensity.
+struct SaoEstimator {
+    float r2, bias, epsilon, scale, intensity;
+    float term(float vv, float vn, float) const {
+        const float f = std::max(r2 - vv, 0.0f);
+        return f * f * f * std::max((vn - bias) / (vv + epsilon), 0.0f);
+    }
+    float finish(float sum) const {
+        const float a = std::max(0.0f, 1.0f - sum * scale);
+        return intensity == 1.0f ? a : std::pow(a, intensity);
+    }
+};
+
+}  // namespace
+
+int spiralTurnsFor(int s) {
+    // Discrepancy-minimising turns for s = 1..30 (spec sao.md, from the released demo code).
+    static constexpr int kTurns[30] = {1, 1, 2, 3, 2, 5, 2, 3, 2, 3, 3, 5, 5, 3, 4,
+                                       7, 5, 5, 7, 9, 8, 5, 5, 7, 7, 7, 8, 5, 8, 11};
+    if (s < 1 || s > 30) throw Error(fmt::format("sao: no spiral-turn table entry for {} samples (1..30)", s));
+    return kTurns[s - 1];
+}
+
+float hashAngle(int x, int y) {
+    // (3 * x) ^ (y + x * y): in C, + and * bind tighter than ^ (paper eq. 8 as released).
+    return 10.0f * float((3 * x) ^ (y + x * y));
+}
+
+void validate(const SaoParams& p) {
+    checkRange("radius", p.radius, 1e-6f, 100.0f);
+    checkRange("bias", p.bias, 0.0f, 1.0f);
+    checkRange("epsilon", p.epsilon, 1e-9f, 1.0f);
+    checkRange("intensity", p.intensity, 0.0f, 10.0f);
+    checkRange("numSamples", p.numSamples, 1, 64);
+    checkRange("numSpiralTurns", p.numSpiralTurns, 1, 64);
+    checkRange("logQ", p.logQ, 0, 8);
+    checkRange("maxMip", p.maxMip, 0, 16);
+    checkRange("quadThreshold", p.quadThreshold, 0.0f, 10.0f);
+    checkRange("blurRadius", p.blur.blurRadius, 0, 8);
+    checkRange("blurStride", p.blur.blurStride, 1, 8);
+    checkRange("blurSigma", p.blur.blurSigma, 1e-3f, 16.0f);
+    checkRange("edgeSharpness", p.blur.edgeSharpness, 0.0f, 1e6f);
+    checkRange("guardBand", p.guardBand, 0, 4096);
+}
+
+ImageF saoSamplePass(const std::vector<ImageF>& pyramid, const Projection& proj, Region region, const SaoParams& p,
+                     const Exec& exec) {
+    validate(p);
+    if (pyramid.empty()) throw Error("sao: empty z pyramid");
+    const float r2 = p.radius * p.radius;
+    const SaoEstimator est{r2, p.bias, p.epsilon, 5.0f / (r2 * r2 * r2 * float(p.numSamples)), p.intensity};
+    const detail::SampleSetup setup{p.numSamples, p.numSpiralTurns, p.logQ, p.maxMip, p.radius, p.usePyramid};
+    return detail::samplePass(pyramid, proj, region, setup, est, exec);
+}
+
+void quadBilateral(ImageF& a, ImageView<const float> z, Region region, float threshold) {
+    // A GPU does this with derivatives inside each 2x2 quad: A -= dFdx(A) * ((x & 1) - 0.5)
+    // where |dFdx(z)| < threshold, then the same in y on the result: the average of the
+    // pair. Pairs with a partner outside the region are left alone.
+    auto pass = [&](bool horizontal) {
+        const ImageF in = a;
+        for (int j = 0; j < region.height; ++j)
+            for (int i = 0; i < region.width; ++i) {
+                const int x = region.x0 + i, y = region.y0 + j;
+                const int px = horizontal ? x ^ 1 : x, py = horizontal ? y : y ^ 1;
+                const int pi = px - region.x0, pj = py - region.y0;
+                if (pi < 0 || pj < 0 || pi >= region.width || pj >= region.height) continue;
+                if (!(std::fabs(z(px, py) - z(x, y)) < threshold)) continue;  // also sky (NaN, inf)
+                a(i, j) = (in(i, j) + in(pi, pj)) * 0.5f;
+            }
+    };
+    pass(true);
+    pass(false);
+}
+
+ImageF bilateralPass(const ImageF& a, ImageView<const float> z, Region region, const BlurParams& p, bool horizontal,
+                     const Exec& exec) {
+    // Section 2.4: Gaussian spatial weights times max(0, 1 - k |dz|); sky does not contribute.
+    std::vector<float> gauss(std::size_t(p.blurRadius) + 1);
+    for (int t = 0; t <= p.blurRadius; ++t)
+        gauss[std::size_t(t)] = std::exp(-float(t * t) / (2.0f * p.blurSigma * p.blurSigma));
+    ImageF out(region.width, region.height);
+    parallelRows(region.height, exec, [&](int r0, int r1) {
+        for (int j = r0; j < r1; ++j)
+            for (int i = 0; i < region.width; ++i) {
+                const float zc = z(region.x0 + i, region.y0 + j);
+                if (std::isinf(zc)) {
+                    out(i, j) = 1.0f;
+                    continue;
+                }
+                float sum = 0, wsum = 0;
+                for (int t = -p.blurRadius; t <= p.blurRadius; ++t) {
+                    const int ti = horizontal ? std::clamp(i + t * p.blurStride, 0, region.width - 1) : i;
+                    const int tj = horizontal ? j : std::clamp(j + t * p.blurStride, 0, region.height - 1);
+                    const float zt = z(region.x0 + ti, region.y0 + tj);
+                    const float w =
+                        gauss[std::size_t(std::abs(t))] * std::max(0.0f, 1.0f - p.edgeSharpness * std::fabs(zt - zc));
+                    sum += w * a(ti, tj);
+                    wsum += w;
+                }
+                out(i, j) = sum / wsum;  // the centre tap has weight 1
+            }
+    });
+    return out;
+}
+
+ImageF sao(ImageView<const float> depth, const Camera& camera, const SaoParams& p, const Exec& exec) {
+    return sao(depth, camera, p, exec, nullptr);
+}
+
+ImageF sao(ImageView<const float> depth, const Camera& camera, const SaoParams& p, const Exec& exec,
+           SaoTimings* timings) {
+    validate(p);
+    const int g = p.guardBand;
+    if (depth.width() <= 2 * g || depth.height() <= 2 * g)
+        throw Error(fmt::format("sao: a {}x{} depth buffer has no pixels inside a guard band of {}", depth.width(),
+                                depth.height(), g));
+    using Clock = std::chrono::steady_clock;
+    auto ms = [](Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
+    const auto t0 = Clock::now();
+    const Projection proj = projection(camera, depth.width(), depth.height());
+    const ImageF z = depthToZ(depth, camera, exec);
+    const auto t1 = Clock::now();
+    const std::vector<ImageF> pyr = zPyramid(z.view(), p.usePyramid ? p.maxMip : 0, p.pyramidFilter, exec);
+    const auto t2 = Clock::now();
+    const Region out{g, g, depth.width() - 2 * g, depth.height() - 2 * g};
+    const Region work = detail::quadAligned(out, depth.width(), depth.height());
+    ImageF a = saoSamplePass(pyr, proj, work, p, exec);
+    quadBilateral(a, z.view(), work, p.quadThreshold);
+    const auto t3 = Clock::now();
+    const ImageF h = bilateralPass(a, z.view(), work, p.blur, true, exec);
+    const ImageF v = bilateralPass(h, z.view(), work, p.blur, false, exec);
+    ImageF result(out.width, out.height);
+    for (int y = 0; y < out.height; ++y)
+        for (int x = 0; x < out.width; ++x) result(x, y) = v(x + out.x0 - work.x0, y + out.y0 - work.y0);
+    const auto t4 = Clock::now();
+    if (timings) *timings = {ms(t0, t1), ms(t1, t2), ms(t2, t3), ms(t3, t4), ms(t0, t4)};
+    return result;
+}
+
+}  // namespace ssfx::ao

@@ -1,0 +1,221 @@
+// SAO and the AlchemyAO baseline on analytic depth buffers (planes computed in the test).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+
+#include "ssfx/ao/alchemy.hpp"
+#include "ssfx/ao/depth.hpp"
+#include "ssfx/ao/sao.hpp"
+
+using namespace ssfx;
+using namespace ssfx::ao;
+
+namespace {
+
+// Casts a ray through each pixel centre and stores the depth of the nearest hit of
+// `hit(dir) -> t` (t along a ray whose z component is -1, so camera-space z = -t), or
+// 1 (sky, with an infinite far plane) for no hit (t <= 0 or infinite).
+ImageF castDepth(int w, int h, const Camera& cam, const std::function<double(Vec3)>& hit) {
+    const Projection p = projection(cam, w, h);
+    ImageF d(w, h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const Vec3 dir = reconstructPosition(p, float(x) + 0.5f, float(y) + 0.5f, -1.0f);
+            const double t = hit(dir);
+            d(x, y) = (t > 0 && std::isfinite(t)) ? float(zToDepth(-t, cam)) : 1.0f;
+        }
+    return d;
+}
+
+// Floor y = -1 and a back wall z = -5 (an inside corner along y = -1, z = -5).
+double cornerHit(Vec3 dir) {
+    double t = 5.0;  // the wall
+    if (dir.y < 0) t = std::min(t, -1.0 / dir.y);
+    return t;
+}
+
+}  // namespace
+
+TEST(Depth, ZReconstructionIsExactForAnalyticDepths) {
+    for (const double zFar : {-100.0, -double(INFINITY)}) {
+        Camera cam;
+        cam.zNear = -0.1, cam.zFar = zFar;
+        const Projection p = projection(cam, 8, 1);
+        ImageF d(8, 1);
+        const double zs[] = {-0.1, -0.5, -1, -3.7, -10, -42, -99.9, -100};
+        for (int i = 0; i < 8; ++i) d(i, 0) = float(zToDepth(zs[i], cam));
+        const ImageF z = depthToZ(d.view(), cam);
+        for (int i = 0; i < 8; ++i) {
+            // The only errors allowed: storing the depth as float32 (moves z by
+            // |dz/dd| * |d_float - d_exact|, dz/dd = -c0 c1 / (d c1 + c2)^2) and storing z
+            // as float32 (half an ulp, < |z| 2^-24).
+            const double dExact = zToDepth(zs[i], cam), dStored = d(i, 0);
+            const double den = dExact * p.c1 + p.c2;
+            const double bound =
+                std::abs(p.c0 * p.c1 / (den * den)) * std::abs(dStored - dExact) * 1.01 + std::abs(zs[i]) * 6e-8;
+            EXPECT_LE(std::abs(double(z(i, 0)) - zs[i]), bound) << zs[i];
+        }
+        EXPECT_EQ(z(0, 0), -0.1f);  // d = 0 is the near plane exactly
+    }
+    Camera inf;
+    ImageF sky(1, 1, 1.0f);
+    EXPECT_TRUE(std::isinf(depthToZ(sky.view(), inf)(0, 0)));
+    Camera finite;
+    finite.zFar = -50;
+    EXPECT_FLOAT_EQ(depthToZ(sky.view(), finite)(0, 0), -50.0f);
+}
+
+TEST(Depth, PositionsReprojectToTheirPixels) {
+    // A point projected with the OpenGL perspective matrix lands at the pixel whose centre
+    // reconstructs to it (y down in the image, up in camera space).
+    Camera cam;
+    cam.fovY = 0.9;
+    const int w = 320, h = 200;
+    const Projection p = projection(cam, w, h);
+    const Vec3 pts[] = {{1.0f, 0.5f, -4.0f}, {-2.0f, -1.0f, -7.5f}, {0.0f, 0.0f, -1.0f}};
+    for (const Vec3& q : pts) {
+        const double ndcX = p.p00 * q.x / -q.z, ndcY = p.p11 * q.y / -q.z;
+        const double px = (ndcX + 1) * w / 2, py = (1 - ndcY) * h / 2;  // y down
+        const Vec3 r = reconstructPosition(p, float(px), float(py), q.z);
+        EXPECT_NEAR(r.x, q.x, 1e-4);
+        EXPECT_NEAR(r.y, q.y, 1e-4);
+    }
+    EXPECT_NEAR(p.pixelsPerMeter, h / (2 * std::tan(0.45)), 1e-3);
+}
+
+TEST(Depth, PyramidFiltersOnA4x4ByHand) {
+    // z values (negative), row-major:
+    const float v[16] = {-1, -2, -3, -4,  //
+                         -5, -6, -7, -8,  //
+                         -2, -2, -4, -4,  //
+                         -8, -8, -1, -1};
+    ImageF z(4, 4);
+    for (int i = 0; i < 16; ++i) z(i % 4, i / 4) = v[i];
+    auto level1 = [&](PyramidFilter f) { return zPyramid(z.view(), 1, f)[1]; };
+    // Rotated grid: (x, y) <- (2x + (y & 1), 2y + (x & 1)):
+    // (0,0) <- (0,0) = -1; (1,0) <- (2,1) = -7; (0,1) <- (1,2) = -2; (1,1) <- (3,3) = -1.
+    const ImageF rg = level1(PyramidFilter::RotatedGrid);
+    EXPECT_EQ(rg(0, 0), -1);
+    EXPECT_EQ(rg(1, 0), -7);
+    EXPECT_EQ(rg(0, 1), -2);
+    EXPECT_EQ(rg(1, 1), -1);
+    // Blocks: {-1,-2,-5,-6}, {-3,-4,-7,-8}, {-2,-2,-8,-8}, {-4,-4,-1,-1}.
+    const ImageF mean = level1(PyramidFilter::Mean);
+    EXPECT_FLOAT_EQ(mean(0, 0), -3.5f);
+    EXPECT_FLOAT_EQ(mean(1, 0), -5.5f);
+    EXPECT_FLOAT_EQ(mean(0, 1), -5.0f);
+    const ImageF harm = level1(PyramidFilter::HarmonicMean);
+    EXPECT_FLOAT_EQ(harm(0, 1), -3.2f);  // 4 / (-1/2 - 1/2 - 1/8 - 1/8) = 4 / -1.25
+    EXPECT_FLOAT_EQ(level1(PyramidFilter::Min)(1, 1), -4.0f);
+    EXPECT_FLOAT_EQ(level1(PyramidFilter::Max)(1, 0), -3.0f);
+    // Sizes halve (rounding down, at least 1).
+    ImageF odd(5, 3, -1.0f);
+    const auto pyr = zPyramid(odd.view(), 3);
+    ASSERT_EQ(pyr.size(), 4u);
+    EXPECT_EQ(pyr[1].width(), 2);
+    EXPECT_EQ(pyr[1].height(), 1);
+    EXPECT_EQ(pyr[3].width(), 1);
+}
+
+TEST(Sao, HashAndSpiralByHand) {
+    // phi = 10 * ((3x) ^ (y + x y)): (2, 3): 6 ^ 9 = 15; (5, 1): 15 ^ 6 = 9; (0, 0): 0.
+    EXPECT_EQ(hashAngle(2, 3), 150.0f);
+    EXPECT_EQ(hashAngle(5, 1), 90.0f);
+    EXPECT_EQ(hashAngle(0, 0), 0.0f);
+    EXPECT_EQ(spiralTurnsFor(9), 2);
+    EXPECT_EQ(spiralTurnsFor(1), 1);
+    EXPECT_EQ(spiralTurnsFor(30), 11);
+    EXPECT_THROW(spiralTurnsFor(31), Error);
+}
+
+TEST(Sao, FrontoParallelPlaneIsUnoccluded) {
+    Camera cam;
+    const ImageF d = castDepth(96, 64, cam, [](Vec3) { return 3.0; });  // the plane z = -3
+    for (bool pyramid : {true, false}) {
+        SaoParams p;
+        p.usePyramid = pyramid;
+        const ImageF a = sao(d.view(), cam, p);
+        for (float v : a.pixels()) ASSERT_NEAR(v, 1.0f, 1e-6f);
+    }
+    const ImageF b = alchemy(d.view(), cam);
+    for (float v : b.pixels()) ASSERT_NEAR(v, 1.0f, 1e-6f);
+}
+
+TEST(Sao, InsideCornerIsOccludedAndSkyStaysOne) {
+    Camera cam;
+    const int w = 160, h = 120;
+    // The corner scene, with sky above the wall's top edge at y = +1.5.
+    const ImageF d = castDepth(w, h, cam, [](Vec3 dir) {
+        const double t = cornerHit(dir);
+        return t * dir.y > 1.5 ? INFINITY : t;
+    });
+    SaoParams p;
+    p.radius = 1.0f;
+    const ImageF a = sao(d.view(), cam, p);
+    const Projection proj = projection(cam, w, h);
+    // Pixel rows: the corner line y = -1 at z = -5 projects to row h/2 + S/5.
+    const int cornerRow = int(h / 2 + proj.pixelsPerMeter / 5.0f);
+    double nearCorner = 0, openWall = 0, skyMin = 1;
+    for (int x = 40; x < 120; ++x) {
+        nearCorner += a(x, cornerRow - 2) / 80.0;  // on the wall, just above the corner
+        openWall += a(x, h / 2 - 5) / 80.0;        // the wall about 1 m above the floor
+    }
+    for (int x = 0; x < w; ++x) skyMin = std::min<double>(skyMin, a(x, 0));
+    EXPECT_LT(nearCorner, 0.85);  // the floor occludes the wall's foot
+    EXPECT_GT(openWall, 0.97);    // nothing within 1 m occludes the open wall
+    EXPECT_EQ(skyMin, 1.0);       // sky pixels stay 1
+    for (float v : a.pixels()) ASSERT_TRUE(v >= 0.0f && v <= 1.0f);
+    // The baseline sees the same corner.
+    const ImageF b = alchemy(d.view(), cam);
+    double bCorner = 0;
+    for (int x = 40; x < 120; ++x) bCorner += b(x, cornerRow - 2) / 80.0;
+    EXPECT_LT(bCorner, 0.9);
+}
+
+TEST(Sao, SameBytesForAnyThreadCountAndGuardBand) {
+    Camera cam;
+    const ImageF d = castDepth(130, 90, cam, cornerHit);
+    SaoParams p;
+    p.guardBand = 13;
+    const ImageF a1 = sao(d.view(), cam, p, Exec{1}), a4 = sao(d.view(), cam, p, Exec{4});
+    EXPECT_EQ(a1, a4);
+    EXPECT_EQ(a1.width(), 130 - 26);
+    EXPECT_EQ(a1.height(), 90 - 26);
+    EXPECT_EQ(alchemy(d.view(), cam, {}, Exec{1}), alchemy(d.view(), cam, {}, Exec{3}));
+}
+
+TEST(Sao, BadInputsAreClearErrors) {
+    Camera cam;
+    ImageF d(16, 16, 0.5f);
+    auto expectError = [&](const ImageF& depth, const SaoParams& p, const std::string& text) {
+        try {
+            sao(depth.view(), cam, p);
+            ADD_FAILURE() << "no error for " << text;
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find(text), std::string::npos) << e.what();
+        }
+    };
+    ImageF bad = d;
+    bad(3, 5) = NAN;
+    expectError(bad, {}, "pixel (3, 5)");
+    bad(3, 5) = 1.5f;
+    expectError(bad, {}, "not in [0, 1]");
+    bad(3, 5) = INFINITY;
+    expectError(bad, {}, "pixel (3, 5)");
+    SaoParams p;
+    p.guardBand = 8;
+    expectError(d, p, "guard band");
+    p = {};
+    p.radius = -1;
+    expectError(d, p, "radius");
+    p = {};
+    p.numSamples = 0;
+    expectError(d, p, "numSamples");
+    Camera badCam;
+    badCam.zNear = 0.1;
+    EXPECT_THROW(sao(d.view(), badCam), Error);
+    badCam = {};
+    badCam.fovY = 4;
+    EXPECT_THROW(sao(d.view(), badCam), Error);
+}
