@@ -30,7 +30,7 @@ test: build
 
 asan:
 	@$(MAKE) --no-print-directory PRESET=asan build
-	@cd build/asan && ctest --output-on-failure -j $(JOBS)
+	@cd build/asan && LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp ctest --output-on-failure -j $(JOBS)
 
 # libFuzzer: a short run per target (make test), or longer: make fuzz FUZZ_SECONDS=3600
 fuzz-smoke: setup

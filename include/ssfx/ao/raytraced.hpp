@@ -1,0 +1,54 @@
+// Ray-traced ground truth for ambient obscurance (spec sao.md "Beyond the paper"): for
+// each pixel's surface point (the primary ray's hit through the pixel centre, with the
+// geometry's true normal), the distance-limited obscurance integral over the hemisphere,
+//   A = 1 - integral over the hemisphere of rho(d(w)) (n.w) / pi dw,
+//   rho(d) = (1 - (d / r)^2)^3 for a hit at distance d < r, else 0,
+// the smooth falloff of SAO's updated estimator. Estimated with cosine-weighted rays: a
+// Hammersley set of N directions per pixel, rotated per pixel by a hash (Cranley-Patterson),
+// so the estimate is deterministic and its noise far below a random set's.
+//
+// The geometry comes through RayScene: analytic scenes (ssfx/eval/ao_scenes.hpp) now,
+// Embree meshes with the scene renderer.
+#pragma once
+
+#include <cstdint>
+
+#include "ssfx/ao/depth.hpp"
+#include "ssfx/core/image.hpp"
+#include "ssfx/core/parallel.hpp"
+
+namespace ssfx::ao {
+
+struct Vec3d {
+    double x, y, z;
+};
+
+struct RayHit {
+    double t;       //!< distance along the (unit) ray direction
+    Vec3d normal;   //!< unit geometric normal facing the ray's origin side
+};
+
+//! Geometry that rays can be cast against (camera space, metres).
+class RayScene {
+public:
+    virtual ~RayScene() = default;
+    //! The nearest hit with tMin < t < tMax, or t = +infinity when there is none.
+    //! `dir` is a unit vector.
+    virtual RayHit intersect(const Vec3d& origin, const Vec3d& dir, double tMin, double tMax) const = 0;
+};
+
+struct RaytracedParams {
+    float radius = 1.0f;        //!< (0, 100] m: r, as SAO's
+    int raysPerPixel = 256;     //!< [1, 65536] cosine-weighted rays per pixel
+    int guardBand = 0;          //!< [0, 4096] px on each side not output (as SAO's)
+};
+
+//! A for every pixel of the inner region of a width x height image seen by `camera`.
+//! Sky pixels (no primary hit) are 1.
+ImageF raytraced(const RayScene& scene, const Camera& camera, int width, int height,
+                 const RaytracedParams& params = {}, const Exec& exec = {});
+
+//! The primary ray through pixel centre (px, py) (unit direction, from the origin).
+Vec3d primaryRay(const Projection& proj, float px, float py);
+
+}  // namespace ssfx::ao
