@@ -32,64 +32,98 @@ struct SampleSetup {
 //! floor(log2(n)) for n >= 1, -1 for n <= 0 (GLSL findMSB on a non-negative int).
 inline int findMsb(int n) { return n <= 0 ? -1 : int(std::bit_width(unsigned(n))) - 1; }
 
+// Per-column and per-row factors of the position reconstruction (paper eq. 3):
+// C = (z * fx[x], z * fy[y], z) at pixel centres, so a tap costs two multiplications.
+struct PositionTables {
+    std::vector<float> fx, fy;
+    const Projection* proj;
+    PositionTables(const Projection& p) : fx(std::size_t(p.width)), fy(std::size_t(p.height)), proj(&p) {
+        for (int x = 0; x < p.width; ++x) fx[std::size_t(x)] = reconstructPosition(p, float(x) + 0.5f, 0.5f, 1.0f).x;
+        for (int y = 0; y < p.height; ++y) fy[std::size_t(y)] = reconstructPosition(p, 0.5f, float(y) + 0.5f, 1.0f).y;
+    }
+    Vec3 at(int x, int y, float z) const {
+        if (x >= 0 && y >= 0 && x < proj->width && y < proj->height)
+            return {z * fx[std::size_t(x)], z * fy[std::size_t(y)], z};
+        return reconstructPosition(*proj, float(x) + 0.5f, float(y) + 0.5f, z);  // taps beyond the buffer
+    }
+};
+
+//! Face normal at (x, y) from the quad-pair differences a GPU's fine derivatives take
+//! (paper eq. 4): n = normalize(dC/dy x dC/dx). False where it cannot be formed (a sky
+//! neighbour, a degenerate quad).
+inline bool faceNormal(ImageView<const float> z0, const PositionTables& pos, int x, int y, Vec3& n) {
+    const int w = z0.width(), h = z0.height();
+    if (w < 2 || h < 2) return false;
+    int xa, xb, ya, yb;
+    quadPair(x, w, xa, xb);
+    quadPair(y, h, ya, yb);
+    const Vec3 ddx = sub(pos.at(xb, y, z0(xb, y)), pos.at(xa, y, z0(xa, y)));
+    const Vec3 ddy = sub(pos.at(x, yb, z0(x, yb)), pos.at(x, ya, z0(x, ya)));
+    n = cross(ddy, ddx);
+    const float len = std::sqrt(dot(n, n));
+    if (!(len > 0.0f) || !std::isfinite(len)) return false;
+    const float inv = 1.0f / len;
+    n = {n.x * inv, n.y * inv, n.z * inv};
+    return true;
+}
+
 //! Runs the sample loop for every pixel of `region`; est.term(vv, vn, zC) accumulates one
 //! tap, est.finish(sum) gives A.
+//!
+//! The spiral (eqs. 6-7) is precomputed once: tap k has alpha_k = (k + 0.5) / s and the
+//! unit direction at angle alpha_k * 2 pi tau; each pixel rotates the whole spiral by its
+//! hash angle phi (eq. 8) with one sine and cosine. This is cos/sin(alpha 2 pi tau + phi)
+//! evaluated as a rotation: the same directions up to rounding, at a ninth of the cost.
 template <class Estimator>
 ImageF samplePass(const std::vector<ImageF>& pyr, const Projection& proj, Region region, const SampleSetup& s,
                   const Estimator& est, const Exec& exec) {
     const ImageView<const float> z0 = pyr[0].view();
     const int w = z0.width(), h = z0.height();
     ImageF out(region.width, region.height);
-    const float twoPiTau = float(2.0 * std::numbers::pi) * float(s.spiralTurns);
     const int levels = s.usePyramid ? std::min<int>(s.maxMip, int(pyr.size()) - 1) : 0;
-    auto pos = [&](int x, int y, float z) { return reconstructPosition(proj, float(x) + 0.5f, float(y) + 0.5f, z); };
+    std::vector<float> alpha(std::size_t(s.numSamples)), dirX(alpha.size()), dirY(alpha.size());
+    for (int k = 0; k < s.numSamples; ++k) {
+        const double a = (k + 0.5) / s.numSamples, theta = a * 2.0 * std::numbers::pi * s.spiralTurns;
+        alpha[std::size_t(k)] = float(a), dirX[std::size_t(k)] = float(std::cos(theta)),
+                           dirY[std::size_t(k)] = float(std::sin(theta));
+    }
+    const PositionTables pos(proj);
     parallelRows(region.height, exec, [&](int r0, int r1) {
         for (int j = r0; j < r1; ++j) {
             const int y = region.y0 + j;
             for (int i = 0; i < region.width; ++i) {
                 const int x = region.x0 + i;
                 const float zc = z0(x, y);
-                float a = 1.0f;
                 if (std::isinf(zc) || w < 2 || h < 2) {
-                    out(i, j) = a;
+                    out(i, j) = 1.0f;
                     continue;
                 }
-                const Vec3 c = pos(x, y, zc);
-                // Face normal from the quad-pair differences a GPU's fine derivatives take
-                // (paper eq. 4): n = normalize(dC/dy x dC/dx).
-                int xa, xb, ya, yb;
-                quadPair(x, w, xa, xb);
-                quadPair(y, h, ya, yb);
-                const Vec3 ddx = sub(pos(xb, y, z0(xb, y)), pos(xa, y, z0(xa, y)));
-                const Vec3 ddy = sub(pos(x, yb, z0(x, yb)), pos(x, ya, z0(x, ya)));
-                Vec3 n = cross(ddy, ddx);
-                const float len = std::sqrt(dot(n, n));
-                if (!(len > 0.0f) || !std::isfinite(len)) {  // a sky neighbour: no surface to shade
-                    out(i, j) = a;
+                const Vec3 c = pos.at(x, y, zc);
+                Vec3 n;
+                if (!faceNormal(z0, pos, x, y, n)) {  // a sky neighbour: no surface to shade
+                    out(i, j) = 1.0f;
                     continue;
                 }
-                n = {n.x / len, n.y / len, n.z / len};
                 // Screen-space radius (eq. 5) and the per-pixel rotation (eq. 8).
                 const float ssRadius = -s.radius * proj.pixelsPerMeter / zc;
-                const float phi = hashAngle(x, y);
+                const double phi = double(hashAngle(x, y));
+                const float cphi = float(std::cos(phi)), sphi = float(std::sin(phi));
                 float sum = 0.0f;
                 for (int k = 0; k < s.numSamples; ++k) {
-                    // Spiral tap (eqs. 6-7): alpha = (k + 0.5) / s, h = r' alpha.
-                    const float alpha = (float(k) + 0.5f) / float(s.numSamples);
-                    const float hk = ssRadius * alpha;
-                    const float theta = alpha * twoPiTau + phi;
+                    const float hk = ssRadius * alpha[std::size_t(k)];
+                    const float ux = dirX[std::size_t(k)] * cphi - dirY[std::size_t(k)] * sphi;
+                    const float uy = dirX[std::size_t(k)] * sphi + dirY[std::size_t(k)] * cphi;
                     // GLSL ivec2(float): truncation toward zero.
-                    const int sx = x + int(hk * std::cos(theta)), sy = y + int(hk * std::sin(theta));
+                    const int sx = x + int(hk * ux), sy = y + int(hk * uy);
                     // Level (eqs. 9-10): m = clamp(findMSB(int(h)) - log2 q', 0, MAX_MIP).
                     const int m = std::clamp(findMsb(int(hk)) - s.logQ, 0, levels);
                     const ImageView<const float> zm = pyr[std::size_t(m)].view();
                     const float zq = zm.clamped(sx >> m, sy >> m);
                     if (std::isinf(zq)) continue;  // sky occludes nothing
-                    const Vec3 v = sub(pos(sx, sy, zq), c);
+                    const Vec3 v = sub(pos.at(sx, sy, zq), c);
                     sum += est.term(dot(v, v), dot(v, n), zc);
                 }
-                a = est.finish(sum);
-                out(i, j) = a;
+                out(i, j) = est.finish(sum);
             }
         }
     });

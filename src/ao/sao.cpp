@@ -74,6 +74,23 @@ ImageF saoSamplePass(const std::vector<ImageF>& pyramid, const Projection& proj,
     return detail::samplePass(pyramid, proj, region, setup, est, exec);
 }
 
+std::vector<Vec3> faceNormals(ImageView<const float> z, const Projection& proj, const Exec& exec) {
+    if (z.width() != proj.width || z.height() != proj.height)
+        throw Error(fmt::format("faceNormals: z is {}x{}, the projection {}x{}", z.width(), z.height(), proj.width,
+                                proj.height));
+    std::vector<Vec3> out(std::size_t(z.width()) * std::size_t(z.height()), Vec3{0, 0, 0});
+    const detail::PositionTables pos(proj);
+    parallelRows(z.height(), exec, [&](int y0, int y1) {
+        for (int y = y0; y < y1; ++y)
+            for (int x = 0; x < z.width(); ++x) {
+                Vec3 n;
+                if (!std::isinf(z(x, y)) && detail::faceNormal(z, pos, x, y, n))
+                    out[std::size_t(y) * std::size_t(z.width()) + std::size_t(x)] = n;
+            }
+    });
+    return out;
+}
+
 void quadBilateral(ImageF& a, ImageView<const float> z, Region region, float threshold) {
     // A GPU does this with derivatives inside each 2x2 quad: A -= dFdx(A) * ((x & 1) - 0.5)
     // where |dFdx(z)| < threshold, then the same in y on the result: the average of the

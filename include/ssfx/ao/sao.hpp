@@ -68,6 +68,10 @@ void validate(const SaoParams& p);
 ImageF saoSamplePass(const std::vector<ImageF>& pyramid, const Projection& proj, Region region, const SaoParams& p,
                      const Exec& exec = {});
 
+//! The face normals the sample pass uses (paper eq. 4, quad-pair differences), for every
+//! pixel of the z buffer; (0, 0, 0) where none can be formed. Row-major.
+std::vector<Vec3> faceNormals(ImageView<const float> z, const Projection& proj, const Exec& exec = {});
+
 //! The 2x2 quad bilateral (end of section 2.3): within each 2x2 quad of the *buffer* grid,
 //! where |dz| < threshold, A is averaged over the pair in x, then in y. In place.
 void quadBilateral(ImageF& a, ImageView<const float> z, Region region, float threshold);
