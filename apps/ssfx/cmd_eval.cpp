@@ -8,6 +8,7 @@
 #include <map>
 
 #include "commands.hpp"
+#include "ssfx/eval/ao_experiments.hpp"
 #include "ssfx/eval/kernels.hpp"
 #include "ssfx/eval/quality.hpp"
 #include "ssfx/eval/report.hpp"
@@ -210,6 +211,24 @@ void addReport(CLI::App& eval) {
     });
 }
 
+void addAo(CLI::App& eval) {
+    auto o = std::make_shared<eval::AoExperimentOptions>();
+    auto threads = std::make_shared<int>(0);
+    auto* cmd = eval.add_subcommand("ao", "The SAO paper's experiments on analytic scenes (z and normal precision, "
+                                          "pyramid filters, radius scaling, pass times, accuracy)");
+    cmd->add_option("--out", o->outDir, "Output directory: images/, plots/, data/ao.json, data/ao.md")->required();
+    cmd->add_flag("--quick", o->quick, "Small sizes and few repetitions (tests)");
+    cmd->add_option("--threads", *threads, "Worker threads (0 = all)")->check(CLI::Range(0, 1024));
+    cmd->footer("Scenes: 'corner' (floor meeting a wall) and 'room' (walls, boxes from 5 cm to 2 m, a stair, a\n"
+                "column, spheres), ray cast exactly; the ground truth is ray-traced obscurance with SAO's\n"
+                "falloff (docs/evaluation.md).");
+    cmd->callback([o, threads] {
+        o->exec = Exec{*threads};
+        o->progress = progressLine;
+        fmt::print("{}", eval::runAoExperiments(*o));
+    });
+}
+
 }  // namespace
 
 void addEvalCommand(CLI::App& app) {
@@ -220,6 +239,7 @@ void addEvalCommand(CLI::App& app) {
     addKernels(*eval);
     addSpeed(*eval);
     addReport(*eval);
+    addAo(*eval);
 }
 
 }  // namespace ssfx::cli

@@ -41,6 +41,15 @@ double zToDepth(double z, const Camera& c) {
     return (c.zNear * c.zFar / z - c.zFar) / (c.zNear - c.zFar);
 }
 
+double quantizeDepth(double d, DepthFormat f) {
+    d = std::clamp(d, 0.0, 1.0);
+    switch (f) {
+        case DepthFormat::D16: return std::nearbyint(d * 65535.0) / 65535.0;
+        case DepthFormat::D24: return std::nearbyint(d * 16777215.0) / 16777215.0;
+        default: return double(float(d));
+    }
+}
+
 ImageF depthToZ(ImageView<const float> depth, const Camera& camera, const Exec& exec) {
     const Projection p = projection(camera, depth.width(), depth.height());
     ImageF z(depth.width(), depth.height());

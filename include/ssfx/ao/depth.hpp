@@ -53,6 +53,16 @@ ImageF depthToZ(ImageView<const float> depth, const Camera& camera, const Exec& 
 //! The inverse, for tests and synthetic buffers: the depth a point at camera-space z gets.
 double zToDepth(double z, const Camera& camera);
 
+//! Depth buffer formats of the precision experiment (paper section 2.1, Figure 3).
+enum class DepthFormat {
+    D16,   //!< 16-bit unorm: round(d * 65535) / 65535
+    D24,   //!< 24-bit unorm: round(d * (2^24 - 1)) / (2^24 - 1)
+    D32F,  //!< 32-bit float: d rounded to float32
+};
+//! The value a depth buffer of `format` stores for the exact depth d, exactly (in double;
+//! a float32 view of a 24-bit value would add its own rounding).
+double quantizeDepth(double d, DepthFormat format);
+
 //! Pass 2 filters: the paper's default and its Table 1 alternatives.
 enum class PyramidFilter {
     RotatedGrid,   //!< level m+1 (x, y) = level m (2x + (y & 1), 2y + (x & 1)): a real scene value

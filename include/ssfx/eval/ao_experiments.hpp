@@ -1,0 +1,43 @@
+// The SAO paper's experiments (spec sao.md "Experiments to reproduce"), on the analytic
+// scenes of ao_scenes.hpp until the Vulkan scene renderer provides real ones:
+//   Figure 3  z precision: camera-space z error vs distance for D16 / D24 / D32F depth,
+//             each with a finite and an infinite far plane;
+//   Figure 4  normal precision: angle between reconstructed (quad-pair) and true face
+//             normals, within faces;
+//   Table 1   z pyramid filters: AO images and x4 difference images, with their error
+//             against the ray-traced truth;
+//   Figure 5  AO sample-pass time vs world-space radius (AlchemyAO, SAO without and with
+//             the pyramid);
+//   Table 3   per-pass times at 1280x720 ... 2560x1600 with the paper's guard bands;
+//   accuracy  SAO and AlchemyAO against the ray-traced ground truth (MSE, PSNR).
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "ssfx/core/parallel.hpp"
+
+namespace ssfx::eval {
+
+struct AoExperimentOptions {
+    std::string outDir;   //!< images/, plots/, data/ are written here
+    bool quick = false;   //!< small sizes and few repetitions (tests)
+    Exec exec;
+    std::function<void(const std::string&)> progress;
+};
+
+//! Runs every experiment, writes the images, plots and data/ao.json, data/ao.md, and
+//! returns the Markdown (the same as data/ao.md).
+std::string runAoExperiments(const AoExperimentOptions& options);
+
+//! Figure 3 alone: the largest |z error| (mm) at each distance, per series
+//! ("D16 finite", "D16 infinite", ...), near plane 0.1 m, finite far plane 1000 m.
+struct ZPrecision {
+    std::vector<double> distances;           //!< m
+    std::vector<std::string> series;
+    std::vector<std::vector<double>> errorMm;  //!< [series][distance]
+};
+ZPrecision zPrecisionExperiment();
+
+}  // namespace ssfx::eval

@@ -1,0 +1,373 @@
+// The SAO paper's experiments on analytic scenes (see ao_experiments.hpp).
+#include "ssfx/eval/ao_experiments.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "ssfx/ao/alchemy.hpp"
+#include "ssfx/ao/raytraced.hpp"
+#include "ssfx/ao/sao.hpp"
+#include "ssfx/eval/ao_scenes.hpp"
+#include "ssfx/eval/plot.hpp"
+#include "ssfx/eval/timing.hpp"
+#include "ssfx/io/png.hpp"
+
+namespace ssfx::eval {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+const char* formatName(ao::DepthFormat f) {
+    return f == ao::DepthFormat::D16 ? "D16" : f == ao::DepthFormat::D24 ? "D24" : "D32F";
+}
+constexpr ao::DepthFormat kFormats[] = {ao::DepthFormat::D16, ao::DepthFormat::D24, ao::DepthFormat::D32F};
+
+void writeText(const fs::path& path, const std::string& text) {
+    io::writeFileAtomic(path.string(), {reinterpret_cast<const std::uint8_t*>(text.data()), text.size()});
+}
+
+ImageRgba8 grey(const ImageF& a, float offset = 0.0f, float gain = 1.0f) {
+    ImageRgba8 out(a.width(), a.height());
+    for (int y = 0; y < a.height(); ++y)
+        for (int x = 0; x < a.width(); ++x) {
+            const float v = std::clamp(offset + gain * a(x, y), 0.0f, 1.0f);
+            const auto g = std::uint8_t(std::lround(v * 255.0f));
+            out(x, y) = {g, g, g, 255};
+        }
+    return out;
+}
+
+ImageF difference(const ImageF& a, const ImageF& b) {
+    ImageF d(a.width(), a.height());
+    for (int y = 0; y < a.height(); ++y)
+        for (int x = 0; x < a.width(); ++x) d(x, y) = a(x, y) - b(x, y);
+    return d;
+}
+
+double mseF(const ImageF& a, const ImageF& b) {
+    double s = 0;
+    for (std::size_t i = 0; i < a.pixels().size(); ++i) {
+        const double d = double(a.pixels()[i]) - double(b.pixels()[i]);
+        s += d * d;
+    }
+    return s / double(a.pixels().size());
+}
+double psnrOf(double mse) { return mse <= 0 ? INFINITY : 10 * std::log10(1 / mse); }
+
+// Hardware depth of `g` stored in `format` (from the exact z, not from the float depth).
+ImageF depthIn(const GeometryBuffer& g, const ao::Camera& cam, ao::DepthFormat format) {
+    ImageF d(g.z.width(), g.z.height());
+    for (int y = 0; y < d.height(); ++y)
+        for (int x = 0; x < d.width(); ++x)
+            d(x, y) = std::isinf(g.z(x, y)) ? 1.0f : float(ao::quantizeDepth(ao::zToDepth(g.z(x, y), cam), format));
+    return d;
+}
+
+template <class Fn>
+double medianMs(int reps, const Fn& fn) {
+    std::vector<double> t;
+    for (int i = 0; i < reps; ++i) {
+        const auto a = Clock::now();
+        fn();
+        t.push_back(std::chrono::duration<double, std::milli>(Clock::now() - a).count());
+    }
+    return median(t);
+}
+
+std::string mdRow(const std::vector<std::string>& cells) {
+    std::string s = "|";
+    for (const auto& c : cells) s += " " + c + " |";
+    return s + "\n";
+}
+std::string mdHead(const std::vector<std::string>& cells) {
+    std::string s = mdRow(cells) + "|---|";
+    for (std::size_t i = 1; i < cells.size(); ++i) s += "---:|";
+    return s + "\n";
+}
+
+}  // namespace
+
+ZPrecision zPrecisionExperiment() {
+    ZPrecision r;
+    for (int i = 0; i < 24; ++i) r.distances.push_back(0.2 * std::pow(2500.0, i / 23.0));  // 0.2 .. 500 m
+    for (ao::DepthFormat f : kFormats)
+        for (bool infinite : {false, true}) {
+            ao::Camera cam;
+            cam.zNear = -0.1;
+            cam.zFar = infinite ? -INFINITY : -1000.0;
+            const ao::Projection p = ao::projection(cam, 1, 1);
+            r.series.push_back(fmt::format("{} {}", formatName(f), infinite ? "infinite" : "finite"));
+            std::vector<double> errs;
+            for (double d : r.distances) {
+                double worst = 0;
+                for (int k = 0; k < 256; ++k) {
+                    const double z = -d * (1.0 + 0.1 * k / 255.0);
+                    const double dq = ao::quantizeDepth(ao::zToDepth(z, cam), f);
+                    const double zr = p.c0 / (dq * p.c1 + p.c2);
+                    worst = std::max(worst, std::abs(zr - z) * 1000.0);
+                }
+                errs.push_back(worst);
+            }
+            r.errorMm.push_back(errs);
+        }
+    return r;
+}
+
+std::string runAoExperiments(const AoExperimentOptions& o) {
+    if (o.outDir.empty()) throw Error("eval ao: no output directory");
+    const fs::path out(o.outDir);
+    for (const char* sub : {"images", "plots", "data"}) fs::create_directories(out / sub);
+    auto say = [&](const std::string& s) {
+        if (o.progress) o.progress(s);
+    };
+    nlohmann::ordered_json j;
+    std::string md;
+    const ao::Camera cam;  // 60 degree vertical field of view, near 0.1 m, infinite far plane
+
+    // ---- Figure 3: z precision ----------------------------------------------------------
+    say("ao: z precision (Figure 3)");
+    const ZPrecision zp = zPrecisionExperiment();
+    {
+        std::vector<Series> series;
+        for (std::size_t s = 0; s < zp.series.size(); ++s) {
+            std::vector<double> logErr;
+            for (double e : zp.errorMm[s]) logErr.push_back(std::max(e, 1e-6));
+            series.push_back({zp.series[s], logErr});
+        }
+        std::vector<double> logDist;
+        for (double d : zp.distances) logDist.push_back(std::log10(d));
+        io::writePng((out / "plots" / "ao_z_precision.png").string(),
+                     lineChart(logDist, series,
+                               {880, 420, "Largest camera-space z error vs distance (near plane 0.1 m)",
+                                "log10 distance (m)", "error (mm), log scale", true, true})
+                         .view());
+        md += "### z precision (paper Figure 3)\n\nLargest |z error| in mm over 256 points within 10 % beyond each "
+              "distance; near plane 0.1 m, finite far plane 1000 m.\n\n";
+        std::vector<std::string> head{"series"};
+        const std::size_t picks[] = {0, 5, 9, 13, 17, 21, 23};
+        for (std::size_t i : picks) head.push_back(fmt::format("{:.3g} m", zp.distances[i]));
+        md += mdHead(head);
+        for (std::size_t s = 0; s < zp.series.size(); ++s) {
+            std::vector<std::string> row{zp.series[s]};
+            for (std::size_t i : picks) row.push_back(fmt::format("{:.3g}", zp.errorMm[s][i]));
+            md += mdRow(row);
+        }
+        j["z_precision"] = {{"distances_m", zp.distances}, {"series", zp.series}, {"error_mm", zp.errorMm}};
+    }
+
+    // ---- Figure 4: normal precision ------------------------------------------------------
+    say("ao: normal precision (Figure 4)");
+    const int nw = o.quick ? 320 : 1280, nh = o.quick ? 180 : 720;
+    const AnalyticScene room = roomScene();
+    {
+        const GeometryBuffer g = castGeometry(room, cam, nw, nh, o.exec);
+        const ao::Projection proj = ao::projection(cam, nw, nh);
+        md += fmt::format("\n### Normal precision (paper Figure 4)\n\nAngle (degrees) between the face normal "
+                          "reconstructed from z by quad-pair differences and the true normal, at {}x{} on the "
+                          "analytic room, over pixels whose 2x2 quad lies within one face.\n\n",
+                          nw, nh);
+        md += mdHead({"depth format", "pixels", "mean", "99th percentile", "max"});
+        for (ao::DepthFormat f : kFormats) {
+            const ImageF z = ao::depthToZ(depthIn(g, cam, f).view(), cam, o.exec);
+            const std::vector<ao::Vec3> n = ao::faceNormals(z.view(), proj, o.exec);
+            std::vector<double> errs;
+            for (int y = 0; y < nh; ++y)
+                for (int x = 0; x < nw; ++x) {
+                    // Within one face: the quad's pixels all hit, with the same true normal
+                    // and on the same plane.
+                    const int xa = x & ~1, ya = y & ~1;
+                    if (xa + 1 >= nw || ya + 1 >= nh) continue;
+                    const ao::Vec3d tn = g.normals[std::size_t(y) * std::size_t(nw) + std::size_t(x)];
+                    bool same = !std::isinf(g.z(x, y));
+                    double plane = 0;
+                    for (int k = 0; k < 4 && same; ++k) {
+                        const int qx = xa + (k & 1), qy = ya + (k >> 1);
+                        const ao::Vec3d qn = g.normals[std::size_t(qy) * std::size_t(nw) + std::size_t(qx)];
+                        const ao::Vec3d dir = ao::primaryRay(proj, float(qx) + 0.5f, float(qy) + 0.5f);
+                        const double t = double(g.z(qx, qy)) / dir.z;
+                        const double dist = tn.x * dir.x * t + tn.y * dir.y * t + tn.z * dir.z * t;
+                        same = !std::isinf(g.z(qx, qy)) && qn.x == tn.x && qn.y == tn.y && qn.z == tn.z &&
+                               (k == 0 || std::abs(dist - plane) < 1e-3 * std::abs(g.z(x, y)));
+                        if (k == 0) plane = dist;
+                    }
+                    const ao::Vec3 rn = n[std::size_t(y) * std::size_t(nw) + std::size_t(x)];
+                    if (!same || (rn.x == 0 && rn.y == 0 && rn.z == 0)) continue;
+                    const double c = std::clamp(double(rn.x) * tn.x + double(rn.y) * tn.y + double(rn.z) * tn.z, -1.0, 1.0);
+                    errs.push_back(std::acos(c) * 180 / M_PI);
+                }
+            std::sort(errs.begin(), errs.end());
+            double mean = 0;
+            for (double e : errs) mean += e / double(errs.size());
+            const double p99 = errs.empty() ? 0 : errs[std::size_t(double(errs.size() - 1) * 0.99)];
+            const double mx = errs.empty() ? 0 : errs.back();
+            md += mdRow({formatName(f), std::to_string(errs.size()), fmt::format("{:.4f}", mean),
+                         fmt::format("{:.4f}", p99), fmt::format("{:.4f}", mx)});
+            j["normal_precision"][formatName(f)] = {
+                {"pixels", errs.size()}, {"mean_deg", mean}, {"p99_deg", p99}, {"max_deg", mx}};
+        }
+    }
+
+    // ---- Table 1 and accuracy: pyramid filters and baselines against the ray-traced truth --
+    const int aw = o.quick ? 192 : 960, ah = o.quick ? 108 : 540, guard = o.quick ? 16 : 64;
+    const int rays = o.quick ? 32 : 256;
+    md += fmt::format("\n### Accuracy against the ray-traced truth; z pyramid filters (paper Table 1)\n\n"
+                      "PSNR (dB) of A against the ray-traced obscurance ({} cosine-weighted rays per pixel, same "
+                      "radius r = 1 m and falloff) at {}x{} with a {} px guard band. Images: "
+                      "images/ao_SCENE_METHOD.png, differences from SAO without a pyramid x4 around grey: "
+                      "images/ao_SCENE_METHOD_diff.png.\n\n",
+                      rays, aw, ah, guard);
+    struct Variant {
+        std::string name;
+        bool sao, pyramid;
+        ao::PyramidFilter filter;
+    };
+    const std::vector<Variant> variants{{"alchemy", false, false, ao::PyramidFilter::RotatedGrid},
+                                        {"sao, no pyramid", true, false, ao::PyramidFilter::RotatedGrid},
+                                        {"sao, rotated grid", true, true, ao::PyramidFilter::RotatedGrid},
+                                        {"sao, mean", true, true, ao::PyramidFilter::Mean},
+                                        {"sao, harmonic mean", true, true, ao::PyramidFilter::HarmonicMean},
+                                        {"sao, min", true, true, ao::PyramidFilter::Min},
+                                        {"sao, max", true, true, ao::PyramidFilter::Max}};
+    const std::vector<std::string> scenes{"corner", "room"};
+    std::vector<std::vector<double>> psnrTable(variants.size(), std::vector<double>(scenes.size()));
+    for (std::size_t si = 0; si < scenes.size(); ++si) {
+        const AnalyticScene scene = analyticSceneByName(scenes[si]);
+        say(fmt::format("ao: {} ray-traced truth ({} rays per pixel)", scenes[si], rays));
+        const GeometryBuffer g = castGeometry(scene, cam, aw + 2 * guard, ah + 2 * guard, o.exec);
+        ao::RaytracedParams rp;
+        rp.raysPerPixel = rays;
+        rp.guardBand = guard;
+        const ImageF truth = ao::raytraced(scene, cam, aw + 2 * guard, ah + 2 * guard, rp, o.exec);
+        io::writePng((out / "images" / fmt::format("ao_{}_raytraced.png", scenes[si])).string(), grey(truth).view());
+        ImageF noPyramid;
+        for (std::size_t v = 0; v < variants.size(); ++v) {
+            ImageF a;
+            if (variants[v].sao) {
+                ao::SaoParams p;
+                p.guardBand = guard;
+                p.usePyramid = variants[v].pyramid;
+                p.pyramidFilter = variants[v].filter;
+                a = ao::sao(g.depth.view(), cam, p, o.exec);
+            } else {
+                ao::AlchemyParams p;
+                p.guardBand = guard;
+                a = ao::alchemy(g.depth.view(), cam, p, o.exec);
+            }
+            if (v == 1) noPyramid = ImageF::copyOf(a.view());
+            psnrTable[v][si] = psnrOf(mseF(a, truth));
+            std::string file = variants[v].name;
+            std::replace(file.begin(), file.end(), ' ', '_');
+            file.erase(std::remove(file.begin(), file.end(), ','), file.end());
+            io::writePng((out / "images" / fmt::format("ao_{}_{}.png", scenes[si], file)).string(), grey(a).view());
+            if (v >= 2)
+                io::writePng((out / "images" / fmt::format("ao_{}_{}_diff.png", scenes[si], file)).string(),
+                             grey(difference(a, noPyramid), 0.5f, 4.0f).view());
+            j["accuracy"][scenes[si]][variants[v].name] = {{"psnr_vs_raytraced", psnrTable[v][si]}};
+        }
+    }
+    md += mdHead({"method", "corner", "room"});
+    for (std::size_t v = 0; v < variants.size(); ++v)
+        md += mdRow({variants[v].name, fmt::format("{:.2f}", psnrTable[v][0]), fmt::format("{:.2f}", psnrTable[v][1])});
+
+    // ---- Figure 5: AO pass time vs radius -----------------------------------------------
+    const int fw = o.quick ? 320 : 2560, fh = o.quick ? 200 : 1600, reps = o.quick ? 1 : 3;
+    say(fmt::format("ao: sample-pass time vs radius at {}x{} (Figure 5)", fw, fh));
+    const std::vector<double> radii{0.1, 0.25, 0.5, 1.0, 1.5, 2.0, 3.0, 4.0};
+    std::vector<Series> timing{{"alchemy", {}}, {"sao, no pyramid", {}}, {"sao", {}}};
+    {
+        const GeometryBuffer g = castGeometry(room, cam, fw, fh, o.exec);
+        const ao::Projection proj = ao::projection(cam, fw, fh);
+        const ImageF z = ao::depthToZ(g.depth.view(), cam, o.exec);
+        const auto pyr = ao::zPyramid(z.view(), 5, ao::PyramidFilter::RotatedGrid, o.exec);
+        const std::vector<ImageF> level0{ImageF::copyOf(z.view())};
+        const ao::Region all{0, 0, fw, fh};
+        for (double r : radii) {
+            ao::AlchemyParams ap;
+            ap.radius = float(r);
+            ao::SaoParams sp;
+            sp.radius = float(r);
+            ao::SaoParams flat = sp;
+            flat.usePyramid = false;
+            timing[0].values.push_back(medianMs(reps, [&] { ao::alchemySamplePass(z.view(), proj, all, ap, o.exec); }));
+            timing[1].values.push_back(medianMs(reps, [&] { ao::saoSamplePass(level0, proj, all, flat, o.exec); }));
+            timing[2].values.push_back(medianMs(reps, [&] { ao::saoSamplePass(pyr, proj, all, sp, o.exec); }));
+        }
+        io::writePng((out / "plots" / "ao_radius_scaling.png").string(),
+                     lineChart(radii, timing,
+                               {880, 420, fmt::format("AO sample pass time vs radius, {}x{}", fw, fh),
+                                "world-space radius (m)", "median time (ms)", false, true})
+                         .view());
+        md += fmt::format("\n### Sample-pass time vs radius (paper Figure 5), {}x{}, median of {} (ms)\n\n", fw, fh,
+                          reps);
+        std::vector<std::string> head{"method"};
+        for (double r : radii) head.push_back(fmt::format("{} m", r));
+        md += mdHead(head);
+        for (const auto& s : timing) {
+            std::vector<std::string> row{s.name};
+            for (double v : s.values) row.push_back(fmt::format("{:.1f}", v));
+            md += mdRow(row);
+            j["radius_scaling"][s.name] = s.values;
+        }
+        const double saoFlat = timing[2].values[7] / timing[2].values[1];
+        const double alchemyGrowth = timing[0].values[7] / timing[0].values[1];
+        const double speedup = timing[0].values[4] / timing[2].values[4];
+        md += fmt::format("\nTime at r = 4 m over r = 0.25 m: sao {:.2f}x, alchemy {:.2f}x. alchemy / sao at "
+                          "r = 1.5 m: {:.2f}x.\n",
+                          saoFlat, alchemyGrowth, speedup);
+        j["radius_scaling"]["radii_m"] = radii;
+        j["radius_scaling"]["sao_r4_over_r025"] = saoFlat;
+        j["radius_scaling"]["alchemy_r4_over_r025"] = alchemyGrowth;
+        j["radius_scaling"]["alchemy_over_sao_r15"] = speedup;
+    }
+
+    // ---- Table 3: per-pass times with guard bands ---------------------------------------
+    say("ao: per-pass times (Table 3)");
+    struct Res {
+        int w, h, g;
+    };
+    const std::vector<Res> sizes = o.quick ? std::vector<Res>{{320, 180, 32}}
+                                           : std::vector<Res>{{1280, 720, 128}, {1920, 1080, 192},
+                                                              {1920, 1200, 192}, {2560, 1600, 256}};
+    md += fmt::format("\n### Per-pass times (paper Table 3), r = 1 m, median of {} runs (ms), {} threads\n\n",
+                      reps + 2, resolvedThreads(o.exec));
+    md += mdHead({"resolution", "guard band", "pixels incl. guard", "z", "z pyramid", "AO samples + 2x2", "blur",
+                  "total", "ns per visible pixel"});
+    for (const Res& r : sizes) {
+        const int bw = r.w + 2 * r.g, bh = r.h + 2 * r.g;
+        const GeometryBuffer g = castGeometry(room, cam, bw, bh, o.exec);
+        ao::SaoParams p;
+        p.guardBand = r.g;
+        std::vector<ao::SaoTimings> runs;
+        for (int k = 0; k < reps + 2; ++k) {
+            ao::SaoTimings t{};
+            ao::sao(g.depth.view(), cam, p, o.exec, &t);
+            runs.push_back(t);
+        }
+        auto med = [&](double ao::SaoTimings::*f) {
+            std::vector<double> v;
+            for (const auto& t : runs) v.push_back(t.*f);
+            return median(v);
+        };
+        const double total = med(&ao::SaoTimings::total);
+        md += mdRow({fmt::format("{}x{}", r.w, r.h), std::to_string(r.g), std::to_string(std::int64_t{bw} * bh),
+                     fmt::format("{:.1f}", med(&ao::SaoTimings::z)), fmt::format("{:.1f}", med(&ao::SaoTimings::pyramid)),
+                     fmt::format("{:.1f}", med(&ao::SaoTimings::sample)), fmt::format("{:.1f}", med(&ao::SaoTimings::blur)),
+                     fmt::format("{:.1f}", total), fmt::format("{:.0f}", total * 1e6 / (double(r.w) * r.h))});
+        j["pass_times"][fmt::format("{}x{}", r.w, r.h)] = {
+            {"guard", r.g},           {"z_ms", med(&ao::SaoTimings::z)},         {"pyramid_ms", med(&ao::SaoTimings::pyramid)},
+            {"sample_ms", med(&ao::SaoTimings::sample)}, {"blur_ms", med(&ao::SaoTimings::blur)}, {"total_ms", total}};
+    }
+
+    writeText(out / "data" / "ao.json", j.dump(1) + "\n");
+    writeText(out / "data" / "ao.md", md);
+    return md;
+}
+
+}  // namespace ssfx::eval
