@@ -1,0 +1,57 @@
+// The SAO experiments: z precision by its known shape, and a quick full run writing its files.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "ssfx/ao/depth.hpp"
+#include "ssfx/eval/ao_experiments.hpp"
+#include "support/test_support.hpp"
+
+using namespace ssfx;
+
+TEST(AoExperiments, QuantizeDepthByHand) {
+    // 16-bit: 0.5 * 65535 = 32767.5 rounds to even, 32768; 24-bit: 0.25 * (2^24 - 1) =
+    // 4194303.75 -> 4194304.
+    EXPECT_DOUBLE_EQ(ao::quantizeDepth(0.5, ao::DepthFormat::D16), 32768.0 / 65535.0);
+    EXPECT_DOUBLE_EQ(ao::quantizeDepth(0.25, ao::DepthFormat::D24), 4194304.0 / 16777215.0);
+    EXPECT_DOUBLE_EQ(ao::quantizeDepth(1.0 / 3.0, ao::DepthFormat::D32F), double(float(1.0 / 3.0)));
+    EXPECT_EQ(ao::quantizeDepth(1.5, ao::DepthFormat::D16), 1.0);
+}
+
+TEST(AoExperiments, ZPrecisionHasTheExpectedShape) {
+    const auto zp = eval::zPrecisionExperiment();
+    ASSERT_EQ(zp.series.size(), 6u);  // D16, D24, D32F x finite, infinite
+    ASSERT_EQ(zp.errorMm[0].size(), zp.distances.size());
+    for (std::size_t s = 0; s < 6; ++s) {
+        // The error of a standard (not reversed) depth mapping grows roughly with z^2.
+        EXPECT_LT(zp.errorMm[s].front() * 1000, zp.errorMm[s].back()) << zp.series[s];
+    }
+    for (std::size_t i = 0; i < zp.distances.size(); ++i) {
+        EXPECT_GT(zp.errorMm[0][i], 10 * zp.errorMm[2][i]);  // 16-bit is far worse than 24-bit
+        // An infinite far plane costs almost nothing (paper section 2.1).
+        EXPECT_LT(zp.errorMm[3][i], 1.5 * zp.errorMm[2][i] + 1e-9);
+        if (zp.distances[i] < 10) EXPECT_LT(zp.errorMm[2][i], 0.1);  // D24: < 0.1 mm within 10 m
+    }
+}
+
+TEST(AoExperiments, QuickRunWritesItsFiles) {
+    const std::string dir = test::outDir() + "/ao_quick";
+    std::filesystem::remove_all(dir);
+    eval::AoExperimentOptions o;
+    o.outDir = dir;
+    o.quick = true;
+    const std::string md = eval::runAoExperiments(o);
+    for (const char* f : {"data/ao.json", "data/ao.md", "plots/ao_z_precision.png", "plots/ao_radius_scaling.png",
+                          "images/ao_room_raytraced.png", "images/ao_room_sao_rotated_grid.png",
+                          "images/ao_corner_sao_min_diff.png"})
+        EXPECT_TRUE(std::filesystem::exists(dir + "/" + f)) << f;
+    std::ifstream in(dir + "/data/ao.json");
+    std::stringstream ss;
+    ss << in.rdbuf();
+    for (const char* key : {"\"z_precision\"", "\"normal_precision\"", "\"accuracy\"", "\"radius_scaling\"",
+                            "\"pass_times\""})
+        EXPECT_NE(ss.str().find(key), std::string::npos) << key;
+    EXPECT_NE(md.find("Normal precision"), std::string::npos);
+}
