@@ -32,7 +32,9 @@ TEST(AoExperiments, ZPrecisionHasTheExpectedShape) {
         EXPECT_GT(zp.errorMm[0][i], 10 * zp.errorMm[2][i]);  // 16-bit is far worse than 24-bit
         // An infinite far plane costs almost nothing (paper section 2.1).
         EXPECT_LT(zp.errorMm[3][i], 1.5 * zp.errorMm[2][i] + 1e-9);
-        if (zp.distances[i] < 10) EXPECT_LT(zp.errorMm[2][i], 0.1);  // D24: < 0.1 mm within 10 m
+        if (zp.distances[i] < 10) {
+            EXPECT_LT(zp.errorMm[2][i], 0.1);  // D24: < 0.1 mm within 10 m
+        }
     }
 }
 
