@@ -17,5 +17,6 @@ void addBenchCommand(CLI::App& app);
 void addTestsceneCommand(CLI::App& app);
 void addTestimagesCommand(CLI::App& app);
 void addEvalCommand(CLI::App& app);
+void addAoCommand(CLI::App& app);
 
 }  // namespace ssfx::cli

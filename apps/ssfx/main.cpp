@@ -11,7 +11,7 @@
 
 int main(int argc, char** argv) {
     ssfx::tuneAllocatorForImages();  // frames and benchmark repetitions reuse their buffers
-    CLI::App app{"ssfx: screen-space rendering effects (post-processing anti-aliasing, resolves)\n"
+    CLI::App app{"ssfx: screen-space rendering effects (post-processing anti-aliasing, resolves, ambient obscurance)\n"
                  "Run 'ssfx <command> --help' for the options of a command.",
                  "ssfx"};
     app.require_subcommand(1);
@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
     ssfx::cli::addBenchCommand(app);
     ssfx::cli::addTestsceneCommand(app);
     ssfx::cli::addTestimagesCommand(app);
+    ssfx::cli::addAoCommand(app);
     ssfx::cli::addEvalCommand(app);
     try {
         app.parse(argc, argv);

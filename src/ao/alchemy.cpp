@@ -43,6 +43,27 @@ void validate(const AlchemyParams& p) {
     validate(blurCheck);
 }
 
+void setParam(AlchemyParams& p, const std::string& name, double v) {
+    const auto f = float(v);
+    const int i = int(std::lround(v));
+    if (name == "radius") p.radius = f;
+    else if (name == "sigma") p.sigma = f;
+    else if (name == "beta") p.beta = f;
+    else if (name == "epsilon") p.epsilon = f;
+    else if (name == "k") p.k = f;
+    else if (name == "numSamples") p.numSamples = i;
+    else if (name == "numSpiralTurns") p.numSpiralTurns = i;
+    else if (name == "blurRadius") p.blur.blurRadius = i;
+    else if (name == "blurStride") p.blur.blurStride = i;
+    else if (name == "blurSigma") p.blur.blurSigma = f;
+    else if (name == "edgeSharpness") p.blur.edgeSharpness = f;
+    else if (name == "guardBand") p.guardBand = i;
+    else
+        throw Error(fmt::format("alchemy: unknown parameter '{}' (radius, sigma, beta, epsilon, k, numSamples, "
+                                "numSpiralTurns, blurRadius, blurStride, blurSigma, edgeSharpness, guardBand)",
+                                name));
+}
+
 ImageF alchemySamplePass(ImageView<const float> z, const Projection& proj, Region region, const AlchemyParams& p,
                          const Exec& exec) {
     validate(p);

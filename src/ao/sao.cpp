@@ -64,6 +64,31 @@ void validate(const SaoParams& p) {
     checkRange("guardBand", p.guardBand, 0, 4096);
 }
 
+void setParam(SaoParams& p, const std::string& name, double v) {
+    const auto f = float(v);
+    const int i = int(std::lround(v));
+    if (name == "radius") p.radius = f;
+    else if (name == "bias") p.bias = f;
+    else if (name == "epsilon") p.epsilon = f;
+    else if (name == "intensity") p.intensity = f;
+    else if (name == "numSamples") p.numSamples = i;
+    else if (name == "numSpiralTurns") p.numSpiralTurns = i;
+    else if (name == "logQ") p.logQ = i;
+    else if (name == "maxMip") p.maxMip = i;
+    else if (name == "usePyramid") p.usePyramid = v != 0;
+    else if (name == "quadThreshold") p.quadThreshold = f;
+    else if (name == "blurRadius") p.blur.blurRadius = i;
+    else if (name == "blurStride") p.blur.blurStride = i;
+    else if (name == "blurSigma") p.blur.blurSigma = f;
+    else if (name == "edgeSharpness") p.blur.edgeSharpness = f;
+    else if (name == "guardBand") p.guardBand = i;
+    else
+        throw Error(fmt::format("sao: unknown parameter '{}' (radius, bias, epsilon, intensity, numSamples, "
+                                "numSpiralTurns, logQ, maxMip, usePyramid, quadThreshold, blurRadius, blurStride, "
+                                "blurSigma, edgeSharpness, guardBand)",
+                                name));
+}
+
 ImageF saoSamplePass(const std::vector<ImageF>& pyramid, const Projection& proj, Region region, const SaoParams& p,
                      const Exec& exec) {
     validate(p);

@@ -18,8 +18,8 @@ contains() {  # contains NAME FILE TEXT
 }
 
 check help 0 "$SSFX" --help
-for c in aa methods bench testscene testimages eval; do check "help_$c" 0 "$SSFX" "$c" --help; done
-for c in quality temporal speed kernels report; do check "help_eval_$c" 0 "$SSFX" eval "$c" --help; done
+for c in aa methods bench testscene testimages eval ao; do check "help_$c" 0 "$SSFX" "$c" --help; done
+for c in quality temporal speed kernels report ao; do check "help_eval_$c" 0 "$SSFX" eval "$c" --help; done
 contains help_eval_quality "$OUT/help_eval_quality.out" "Mitchell"
 contains help_eval_temporal "$OUT/help_eval_temporal.out" "flicker"
 contains help_aa "$OUT/help_aa.out" "ddaa2"
@@ -98,6 +98,27 @@ check eval_nosub 2 "$SSFX" eval
 mkdir -p "$OUT/badset" && cp "$OUT/trunc.png" "$OUT/badset/c.png" && cp "$OUT/ti/circlesx8.png" "$OUT/badset/cx8.png"
 check quality_corrupt 2 "$SSFX" eval quality "$OUT/badset" --methods noaa
 contains quality_corrupt "$OUT/quality_corrupt.err" "c.png"
+
+# Ambient obscurance: an analytic scene, its depth and camera saved and read back, the
+# baseline, the ray-traced truth, EXR output; and errors.
+check ao_scene 0 "$SSFX" ao --scene room --size 96x54 -p guardBand=8 -o "$OUT/ao.png" --save-depth "$OUT/d.exr" --save-camera "$OUT/c.json"
+check ao_depth 0 "$SSFX" ao --depth "$OUT/d.exr" --camera "$OUT/c.json" -p guardBand=8 -o "$OUT/ao2.png"
+cmp -s "$OUT/ao.png" "$OUT/ao2.png" || { echo "FAIL ao_depth: SAO from the saved depth differs"; fail=1; }
+check ao_alchemy 0 "$SSFX" ao -m alchemy --depth "$OUT/d.exr" --camera "$OUT/c.json" -p guardBand=8 -o "$OUT/alch.exr"
+check ao_rt 0 "$SSFX" ao -m raytraced --scene corner --size 32x24 --rays 16 -o "$OUT/rt.png"
+check ao_rt_depth 2 "$SSFX" ao -m raytraced --depth "$OUT/d.exr" --camera "$OUT/c.json" -o "$OUT/x.png"
+check ao_badparam 2 "$SSFX" ao --scene room --size 32x24 -p radius=-2 -o "$OUT/x.png"
+contains ao_badparam "$OUT/ao_badparam.err" "radius"
+check ao_unknown 2 "$SSFX" ao --scene room --size 32x24 -p nope=1 -o "$OUT/x.png"
+check ao_ext 2 "$SSFX" ao --scene room --size 32x24 -o "$OUT/x.jpg"
+check ao_nocam 2 "$SSFX" ao --depth "$OUT/d.exr" -o "$OUT/x.png"
+check ao_truncated 2 "$SSFX" ao --depth "$OUT/trunc.png" --camera "$OUT/c.json" -o "$OUT/x.png"
+echo '{"fov_y_deg": 60, "zNear": -0.1}' > "$OUT/badcam.json"
+check ao_badcam 2 "$SSFX" ao --depth "$OUT/d.exr" --camera "$OUT/badcam.json" -o "$OUT/x.png"
+contains ao_badcam "$OUT/ao_badcam.err" "zNear"
+[ ! -e "$OUT/x.png" ] || { echo "FAIL ao: a failed run left x.png"; fail=1; }
+check eval_ao 0 "$SSFX" eval ao --quick --out "$OUT/evalao"
+contains eval_ao "$OUT/evalao/data/ao.md" "Normal precision"
 
 # An existing output survives a failed run untouched.
 cp "$OUT/ddaa2.png" "$OUT/keep.png"

@@ -8,6 +8,8 @@
 #pragma once
 
 #include "ssfx/ao/depth.hpp"
+#include <string>
+
 #include "ssfx/ao/sao.hpp"
 
 namespace ssfx::ao {
@@ -25,6 +27,8 @@ struct AlchemyParams {
 };
 
 void validate(const AlchemyParams& p);
+//! Sets a field by name (blur fields as for SaoParams); throws ssfx::Error for an unknown one.
+void setParam(AlchemyParams& p, const std::string& name, double value);
 
 //! The raw sample pass over `region` of the z buffer (before the blur).
 ImageF alchemySamplePass(ImageView<const float> z, const Projection& proj, Region region, const AlchemyParams& p,

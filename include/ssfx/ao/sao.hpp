@@ -12,6 +12,7 @@
 // same bytes for any thread count.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "ssfx/ao/depth.hpp"
@@ -61,6 +62,11 @@ float hashAngle(int x, int y);
 
 //! Throws ssfx::Error naming the first out-of-range field.
 void validate(const SaoParams& p);
+
+//! Sets a field by its name in the struct above (blur fields by their own names:
+//! blurRadius, blurStride, blurSigma, edgeSharpness; usePyramid 0/1); throws ssfx::Error
+//! listing the names for an unknown one. Ranges are checked by validate().
+void setParam(SaoParams& p, const std::string& name, double value);
 
 //! The raw AO sample pass over `region` of the z buffer (the pyramid's level 0): A per
 //! pixel of the region, before any filtering. Pixels whose normal cannot be formed (a

@@ -1,0 +1,128 @@
+// ssfx ao: ambient obscurance from a depth buffer (EXR + camera JSON) or an analytic scene.
+#include <fmt/format.h>
+
+#include <cmath>
+#include <filesystem>
+#include <optional>
+
+#include "commands.hpp"
+#include "ssfx/ao/alchemy.hpp"
+#include "ssfx/ao/raytraced.hpp"
+#include "ssfx/ao/sao.hpp"
+#include "ssfx/eval/ao_scenes.hpp"
+#include "ssfx/io/camera.hpp"
+#include "ssfx/io/exr.hpp"
+#include "ssfx/io/png.hpp"
+
+namespace ssfx::cli {
+
+namespace {
+
+struct AoOptions {
+    std::string method = "sao", depth, camera, scene, size, output, saveDepth, saveCamera;
+    std::vector<std::string> params;
+    double fovDeg = 60;
+    int threads = 0, rays = 256;
+};
+
+void writeAo(const std::string& path, const ImageF& a) {
+    const std::string ext = std::filesystem::path(path).extension().string();
+    if (ext == ".exr") {
+        io::writeExr(path, a.view(), "Y");
+    } else if (ext == ".png") {
+        ImageRgba8 img(a.width(), a.height());
+        for (int y = 0; y < a.height(); ++y)
+            for (int x = 0; x < a.width(); ++x) {
+                const auto g = std::uint8_t(std::lround(std::clamp(a(x, y), 0.0f, 1.0f) * 255.0f));
+                img(x, y) = {g, g, g, 255};
+            }
+        io::writePng(path, img.view());
+    } else {
+        throw Error(fmt::format("output '{}': use a .png (8-bit) or .exr (float) file name", path));
+    }
+}
+
+void run(const AoOptions& o) {
+    if (o.output.empty() && o.saveDepth.empty()) throw Error("no output file given (use -o FILE)");
+    if (o.method != "sao" && o.method != "alchemy" && o.method != "raytraced")
+        throw Error(fmt::format("unknown AO method '{}' (sao, alchemy, raytraced)", o.method));
+    if (o.scene.empty() == o.depth.empty()) throw Error("give either --depth FILE (with --camera) or --scene NAME");
+    const Exec exec{o.threads};
+    ao::SaoParams sp;
+    ao::AlchemyParams ap;
+    int guard = 0;
+    for (const auto& text : o.params) {
+        const auto [name, value] = parseParam(text);
+        if (name == "guardBand") guard = int(value);
+        if (o.method == "sao") ao::setParam(sp, name, value);
+        else if (o.method == "alchemy") ao::setParam(ap, name, value);
+        else if (name == "radius") continue;
+        else if (name != "guardBand") throw Error(fmt::format("raytraced: unknown parameter '{}' (radius, guardBand)", name));
+    }
+    ao::Camera cam;
+    ImageF depth;
+    std::optional<eval::AnalyticScene> scene;
+    if (!o.depth.empty()) {
+        if (o.method == "raytraced") throw Error("raytraced needs the geometry: use --scene");
+        if (o.camera.empty()) throw Error("--depth needs --camera FILE (JSON: fov_y_deg, z_near, z_far)");
+        cam = io::readCameraJson(o.camera);
+        depth = io::readExr(o.depth);
+    } else {
+        scene = eval::analyticSceneByName(o.scene);
+        int w = 0, h = 0;
+        char x = 0;
+        if (std::sscanf(o.size.c_str(), "%d%c%d", &w, &x, &h) != 3 || x != 'x' || w < 1 || h < 1 || w > 16384 || h > 16384)
+            throw Error(fmt::format("--size '{}' is not WIDTHxHEIGHT (1..16384)", o.size));
+        cam.fovY = o.fovDeg * M_PI / 180.0;
+        depth = eval::castGeometry(*scene, cam, w + 2 * guard, h + 2 * guard, exec).depth;
+    }
+    if (!o.saveDepth.empty()) io::writeExr(o.saveDepth, depth.view(), "Z");
+    if (!o.saveCamera.empty()) io::writeCameraJson(o.saveCamera, cam);
+    if (o.output.empty()) return;
+    ImageF a;
+    if (o.method == "sao") {
+        a = ao::sao(depth.view(), cam, sp, exec);
+    } else if (o.method == "alchemy") {
+        a = ao::alchemy(depth.view(), cam, ap, exec);
+    } else {
+        ao::RaytracedParams rp;
+        rp.radius = sp.radius;
+        for (const auto& text : o.params)
+            if (parseParam(text).first == "radius") rp.radius = float(parseParam(text).second);
+        rp.raysPerPixel = o.rays;
+        rp.guardBand = guard;
+        a = ao::raytraced(*scene, cam, depth.width(), depth.height(), rp, exec);
+    }
+    writeAo(o.output, a);
+}
+
+}  // namespace
+
+void addAoCommand(CLI::App& app) {
+    auto o = std::make_shared<AoOptions>();
+    auto* cmd = app.add_subcommand("ao", "Ambient obscurance: SAO, the AlchemyAO baseline, or ray-traced ground truth");
+    cmd->add_option("-m,--method", o->method, "sao (default), alchemy, raytraced");
+    cmd->add_option("--depth", o->depth, "Depth buffer (EXR; channel Z, Y, R or the only one; values in [0, 1])");
+    cmd->add_option("--camera", o->camera, "Camera JSON of the depth buffer: {\"fov_y_deg\", \"z_near\", \"z_far\"}");
+    cmd->add_option("--scene", o->scene, "Analytic scene instead of a depth file: corner, room");
+    cmd->add_option("--size", o->size, "With --scene: output size WxH (the buffer adds the guard band)")
+        ->default_val("960x540");
+    cmd->add_option("--fov", o->fovDeg, "With --scene: vertical field of view in degrees (default 60)")
+        ->check(CLI::Range(1.0, 179.0));
+    cmd->add_option("-o,--output", o->output, "AO output: .png (8-bit) or .exr (float)");
+    cmd->add_option("-p,--param", o->params,
+                    "NAME=VALUE (repeatable): sao: radius bias epsilon intensity numSamples numSpiralTurns logQ "
+                    "maxMip usePyramid quadThreshold blurRadius blurStride blurSigma edgeSharpness guardBand; "
+                    "alchemy: radius sigma beta epsilon k numSamples numSpiralTurns blur...; raytraced: radius");
+    cmd->add_option("--rays", o->rays, "raytraced: rays per pixel (default 256)")->check(CLI::Range(1, 65536));
+    cmd->add_option("--save-depth", o->saveDepth, "Also write the depth buffer used (EXR, channel Z)");
+    cmd->add_option("--save-camera", o->saveCamera, "Also write its camera (JSON)");
+    cmd->add_option("--threads", o->threads, "Worker threads (0 = all)")->check(CLI::Range(0, 1024));
+    cmd->footer("Depth d in [0, 1] (0 = near plane); camera space looks down -z (docs/methods/sao.md).\n"
+                "Examples:\n"
+                "  ssfx ao --scene room --size 960x540 -p guardBand=64 -o ao.png --save-depth d.exr --save-camera c.json\n"
+                "  ssfx ao -m alchemy --depth d.exr --camera c.json -p guardBand=64 -o alchemy.exr");
+    cmd->callback([o] { run(*o); });
+}
+
+}  // namespace ssfx::cli

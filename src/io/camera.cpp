@@ -1,0 +1,63 @@
+// Camera JSON files (see camera.hpp).
+#include "ssfx/io/camera.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <numbers>
+
+#include "ssfx/io/png.hpp"
+
+namespace ssfx::io {
+
+ao::Camera parseCameraJson(const std::string& text, const std::string& name) {
+    nlohmann::json j;
+    try {
+        j = nlohmann::json::parse(text);
+    } catch (const std::exception& e) {
+        throw Error(fmt::format("{}: not valid JSON ({})", name, e.what()));
+    }
+    if (!j.is_object()) throw Error(fmt::format("{}: a camera must be a JSON object", name));
+    ao::Camera c;
+    for (const auto& [key, value] : j.items()) {
+        auto number = [&]() {
+            if (!value.is_number()) throw Error(fmt::format("{}: '{}' must be a number", name, key));
+            return value.get<double>();
+        };
+        if (key == "fov_y_deg") {
+            c.fovY = number() * std::numbers::pi / 180.0;
+        } else if (key == "z_near") {
+            c.zNear = number();
+        } else if (key == "z_far") {
+            if (value.is_null() || (value.is_string() && value.get<std::string>() == "-inf"))
+                c.zFar = -INFINITY;
+            else
+                c.zFar = number();
+        } else {
+            throw Error(fmt::format("{}: unknown key '{}' (known: fov_y_deg, z_near, z_far)", name, key));
+        }
+    }
+    ao::projection(c, 1, 1);  // validates, with a message naming the field
+    return c;
+}
+
+ao::Camera readCameraJson(const std::string& path) {
+    const auto bytes = readFile(path);
+    return parseCameraJson(std::string(bytes.begin(), bytes.end()), path);
+}
+
+std::string cameraJson(const ao::Camera& c) {
+    nlohmann::ordered_json j;
+    j["fov_y_deg"] = std::round(c.fovY * 180.0 / std::numbers::pi * 1e9) / 1e9;  // no 59.99999999999999
+    j["z_near"] = c.zNear;
+    j["z_far"] = std::isinf(c.zFar) ? nlohmann::ordered_json() : nlohmann::ordered_json(c.zFar);
+    return j.dump(2) + "\n";
+}
+
+void writeCameraJson(const std::string& path, const ao::Camera& c) {
+    const std::string text = cameraJson(c);
+    writeFileAtomic(path, {reinterpret_cast<const std::uint8_t*>(text.data()), text.size()});
+}
+
+}  // namespace ssfx::io

@@ -1,0 +1,60 @@
+// EXR and camera JSON files.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "ssfx/io/camera.hpp"
+#include "ssfx/io/exr.hpp"
+
+using namespace ssfx;
+
+TEST(Exr, RoundTripIsExactAndKeepsTheChannel) {
+    ImageF img(7, 5);
+    for (int y = 0; y < 5; ++y)
+        for (int x = 0; x < 7; ++x) img(x, y) = float(x) * 0.125f - float(y) * 3.0f + 1e-7f * float(x * y);
+    img(6, 4) = -INFINITY;
+    const auto bytes = io::encodeExr(img.view(), "Z");
+    std::string used;
+    const ImageF back = io::decodeExr(bytes, "mem.exr", "", &used);
+    EXPECT_EQ(used, "Z");
+    EXPECT_EQ(back, img);
+    EXPECT_THROW(io::decodeExr(bytes, "mem.exr", "Q"), Error);
+}
+
+TEST(Exr, TruncatedAndCorruptFilesAreErrorsNamingTheFile) {
+    const ImageF img(16, 16, 0.5f);
+    auto bytes = io::encodeExr(img.view());
+    for (std::size_t n : {std::size_t(0), std::size_t(3), std::size_t(40), bytes.size() / 2, bytes.size() - 1}) {
+        std::vector<std::uint8_t> cut(bytes.begin(), bytes.begin() + std::ptrdiff_t(n));
+        try {
+            io::decodeExr(cut, "cut.exr");
+            ADD_FAILURE() << "no error at " << n << " bytes";
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find("cut.exr"), std::string::npos) << e.what();
+        }
+    }
+    bytes[bytes.size() / 2] ^= 0xff;
+    bytes[bytes.size() / 2 + 1] ^= 0xff;
+    try {
+        const ImageF f = io::decodeExr(bytes, "flip.exr");  // a flipped byte in ZIP data may still decode
+        EXPECT_EQ(f.width(), 16);
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("flip.exr"), std::string::npos);
+    }
+}
+
+TEST(Camera, JsonRoundTripAndErrors) {
+    ao::Camera c;
+    c.fovY = 0.8;
+    c.zNear = -0.25;
+    c.zFar = -300;
+    const ao::Camera back = io::parseCameraJson(io::cameraJson(c), "c.json");
+    EXPECT_NEAR(back.fovY, 0.8, 1e-9);
+    EXPECT_EQ(back.zNear, -0.25);
+    EXPECT_EQ(back.zFar, -300);
+    EXPECT_TRUE(std::isinf(io::parseCameraJson(R"({"z_far": null})", "c").zFar));
+    EXPECT_TRUE(std::isinf(io::parseCameraJson(R"({"z_far": "-inf"})", "c").zFar));
+    for (const char* bad : {"[1]", "{", R"({"fov": 60})", R"({"z_near": 0.1})", R"({"fov_y_deg": 200})",
+                            R"({"z_near": "a"})", R"({"z_near": -1, "z_far": -0.5})"})
+        EXPECT_THROW(io::parseCameraJson(bad, "c.json"), Error) << bad;
+}
