@@ -202,6 +202,7 @@ void addReport(CLI::App& eval) {
     cmd->add_option("--reps", o->speedRepetitions, "Timed repetitions per method and image (default 20)")
         ->check(CLI::Range(4, 100000));
     cmd->add_flag("--quick", o->quick, "Fewer repetitions and every 4th animation frame (tests)");
+    cmd->add_flag("!--no-ao", o->ambientObscurance, "Leave out the ambient obscurance experiments");
     cmd->add_option("--threads", *threads, "Worker threads (0 = all)")->check(CLI::Range(0, 1024));
     cmd->callback([o, threads] {
         o->exec = Exec{*threads};

@@ -13,6 +13,7 @@
 
 #include "report_assets.hpp"
 #include "ssfx/aa/resolve.hpp"
+#include "ssfx/eval/ao_experiments.hpp"
 #include "ssfx/eval/kernels.hpp"
 #include "ssfx/eval/metrics.hpp"
 #include "ssfx/eval/plot.hpp"
@@ -112,6 +113,65 @@ std::string viewer(const std::string& id, int w, int h, const std::vector<std::p
     for (int z : {1, 2, 4, 8, 16}) s += fmt::format("<button data-zoom=\"{0}\">{0}x</button>", z);
     s += "</div>\n<div class=\"panes\"></div>\n</section>\n";
     return s;
+}
+
+// The small Markdown subset our own tables use: "### " headings, pipe tables (second row
+// the separator), paragraphs; `code` spans. Text is escaped.
+std::string markdownToHtml(const std::string& md) {
+    std::string html, line;
+    std::vector<std::string> lines;
+    for (std::size_t p = 0; p <= md.size();) {
+        const std::size_t e = std::min(md.find('\n', p), md.size());
+        lines.push_back(md.substr(p, e - p));
+        p = e + 1;
+    }
+    auto inline_ = [](const std::string& s) {
+        std::string o, t = esc(s);
+        bool code = false;
+        for (char c : t) {
+            if (c == '`') {
+                o += code ? "</code>" : "<code>";
+                code = !code;
+            } else {
+                o += c;
+            }
+        }
+        return o + (code ? "</code>" : "");
+    };
+    auto cells = [](const std::string& row) {
+        std::vector<std::string> c;
+        std::size_t p = row.find('|') + 1;
+        while (true) {
+            const std::size_t e = row.find('|', p);
+            if (e == std::string::npos) break;
+            std::string cell = row.substr(p, e - p);
+            const auto b = cell.find_first_not_of(' '), f = cell.find_last_not_of(' ');
+            c.push_back(b == std::string::npos ? "" : cell.substr(b, f - b + 1));
+            p = e + 1;
+        }
+        return c;
+    };
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+        const std::string& l = lines[i];
+        if (l.empty()) continue;
+        if (l.rfind("### ", 0) == 0) {
+            html += "<h3>" + inline_(l.substr(4)) + "</h3>\n";
+        } else if (l[0] == '|') {
+            html += "<table>";
+            bool head = true;
+            for (; i < lines.size() && !lines[i].empty() && lines[i][0] == '|'; ++i) {
+                if (lines[i].rfind("|---", 0) == 0) continue;
+                html += "<tr>";
+                for (const auto& c : cells(lines[i])) html += (head ? "<th>" : "<td>") + inline_(c) + (head ? "</th>" : "</td>");
+                html += "</tr>\n";
+                head = false;
+            }
+            html += "</table>\n";
+        } else {
+            html += "<p class=\"note\">" + inline_(l) + "</p>\n";
+        }
+    }
+    return html;
 }
 
 }  // namespace
@@ -376,6 +436,33 @@ void writeReport(const ReportOptions& o) {
                          .view());
     }
 
+    // 7b. Ambient obscurance: the SAO paper's experiments on analytic scenes.
+    std::string aoSection;
+    if (o.ambientObscurance) {
+        AoExperimentOptions ao;
+        ao.outDir = (out / "ao").string();
+        ao.quick = o.quick;
+        ao.exec = o.exec;
+        ao.progress = o.progress;
+        const std::string md = runAoExperiments(ao);
+        aoSection = "<h2>Ambient obscurance (the SAO paper's experiments)</h2>\n<p class=\"note\">Scalable Ambient "
+                    "Obscurance (<a href=\"methods/sao.html\">doc</a>), the AlchemyAO baseline (<a "
+                    "href=\"methods/alchemy.html\">doc</a>) and ray-traced ground truth (<a "
+                    "href=\"methods/raytraced.html\">doc</a>) on analytic scenes rendered by exact ray casting "
+                    "(the scene renderer is not there yet). Data: <a href=\"ao/data/ao.json\">ao/data/ao.json</a>."
+                    "</p>\n";
+        aoSection += markdownToHtml(md);
+        aoSection += "<div class=\"anims\">\n";
+        for (const char* name : {"raytraced", "sao_rotated_grid", "sao_no_pyramid", "alchemy", "sao_min_diff",
+                                 "sao_max_diff"})
+            aoSection += fmt::format("<figure><img class=\"aoimg\" src=\"ao/images/ao_room_{0}.png\" alt=\"room "
+                                     "{0}\"><figcaption>room: {0}</figcaption></figure>\n",
+                                     name);
+        aoSection += "</div>\n<img class=\"plot\" width=\"880\" height=\"420\" src=\"ao/plots/ao_radius_scaling.png\" "
+                     "alt=\"AO time vs radius\">\n<img class=\"plot\" width=\"880\" height=\"420\" "
+                     "src=\"ao/plots/ao_z_precision.png\" alt=\"z precision\">\n";
+    }
+
     // 8. Method docs.
     for (const auto& [id, text] : detail::methodDocs()) {
         writeText(out / "methods" / (std::string(id) + ".html"),
@@ -483,6 +570,7 @@ void writeReport(const ReportOptions& o) {
                        rows, 3, false, "kernel");
     }
     h += "<img class=\"plot\" width=\"880\" height=\"400\" src=\"plots/kernels.png\" alt=\"angle error per kernel\">\n";
+    h += aoSection;
     h += fmt::format("<p class=\"note\">Written by ssfx 0.1.0. Tables as Markdown: <a href=\"data/quality.md\">quality"
                      "</a>, <a href=\"data/temporal.md\">temporal</a>, <a href=\"data/speed.md\">speed</a>.</p>\n");
     h += "<script>" + std::string(detail::kReportJs) + "</script>\n</body></html>\n";

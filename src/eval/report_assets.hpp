@@ -36,6 +36,7 @@ img.plot { max-width: 100%; height: auto; border: 1px solid #eee; }
 .anims { display: flex; flex-wrap: wrap; gap: 12px; }
 .anims figure { margin: 0; font-size: 13px; text-align: center; }
 .anims img.crop { width: 240px; height: 240px; }
+.anims img.aoimg { width: 384px; height: auto; image-rendering: auto; }
 .anims img { image-rendering: pixelated; width: 300px; height: 300px; border: 1px solid #ccc; }
 .methods dt { font-weight: bold; margin-top: 8px; }
 pre.doc { white-space: pre-wrap; font-size: 14px; max-width: 900px; }

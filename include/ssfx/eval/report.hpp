@@ -8,6 +8,7 @@
 //   DIR/plots/*.png                charts (Cairo)
 //   DIR/data/*.json, *.md          every table as data
 //   DIR/methods/ID.html            each method's doc (embedded in the binary at build time)
+//   DIR/ao/                        the ambient obscurance experiments (images, plots, data)
 #pragma once
 
 #include <functional>
@@ -27,6 +28,8 @@ struct ReportOptions {
     std::string referenceDir;
     //! Fewer repetitions and every 4th animation frame: for tests of the report itself.
     bool quick = false;
+    //! Also run the SAO experiments (eval/ao_experiments.hpp) into DIR/ao/ and show them.
+    bool ambientObscurance = true;
     Exec exec;
     std::function<void(const std::string&)> progress;
 };
