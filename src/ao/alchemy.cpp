@@ -21,9 +21,10 @@ void checkRange(const char* name, T v, T lo, T hi) {
 struct AlchemyEstimator {
     float beta, epsilon, scale, k;
     float term(float vv, float vn, float zc) const { return std::max(0.0f, vn + zc * beta) / (vv + epsilon); }
-    float finish(float sum) const {
-        const float a = std::max(0.0f, 1.0f - scale * sum);
-        return k == 1.0f ? a : std::pow(a, k);
+    float finish(float sum) const { return post(std::max(0.0f, 1.0f - scale * sum)); }
+    float post(float a) const { return k == 1.0f ? a : std::pow(a, k); }
+    void fill(detail::SimdSampleInput& in) const {
+        in.estimator = 1, in.beta = beta, in.epsilon = epsilon, in.scale = scale;
     }
 };
 
@@ -64,17 +65,39 @@ void setParam(AlchemyParams& p, const std::string& name, double v) {
                                 name));
 }
 
+namespace {
+ImageF alchemyImpl(ImageView<const float> depth, const Camera& camera, const AlchemyParams& p, const Exec& exec,
+                   bool vector);
+ImageF samplePassImpl(ImageView<const float> z, const Projection& proj, Region region, const AlchemyParams& p,
+                      const Exec& exec, bool vector);
+}  // namespace
+
 ImageF alchemySamplePass(ImageView<const float> z, const Projection& proj, Region region, const AlchemyParams& p,
                          const Exec& exec) {
+    return samplePassImpl(z, proj, region, p, exec, true);
+}
+
+ImageF alchemyReference(ImageView<const float> depth, const Camera& camera, const AlchemyParams& p) {
+    return alchemyImpl(depth, camera, p, Exec{1}, false);
+}
+
+ImageF alchemy(ImageView<const float> depth, const Camera& camera, const AlchemyParams& p, const Exec& exec) {
+    return alchemyImpl(depth, camera, p, exec, true);
+}
+
+namespace {
+ImageF samplePassImpl(ImageView<const float> z, const Projection& proj, Region region, const AlchemyParams& p,
+                      const Exec& exec, bool vector) {
     validate(p);
     std::vector<ImageF> level0;
     level0.push_back(ImageF::copyOf(z));
     const AlchemyEstimator est{p.beta, p.epsilon, 2.0f * p.sigma / float(p.numSamples), p.k};
-    const detail::SampleSetup setup{p.numSamples, p.numSpiralTurns, 0, 0, p.radius, false};
+    const detail::SampleSetup setup{p.numSamples, p.numSpiralTurns, 0, 0, p.radius, false, vector};
     return detail::samplePass(level0, proj, region, setup, est, exec);
 }
 
-ImageF alchemy(ImageView<const float> depth, const Camera& camera, const AlchemyParams& p, const Exec& exec) {
+ImageF alchemyImpl(ImageView<const float> depth, const Camera& camera, const AlchemyParams& p, const Exec& exec,
+                   bool vector) {
     validate(p);
     const int g = p.guardBand;
     if (depth.width() <= 2 * g || depth.height() <= 2 * g)
@@ -83,9 +106,10 @@ ImageF alchemy(ImageView<const float> depth, const Camera& camera, const Alchemy
     const Projection proj = projection(camera, depth.width(), depth.height());
     const ImageF z = depthToZ(depth, camera, exec);
     const Region out{g, g, depth.width() - 2 * g, depth.height() - 2 * g};
-    const ImageF a = alchemySamplePass(z.view(), proj, out, p, exec);
+    const ImageF a = samplePassImpl(z.view(), proj, out, p, exec, vector);
     const ImageF h = bilateralPass(a, z.view(), out, p.blur, true, exec);
     return bilateralPass(h, z.view(), out, p.blur, false, exec);
 }
+}  // namespace
 
 }  // namespace ssfx::ao

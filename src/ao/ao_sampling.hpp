@@ -10,6 +10,7 @@
 
 #include "ssfx/ao/depth.hpp"
 #include "ssfx/ao/sao.hpp"
+#include "src/ao/sao_simd.hpp"
 
 namespace ssfx::ao::detail {
 
@@ -27,6 +28,7 @@ struct SampleSetup {
     int numSamples, spiralTurns, logQ, maxMip;
     float radius;
     bool usePyramid;
+    bool vector = true;  //!< false: the scalar loop only (the reference)
 };
 
 //! floor(log2(n)) for n >= 1, -1 for n <= 0 (GLSL findMSB on a non-negative int).
@@ -38,13 +40,19 @@ struct PositionTables {
     std::vector<float> fx, fy;
     const Projection* proj;
     PositionTables(const Projection& p) : fx(std::size_t(p.width)), fy(std::size_t(p.height)), proj(&p) {
-        for (int x = 0; x < p.width; ++x) fx[std::size_t(x)] = reconstructPosition(p, float(x) + 0.5f, 0.5f, 1.0f).x;
-        for (int y = 0; y < p.height; ++y) fy[std::size_t(y)] = reconstructPosition(p, 0.5f, float(y) + 0.5f, 1.0f).y;
+        for (int x = 0; x < p.width; ++x)
+            fx[std::size_t(x)] = 1.0f / p.p00 * (1.0f - 2.0f * (float(x) + 0.5f) / float(p.width));
+        for (int y = 0; y < p.height; ++y)
+            fy[std::size_t(y)] = 1.0f / p.p11 * (2.0f * (float(y) + 0.5f) / float(p.height) - 1.0f);
     }
     Vec3 at(int x, int y, float z) const {
         if (x >= 0 && y >= 0 && x < proj->width && y < proj->height)
             return {z * fx[std::size_t(x)], z * fy[std::size_t(y)], z};
-        return reconstructPosition(*proj, float(x) + 0.5f, float(y) + 0.5f, z);  // taps beyond the buffer
+        // Taps beyond the buffer: the tables' formula, evaluated on the spot (as the vector
+        // kernel does for every tap).
+        const float px = float(x) + 0.5f, py = float(y) + 0.5f;
+        return {z * (1.0f / proj->p00 * (1.0f - 2.0f * px / float(proj->width))),
+                z * (1.0f / proj->p11 * (2.0f * py / float(proj->height) - 1.0f)), z};
     }
 };
 
@@ -88,10 +96,34 @@ ImageF samplePass(const std::vector<ImageF>& pyr, const Projection& proj, Region
                            dirY[std::size_t(k)] = float(std::sin(theta));
     }
     const PositionTables pos(proj);
+    // The vector kernel's view: every level the taps may read in one buffer.
+    const bool vector = s.vector && w >= 2 && h >= 2;
+    std::vector<float> flat;
+    std::vector<std::int32_t> lOff, lW, lH;
+    SimdSampleInput vin{};
+    if (vector) {
+        for (int m = 0; m <= levels; ++m) {
+            const ImageF& l = pyr[std::size_t(m)];
+            lOff.push_back(std::int32_t(flat.size()));
+            lW.push_back(l.width());
+            lH.push_back(l.height());
+            flat.insert(flat.end(), l.pixels().begin(), l.pixels().end());
+        }
+        vin = {flat.data(), lOff.data(), lW.data(), lH.data(), levels, w, h, pos.fx.data(), pos.fy.data(), proj.p00,
+               proj.p11, proj.pixelsPerMeter, s.radius, s.numSamples, s.logQ, alpha.data(), dirX.data(), dirY.data(),
+               0, 0, 0, 0, 0, 0};
+        est.fill(vin);
+    }
     parallelRows(region.height, exec, [&](int r0, int r1) {
         for (int j = r0; j < r1; ++j) {
             const int y = region.y0 + j;
-            for (int i = 0; i < region.width; ++i) {
+            int first = 0;
+            if (vector) {
+                float* row = &out(0, j);
+                first = sampleRowSimd(vin, y, region.x0, region.x0 + region.width, row) - region.x0;
+                for (int i = 0; i < first; ++i) row[i] = est.post(row[i]);
+            }
+            for (int i = first; i < region.width; ++i) {
                 const int x = region.x0 + i;
                 const float zc = z0(x, y);
                 if (std::isinf(zc) || w < 2 || h < 2) {

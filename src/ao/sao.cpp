@@ -26,9 +26,10 @@ struct SaoEstimator {
         const float f = std::max(r2 - vv, 0.0f);
         return f * f * f * std::max((vn - bias) / (vv + epsilon), 0.0f);
     }
-    float finish(float sum) const {
-        const float a = std::max(0.0f, 1.0f - sum * scale);
-        return intensity == 1.0f ? a : std::pow(a, intensity);
+    float finish(float sum) const { return post(std::max(0.0f, 1.0f - sum * scale)); }
+    float post(float a) const { return intensity == 1.0f ? a : std::pow(a, intensity); }
+    void fill(detail::SimdSampleInput& in) const {
+        in.estimator = 0, in.r2 = r2, in.bias = bias, in.epsilon = epsilon, in.scale = scale;
     }
 };
 
@@ -89,15 +90,33 @@ void setParam(SaoParams& p, const std::string& name, double v) {
                                 name));
 }
 
+namespace {
+ImageF samplePassImpl(const std::vector<ImageF>& pyramid, const Projection& proj, Region region, const SaoParams& p,
+                      const Exec& exec, bool vector);
+ImageF saoImpl(ImageView<const float> depth, const Camera& camera, const SaoParams& p, const Exec& exec,
+               SaoTimings* timings, bool vector);
+}  // namespace
+
 ImageF saoSamplePass(const std::vector<ImageF>& pyramid, const Projection& proj, Region region, const SaoParams& p,
                      const Exec& exec) {
+    return samplePassImpl(pyramid, proj, region, p, exec, true);
+}
+
+ImageF saoReference(ImageView<const float> depth, const Camera& camera, const SaoParams& p) {
+    return saoImpl(depth, camera, p, Exec{1}, nullptr, false);
+}
+
+namespace {
+ImageF samplePassImpl(const std::vector<ImageF>& pyramid, const Projection& proj, Region region, const SaoParams& p,
+                      const Exec& exec, bool vector) {
     validate(p);
     if (pyramid.empty()) throw Error("sao: empty z pyramid");
     const float r2 = p.radius * p.radius;
     const SaoEstimator est{r2, p.bias, p.epsilon, 5.0f / (r2 * r2 * r2 * float(p.numSamples)), p.intensity};
-    const detail::SampleSetup setup{p.numSamples, p.numSpiralTurns, p.logQ, p.maxMip, p.radius, p.usePyramid};
+    const detail::SampleSetup setup{p.numSamples, p.numSpiralTurns, p.logQ, p.maxMip, p.radius, p.usePyramid, vector};
     return detail::samplePass(pyramid, proj, region, setup, est, exec);
 }
+}  // namespace
 
 std::vector<Vec3> faceNormals(ImageView<const float> z, const Projection& proj, const Exec& exec) {
     if (z.width() != proj.width || z.height() != proj.height)
@@ -173,6 +192,12 @@ ImageF sao(ImageView<const float> depth, const Camera& camera, const SaoParams& 
 
 ImageF sao(ImageView<const float> depth, const Camera& camera, const SaoParams& p, const Exec& exec,
            SaoTimings* timings) {
+    return saoImpl(depth, camera, p, exec, timings, true);
+}
+
+namespace {
+ImageF saoImpl(ImageView<const float> depth, const Camera& camera, const SaoParams& p, const Exec& exec,
+               SaoTimings* timings, bool vector) {
     validate(p);
     const int g = p.guardBand;
     if (depth.width() <= 2 * g || depth.height() <= 2 * g)
@@ -188,7 +213,7 @@ ImageF sao(ImageView<const float> depth, const Camera& camera, const SaoParams& 
     const auto t2 = Clock::now();
     const Region out{g, g, depth.width() - 2 * g, depth.height() - 2 * g};
     const Region work = detail::quadAligned(out, depth.width(), depth.height());
-    ImageF a = saoSamplePass(pyr, proj, work, p, exec);
+    ImageF a = samplePassImpl(pyr, proj, work, p, exec, vector);
     quadBilateral(a, z.view(), work, p.quadThreshold);
     const auto t3 = Clock::now();
     const ImageF h = bilateralPass(a, z.view(), work, p.blur, true, exec);
@@ -200,5 +225,6 @@ ImageF sao(ImageView<const float> depth, const Camera& camera, const SaoParams& 
     if (timings) *timings = {ms(t0, t1), ms(t1, t2), ms(t2, t3), ms(t3, t4), ms(t0, t4)};
     return result;
 }
+}  // namespace
 
 }  // namespace ssfx::ao

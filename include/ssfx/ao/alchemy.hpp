@@ -34,6 +34,9 @@ void setParam(AlchemyParams& p, const std::string& name, double value);
 ImageF alchemySamplePass(ImageView<const float> z, const Projection& proj, Region region, const AlchemyParams& p,
                          const Exec& exec = {});
 
+//! The scalar oracle of alchemy() (sample pass without the vector kernel, one thread).
+ImageF alchemyReference(ImageView<const float> depth, const Camera& camera, const AlchemyParams& params = {});
+
 //! The whole baseline: depth (guard band included) -> A for the inner region.
 ImageF alchemy(ImageView<const float> depth, const Camera& camera, const AlchemyParams& params = {},
                const Exec& exec = {});

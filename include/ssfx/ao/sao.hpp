@@ -91,6 +91,10 @@ ImageF bilateralPass(const ImageF& a, ImageView<const float> z, Region region, c
 //! of the whole buffer. Returns A for the inner region (size minus 2 * guardBand).
 ImageF sao(ImageView<const float> depth, const Camera& camera, const SaoParams& params = {}, const Exec& exec = {});
 
+//! The scalar oracle: the same pipeline with the sample pass's scalar loop only, one thread.
+//! The vector kernel matches it within the tolerance stated in tests/ao/test_sao.cpp.
+ImageF saoReference(ImageView<const float> depth, const Camera& camera, const SaoParams& params = {});
+
 //! Per-pass timings of one sao() run, for the speed experiments (milliseconds).
 struct SaoTimings {
     double z, pyramid, sample, blur, total;

@@ -1,0 +1,141 @@
+// Highway body of the AO sample pass (SAO and AlchemyAO; see ao_sampling.hpp for the
+// scalar loop it follows): one lane per pixel along a row, taps gathered from all pyramid
+// levels stored in one buffer. The lanes follow the scalar operations except two: the hash
+// angle's sine and cosine come from Highway's float approximations after a double-precision
+// range reduction (the scalar loop uses std::cos/sin in double), and taps outside the buffer
+// reconstruct their position with the table formula. Both move a tap's position by a few
+// ulps, which can move a truncated tap offset by one pixel in rare pixels; the test holds
+// the vector path to the scalar one within a stated tolerance.
+#if defined(SSFX_AO_SAO_SIMD_INL_H_) == defined(HWY_TARGET_TOGGLE)
+#ifdef SSFX_AO_SAO_SIMD_INL_H_
+#undef SSFX_AO_SAO_SIMD_INL_H_
+#else
+#define SSFX_AO_SAO_SIMD_INL_H_
+#endif
+
+#include <hwy/contrib/math/math-inl.h>
+#include <hwy/highway.h>
+
+#include "src/ao/sao_simd.hpp"
+
+HWY_BEFORE_NAMESPACE();
+namespace ssfx::ao::detail {
+namespace HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+// Pixels [x0, x1) of buffer row y; returns the first x it did not do (whole vectors only,
+// and only where every lane's quad partner lies inside the buffer).
+inline int SampleRowSimd(const SimdSampleInput& in, int y, int x0, int x1, float* HWY_RESTRICT out) {
+    const hn::ScalableTag<float> df;
+    const hn::RebindToSigned<decltype(df)> di;
+    const int n = int(hn::Lanes(df));
+    const int w = in.width, h = in.height;
+    int ya = y & ~1, yb = ya + 1;
+    if (yb >= h) ya = h - 2, yb = h - 1;
+    const float* z0 = in.levels;  // level 0 first
+    const float* rowY = z0 + std::ptrdiff_t(y) * w;
+    const float* rowA = z0 + std::ptrdiff_t(ya) * w;
+    const float* rowB = z0 + std::ptrdiff_t(yb) * w;
+    const auto fyY = hn::Set(df, in.fy[y]), fyA = hn::Set(df, in.fy[ya]), fyB = hn::Set(df, in.fy[yb]);
+    const auto one = hn::Set(df, 1.0f), zero = hn::Zero(df);
+    const auto negInf = hn::Set(df, -HUGE_VALF);
+    const auto iota = hn::Iota(di, 0);
+    const auto radiusS = hn::Set(df, -in.radius * in.pixelsPerMeter);
+    const auto widthF = hn::Set(df, float(w)), heightF = hn::Set(df, float(h));
+    const auto invP00 = hn::Set(df, 1.0f / in.p00), invP11 = hn::Set(df, 1.0f / in.p11);
+    const auto two = hn::Set(df, 2.0f), half = hn::Set(df, 0.5f);
+    int x = x0;
+    // Every lane's partner xb = (x | 1) must be < w.
+    for (; x + n <= x1 && ((x + n - 1) | 1) < w; x += n) {
+        const auto xi = hn::Add(hn::Set(di, x), iota);
+        const auto zc = hn::LoadU(df, rowY + x);
+        const auto fxC = hn::LoadU(df, in.fx + x);
+        const auto cx = hn::Mul(zc, fxC), cy = hn::Mul(zc, fyY);
+        // Quad-pair normal (eq. 4): lanes x&~1 and x|1 of this row; rows ya, yb of this column.
+        const auto xa = hn::And(xi, hn::Set(di, ~1)), xb = hn::Or(xi, hn::Set(di, 1));
+        const auto zxa = hn::GatherIndex(df, rowY, xa), zxb = hn::GatherIndex(df, rowY, xb);
+        const auto fxa = hn::GatherIndex(df, in.fx, xa), fxb = hn::GatherIndex(df, in.fx, xb);
+        const auto zya = hn::LoadU(df, rowA + x), zyb = hn::LoadU(df, rowB + x);
+        const auto ddxX = hn::Sub(hn::Mul(zxb, fxb), hn::Mul(zxa, fxa));
+        const auto ddxY = hn::Sub(hn::Mul(zxb, fyY), hn::Mul(zxa, fyY));
+        const auto ddxZ = hn::Sub(zxb, zxa);
+        const auto ddyX = hn::Sub(hn::Mul(zyb, fxC), hn::Mul(zya, fxC));
+        const auto ddyY = hn::Sub(hn::Mul(zyb, fyB), hn::Mul(zya, fyA));
+        const auto ddyZ = hn::Sub(zyb, zya);
+        // n = ddy x ddx
+        auto nx = hn::Sub(hn::Mul(ddyY, ddxZ), hn::Mul(ddyZ, ddxY));
+        auto ny = hn::Sub(hn::Mul(ddyZ, ddxX), hn::Mul(ddyX, ddxZ));
+        auto nz = hn::Sub(hn::Mul(ddyX, ddxY), hn::Mul(ddyY, ddxX));
+        const auto len = hn::Sqrt(hn::Add(hn::Add(hn::Mul(nx, nx), hn::Mul(ny, ny)), hn::Mul(nz, nz)));
+        // Valid: a finite, non-zero normal and a finite centre (no sky in the quad).
+        const auto valid = hn::And(hn::And(hn::Gt(len, zero), hn::Lt(len, hn::Set(df, HUGE_VALF))),
+                                   hn::Gt(zc, negInf));
+        const auto inv = hn::Div(one, len);
+        nx = hn::Mul(nx, inv), ny = hn::Mul(ny, inv), nz = hn::Mul(nz, inv);
+        const auto ssRadius = hn::Div(radiusS, zc);
+        // Hash angle phi = 10 * ((3x) ^ (y + xy)) (eq. 8), reduced to [-pi, pi] in double.
+        const auto k = hn::Xor(hn::Mul(xi, hn::Set(di, 3)), hn::Add(hn::Set(di, y), hn::Mul(xi, hn::Set(di, y))));
+        HWY_ALIGN float phiRed[hn::MaxLanes(df)];
+        HWY_ALIGN std::int32_t kk[hn::MaxLanes(di)];
+        hn::Store(k, di, kk);
+        for (int l = 0; l < n; ++l) {
+            const double phi = double(10.0f * float(kk[l]));  // hashAngle(): float, then widened
+            phiRed[l] = float(phi - 6.283185307179586 * std::nearbyint(phi / 6.283185307179586));
+        }
+        const auto pr = hn::Load(df, phiRed);
+        const auto cphi = hn::Cos(df, pr), sphi = hn::Sin(df, pr);
+        auto sum = zero;
+        for (int s = 0; s < in.numSamples; ++s) {
+            const auto hk = hn::Mul(ssRadius, hn::Set(df, in.alpha[s]));
+            const auto dX = hn::Set(df, in.dirX[s]), dY = hn::Set(df, in.dirY[s]);
+            const auto ux = hn::Sub(hn::Mul(dX, cphi), hn::Mul(dY, sphi));
+            const auto uy = hn::Add(hn::Mul(dX, sphi), hn::Mul(dY, cphi));
+            const auto sx = hn::Add(xi, hn::ConvertTo(di, hn::Mul(hk, ux)));  // truncation toward 0
+            const auto sy = hn::Add(hn::Set(di, y), hn::ConvertTo(di, hn::Mul(hk, uy)));
+            // m = clamp(findMSB(int(h)) - logQ, 0, maxLevel): the float exponent of int(h).
+            const auto hi = hn::ConvertTo(di, hk);
+            const auto hif = hn::ConvertTo(df, hn::Max(hi, hn::Set(di, 1)));
+            const auto msb = hn::Sub(hn::ShiftRight<23>(hn::BitCast(di, hif)), hn::Set(di, 127));
+            const auto msbOr = hn::IfThenElse(hn::Lt(hi, hn::Set(di, 1)), hn::Set(di, -1), msb);
+            const auto m = hn::Min(hn::Max(hn::Sub(msbOr, hn::Set(di, in.logQ)), hn::Zero(di)),
+                                   hn::Set(di, in.maxLevel));
+            // Level geometry per lane: sizes are max(1, size >> m) (each level halves, rounding
+            // down, at least 1); the level's start comes from a small table.
+            const auto lw = hn::Max(hn::Shr(hn::Set(di, w), m), hn::Set(di, 1));
+            const auto lh = hn::Max(hn::Shr(hn::Set(di, h), m), hn::Set(di, 1));
+            const auto lo = hn::GatherIndex(di, in.levelOffset, m);
+            const auto ix = hn::Min(hn::Max(hn::Shr(sx, m), hn::Zero(di)), hn::Sub(lw, hn::Set(di, 1)));
+            const auto iy = hn::Min(hn::Max(hn::Shr(sy, m), hn::Zero(di)), hn::Sub(lh, hn::Set(di, 1)));
+            const auto zq = hn::GatherIndex(df, in.levels, hn::Add(lo, hn::Add(hn::Mul(iy, lw), ix)));
+            // Position at the tap's centre: z * (1/P00 * (1 - 2 (sx + 0.5) / w)), as the tables.
+            const auto px = hn::Add(hn::ConvertTo(df, sx), half), py = hn::Add(hn::ConvertTo(df, sy), half);
+            const auto fxq = hn::Mul(invP00, hn::Sub(one, hn::Div(hn::Mul(two, px), widthF)));
+            const auto fyq = hn::Mul(invP11, hn::Sub(hn::Div(hn::Mul(two, py), heightF), one));
+            const auto vx = hn::Sub(hn::Mul(zq, fxq), cx), vy = hn::Sub(hn::Mul(zq, fyq), cy);
+            const auto vz = hn::Sub(zq, zc);
+            const auto vv = hn::Add(hn::Add(hn::Mul(vx, vx), hn::Mul(vy, vy)), hn::Mul(vz, vz));
+            const auto vn = hn::Add(hn::Add(hn::Mul(vx, nx), hn::Mul(vy, ny)), hn::Mul(vz, nz));
+            hn::Vec<decltype(df)> term;
+            if (in.estimator == 0) {  // SAO's updated falloff
+                const auto f = hn::Max(hn::Sub(hn::Set(df, in.r2), vv), zero);
+                term = hn::Mul(hn::Mul(hn::Mul(f, f), f),
+                               hn::Max(hn::Div(hn::Sub(vn, hn::Set(df, in.bias)), hn::Add(vv, hn::Set(df, in.epsilon))), zero));
+            } else {  // AlchemyAO, eq. 1
+                term = hn::Div(hn::Max(zero, hn::Add(vn, hn::Mul(zc, hn::Set(df, in.beta)))),
+                               hn::Add(vv, hn::Set(df, in.epsilon)));
+            }
+            // Sky taps (z = -inf) add nothing.
+            sum = hn::Add(sum, hn::IfThenElseZero(hn::Gt(zq, negInf), term));
+        }
+        auto a = hn::Max(zero, hn::Sub(one, hn::Mul(sum, hn::Set(df, in.scale))));
+        a = hn::IfThenElse(valid, a, one);
+        hn::StoreU(a, df, out + (x - x0));
+    }
+    return x;
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace ssfx::ao::detail
+HWY_AFTER_NAMESPACE();
+
+#endif  // include guard

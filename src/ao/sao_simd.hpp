@@ -1,0 +1,28 @@
+// The vector AO sample pass (sao_simd-inl.h): what it needs, flattened into plain arrays.
+#pragma once
+
+#include <cstdint>
+
+namespace ssfx::ao::detail {
+
+struct SimdSampleInput {
+    const float* levels;                 //!< all pyramid levels, one after the other (level 0 first)
+    const std::int32_t* levelOffset;     //!< [maxLevel + 1] start of each level in `levels`
+    const std::int32_t* levelW;          //!< [maxLevel + 1] sizes
+    const std::int32_t* levelH;
+    int maxLevel;                        //!< highest level a tap may read
+    int width, height;                   //!< level 0
+    const float* fx;                     //!< position tables (ao_sampling.hpp PositionTables)
+    const float* fy;
+    float p00, p11, pixelsPerMeter, radius;
+    int numSamples, logQ;
+    const float *alpha, *dirX, *dirY;    //!< the spiral, [numSamples]
+    int estimator;                       //!< 0: SAO's falloff, 1: AlchemyAO (eq. 1)
+    float r2, bias, beta, epsilon, scale;
+};
+
+//! Pixels [x0, x1) of buffer row y into out[0 ..); A before the intensity exponent.
+//! Returns the first x it left to the scalar loop.
+int sampleRowSimd(const SimdSampleInput& in, int y, int x0, int x1, float* out);
+
+}  // namespace ssfx::ao::detail
