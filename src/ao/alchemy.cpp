@@ -93,7 +93,9 @@ ImageF samplePassImpl(ImageView<const float> z, const Projection& proj, Region r
     level0.push_back(ImageF::copyOf(z));
     const AlchemyEstimator est{p.beta, p.epsilon, 2.0f * p.sigma / float(p.numSamples), p.k};
     const detail::SampleSetup setup{p.numSamples, p.numSpiralTurns, 0, 0, p.radius, false, vector};
-    return detail::samplePass(level0, proj, region, setup, est, exec);
+    ImageF out;
+    detail::samplePass(level0, proj, region, setup, est, exec, out);
+    return out;
 }
 
 ImageF alchemyImpl(ImageView<const float> depth, const Camera& camera, const AlchemyParams& p, const Exec& exec,

@@ -83,11 +83,11 @@ inline bool faceNormal(ImageView<const float> z0, const PositionTables& pos, int
 //! hash angle phi (eq. 8) with one sine and cosine. This is cos/sin(alpha 2 pi tau + phi)
 //! evaluated as a rotation: the same directions up to rounding, at a ninth of the cost.
 template <class Estimator>
-ImageF samplePass(const std::vector<ImageF>& pyr, const Projection& proj, Region region, const SampleSetup& s,
-                  const Estimator& est, const Exec& exec) {
+void samplePass(const std::vector<ImageF>& pyr, const Projection& proj, Region region, const SampleSetup& s,
+                const Estimator& est, const Exec& exec, ImageF& out) {
     const ImageView<const float> z0 = pyr[0].view();
     const int w = z0.width(), h = z0.height();
-    ImageF out(region.width, region.height);
+    if (out.width() != region.width || out.height() != region.height) out = ImageF(region.width, region.height);
     const int levels = s.usePyramid ? std::min<int>(s.maxMip, int(pyr.size()) - 1) : 0;
     std::vector<float> alpha(std::size_t(s.numSamples)), dirX(alpha.size()), dirY(alpha.size());
     for (int k = 0; k < s.numSamples; ++k) {
@@ -98,7 +98,10 @@ ImageF samplePass(const std::vector<ImageF>& pyr, const Projection& proj, Region
     const PositionTables pos(proj);
     // The vector kernel's view: every level the taps may read in one buffer.
     const bool vector = s.vector && w >= 2 && h >= 2;
-    std::vector<float> flat;
+    // Kept per calling thread: a frame loop reuses the buffer (fresh pages cost more than
+    // the copy on the machines here).
+    thread_local std::vector<float> flat;
+    flat.clear();
     std::vector<std::int32_t> lOff, lW, lH;
     SimdSampleInput vin{};
     if (vector) {
@@ -159,7 +162,6 @@ ImageF samplePass(const std::vector<ImageF>& pyr, const Projection& proj, Region
             }
         }
     });
-    return out;
 }
 
 //! The output region grown to whole 2x2 quads of the buffer grid (clamped to the buffer),

@@ -51,14 +51,23 @@ double quantizeDepth(double d, DepthFormat f) {
 }
 
 ImageF depthToZ(ImageView<const float> depth, const Camera& camera, const Exec& exec) {
-    const Projection p = projection(camera, depth.width(), depth.height());
+    projection(camera, depth.width(), depth.height());  // validates before allocating
     ImageF z(depth.width(), depth.height());
+    depthToZ(depth, camera, z.view(), exec);
+    return z;
+}
+
+void depthToZ(ImageView<const float> depth, const Camera& camera, ImageView<float> z, const Exec& exec) {
+    const Projection p = projection(camera, depth.width(), depth.height());
+    if (z.width() != depth.width() || z.height() != depth.height())
+        throw Error(fmt::format("depthToZ: the z buffer is {}x{}, the depth {}x{}", z.width(), z.height(),
+                                depth.width(), depth.height()));
     // The first bad pixel in row-major order is reported, whatever the thread count.
     std::atomic<std::int64_t> firstBad{std::int64_t{1} << 62};
     parallelRows(depth.height(), exec, [&](int y0, int y1) {
         for (int y = y0; y < y1; ++y) {
             const float* d = depth.row(y);
-            float* out = z.view().row(y);
+            float* out = z.row(y);
             for (int x = 0; x < depth.width(); ++x) {
                 const float v = d[x];
                 if (!(v >= 0.0f && v <= 1.0f)) {  // also NaN
@@ -78,17 +87,28 @@ ImageF depthToZ(ImageView<const float> depth, const Camera& camera, const Exec& 
         const int x = int(i % depth.width()), y = int(i / depth.width());
         throw Error(fmt::format("depth at pixel ({}, {}) is {}, not in [0, 1]", x, y, depth(x, y)));
     }
-    return z;
 }
 
 std::vector<ImageF> zPyramid(ImageView<const float> z, int maxMip, PyramidFilter filter, const Exec& exec) {
-    if (maxMip < 0 || maxMip > 16) throw Error(fmt::format("z pyramid: maxMip {} is not in [0, 16]", maxMip));
     std::vector<ImageF> levels;
-    levels.push_back(ImageF::copyOf(z));
+    zPyramid(z, maxMip, filter, levels, exec);
+    return levels;
+}
+
+void zPyramid(ImageView<const float> z, int maxMip, PyramidFilter filter, std::vector<ImageF>& levels,
+              const Exec& exec) {
+    if (maxMip < 0 || maxMip > 16) throw Error(fmt::format("z pyramid: maxMip {} is not in [0, 16]", maxMip));
+    levels.resize(std::size_t(maxMip) + 1);
+    auto ensure = [](ImageF& img, int w, int h) {
+        if (img.width() != w || img.height() != h) img = ImageF(w, h);
+    };
+    ensure(levels[0], z.width(), z.height());
+    for (int y = 0; y < z.height(); ++y) std::copy(z.row(y), z.row(y) + z.width(), levels[0].view().row(y));
     for (int m = 1; m <= maxMip; ++m) {
-        const ImageF& prev = levels.back();
+        const ImageF& prev = levels[std::size_t(m) - 1];
         const int w = std::max(1, prev.width() / 2), h = std::max(1, prev.height() / 2);
-        ImageF next(w, h);
+        ImageF& next = levels[std::size_t(m)];
+        ensure(next, w, h);
         const ImageView<const float> pv = prev.view();
         parallelRows(h, exec, [&](int y0, int y1) {
             for (int y = y0; y < y1; ++y)
@@ -111,9 +131,7 @@ std::vector<ImageF> zPyramid(ImageView<const float> z, int maxMip, PyramidFilter
                     next(x, y) = v;
                 }
         });
-        levels.push_back(std::move(next));
     }
-    return levels;
 }
 
 }  // namespace ssfx::ao

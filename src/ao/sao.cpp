@@ -91,15 +91,17 @@ void setParam(SaoParams& p, const std::string& name, double v) {
 }
 
 namespace {
-ImageF samplePassImpl(const std::vector<ImageF>& pyramid, const Projection& proj, Region region, const SaoParams& p,
-                      const Exec& exec, bool vector);
+void samplePassImpl(const std::vector<ImageF>& pyramid, const Projection& proj, Region region, const SaoParams& p,
+                    const Exec& exec, bool vector, ImageF& out);
 ImageF saoImpl(ImageView<const float> depth, const Camera& camera, const SaoParams& p, const Exec& exec,
                SaoTimings* timings, bool vector);
 }  // namespace
 
 ImageF saoSamplePass(const std::vector<ImageF>& pyramid, const Projection& proj, Region region, const SaoParams& p,
                      const Exec& exec) {
-    return samplePassImpl(pyramid, proj, region, p, exec, true);
+    ImageF out;
+    samplePassImpl(pyramid, proj, region, p, exec, true, out);
+    return out;
 }
 
 ImageF saoReference(ImageView<const float> depth, const Camera& camera, const SaoParams& p) {
@@ -107,14 +109,14 @@ ImageF saoReference(ImageView<const float> depth, const Camera& camera, const Sa
 }
 
 namespace {
-ImageF samplePassImpl(const std::vector<ImageF>& pyramid, const Projection& proj, Region region, const SaoParams& p,
-                      const Exec& exec, bool vector) {
+void samplePassImpl(const std::vector<ImageF>& pyramid, const Projection& proj, Region region, const SaoParams& p,
+                    const Exec& exec, bool vector, ImageF& out) {
     validate(p);
     if (pyramid.empty()) throw Error("sao: empty z pyramid");
     const float r2 = p.radius * p.radius;
     const SaoEstimator est{r2, p.bias, p.epsilon, 5.0f / (r2 * r2 * r2 * float(p.numSamples)), p.intensity};
     const detail::SampleSetup setup{p.numSamples, p.numSpiralTurns, p.logQ, p.maxMip, p.radius, p.usePyramid, vector};
-    return detail::samplePass(pyramid, proj, region, setup, est, exec);
+    detail::samplePass(pyramid, proj, region, setup, est, exec, out);
 }
 }  // namespace
 
@@ -139,8 +141,10 @@ void quadBilateral(ImageF& a, ImageView<const float> z, Region region, float thr
     // A GPU does this with derivatives inside each 2x2 quad: A -= dFdx(A) * ((x & 1) - 0.5)
     // where |dFdx(z)| < threshold, then the same in y on the result: the average of the
     // pair. Pairs with a partner outside the region are left alone.
+    thread_local ImageF in;  // the values before this step (reused across calls)
     auto pass = [&](bool horizontal) {
-        const ImageF in = a;
+        if (in.width() != a.width() || in.height() != a.height()) in = ImageF(a.width(), a.height());
+        std::copy(a.pixels().begin(), a.pixels().end(), in.data());
         for (int j = 0; j < region.height; ++j)
             for (int i = 0; i < region.width; ++i) {
                 const int x = region.x0 + i, y = region.y0 + j;
@@ -157,11 +161,18 @@ void quadBilateral(ImageF& a, ImageView<const float> z, Region region, float thr
 
 ImageF bilateralPass(const ImageF& a, ImageView<const float> z, Region region, const BlurParams& p, bool horizontal,
                      const Exec& exec) {
+    ImageF out;
+    bilateralPass(a, z, region, p, horizontal, out, exec);
+    return out;
+}
+
+void bilateralPass(const ImageF& a, ImageView<const float> z, Region region, const BlurParams& p, bool horizontal,
+                   ImageF& out, const Exec& exec) {
     // Section 2.4: Gaussian spatial weights times max(0, 1 - k |dz|); sky does not contribute.
     std::vector<float> gauss(std::size_t(p.blurRadius) + 1);
     for (int t = 0; t <= p.blurRadius; ++t)
         gauss[std::size_t(t)] = std::exp(-float(t * t) / (2.0f * p.blurSigma * p.blurSigma));
-    ImageF out(region.width, region.height);
+    if (out.width() != region.width || out.height() != region.height) out = ImageF(region.width, region.height);
     parallelRows(region.height, exec, [&](int r0, int r1) {
         for (int j = r0; j < r1; ++j)
             for (int i = 0; i < region.width; ++i) {
@@ -183,7 +194,6 @@ ImageF bilateralPass(const ImageF& a, ImageView<const float> z, Region region, c
                 out(i, j) = sum / wsum;  // the centre tap has weight 1
             }
     });
-    return out;
 }
 
 ImageF sao(ImageView<const float> depth, const Camera& camera, const SaoParams& p, const Exec& exec) {
@@ -207,17 +217,26 @@ ImageF saoImpl(ImageView<const float> depth, const Camera& camera, const SaoPara
     auto ms = [](Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
     const auto t0 = Clock::now();
     const Projection proj = projection(camera, depth.width(), depth.height());
-    const ImageF z = depthToZ(depth, camera, exec);
+    // Buffers kept per calling thread and reused while the sizes stay (a frame loop then
+    // allocates only its output).
+    thread_local struct Workspace {
+        ImageF z, a, h, v;
+        std::vector<ImageF> pyr;
+    } ws;
+    if (ws.z.width() != depth.width() || ws.z.height() != depth.height()) ws.z = ImageF(depth.width(), depth.height());
+    depthToZ(depth, camera, ws.z.view(), exec);
+    const ImageF& z = ws.z;
     const auto t1 = Clock::now();
-    const std::vector<ImageF> pyr = zPyramid(z.view(), p.usePyramid ? p.maxMip : 0, p.pyramidFilter, exec);
+    zPyramid(z.view(), p.usePyramid ? p.maxMip : 0, p.pyramidFilter, ws.pyr, exec);
     const auto t2 = Clock::now();
     const Region out{g, g, depth.width() - 2 * g, depth.height() - 2 * g};
     const Region work = detail::quadAligned(out, depth.width(), depth.height());
-    ImageF a = samplePassImpl(pyr, proj, work, p, exec, vector);
-    quadBilateral(a, z.view(), work, p.quadThreshold);
+    samplePassImpl(ws.pyr, proj, work, p, exec, vector, ws.a);
+    quadBilateral(ws.a, z.view(), work, p.quadThreshold);
     const auto t3 = Clock::now();
-    const ImageF h = bilateralPass(a, z.view(), work, p.blur, true, exec);
-    const ImageF v = bilateralPass(h, z.view(), work, p.blur, false, exec);
+    bilateralPass(ws.a, z.view(), work, p.blur, true, ws.h, exec);
+    bilateralPass(ws.h, z.view(), work, p.blur, false, ws.v, exec);
+    const ImageF& v = ws.v;
     ImageF result(out.width, out.height);
     for (int y = 0; y < out.height; ++y)
         for (int x = 0; x < out.width; ++x) result(x, y) = v(x + out.x0 - work.x0, y + out.y0 - work.y0);

@@ -49,6 +49,8 @@ inline Vec3 reconstructPosition(const Projection& p, float px, float py, float z
 //! depth format's own precision (the Figure 3 experiment), not the arithmetic's. Throws
 //! ssfx::Error naming the pixel for a depth that is NaN, infinite or outside [0, 1].
 ImageF depthToZ(ImageView<const float> depth, const Camera& camera, const Exec& exec = {});
+//! Into a caller's buffer of the depth's size (frame loops: no allocation).
+void depthToZ(ImageView<const float> depth, const Camera& camera, ImageView<float> z, const Exec& exec = {});
 
 //! The inverse, for tests and synthetic buffers: the depth a point at camera-space z gets.
 double zToDepth(double z, const Camera& camera);
@@ -76,5 +78,8 @@ enum class PyramidFilter {
 //! least 1). Reads beyond the previous level's edge are clamped.
 std::vector<ImageF> zPyramid(ImageView<const float> z, int maxMip, PyramidFilter filter = PyramidFilter::RotatedGrid,
                              const Exec& exec = {});
+//! Into `levels`, whose images are reused where their sizes already match.
+void zPyramid(ImageView<const float> z, int maxMip, PyramidFilter filter, std::vector<ImageF>& levels,
+              const Exec& exec = {});
 
 }  // namespace ssfx::ao

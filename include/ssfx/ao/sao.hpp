@@ -86,6 +86,9 @@ void quadBilateral(ImageF& a, ImageView<const float> z, Region region, float thr
 //! to the region, sky pixels stay 1 and do not contribute.
 ImageF bilateralPass(const ImageF& a, ImageView<const float> z, Region region, const BlurParams& p, bool horizontal,
                      const Exec& exec = {});
+//! Into `out` (reallocated only when its size differs from the region's).
+void bilateralPass(const ImageF& a, ImageView<const float> z, Region region, const BlurParams& p, bool horizontal,
+                   ImageF& out, const Exec& exec = {});
 
 //! The whole pipeline: `depth` (hardware depth in [0, 1], guard band included), the camera
 //! of the whole buffer. Returns A for the inner region (size minus 2 * guardBand).
