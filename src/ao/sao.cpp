@@ -173,26 +173,55 @@ void bilateralPass(const ImageF& a, ImageView<const float> z, Region region, con
     for (int t = 0; t <= p.blurRadius; ++t)
         gauss[std::size_t(t)] = std::exp(-float(t * t) / (2.0f * p.blurSigma * p.blurSigma));
     if (out.width() != region.width || out.height() != region.height) out = ImageF(region.width, region.height);
+    const int W = region.width, R = p.blurRadius, S = p.blurStride;
+    // Taps of pixel i are i + t S for t = -R..R, clamped to the region. The loop runs tap by
+    // tap over a whole row (each pixel still sums its taps in t order, so the result is the
+    // per-pixel formula's), which the compiler vectorises; in the horizontal pass the
+    // pixels within R S of the row's ends clamp and take the per-pixel loop.
     parallelRows(region.height, exec, [&](int r0, int r1) {
-        for (int j = r0; j < r1; ++j)
-            for (int i = 0; i < region.width; ++i) {
-                const float zc = z(region.x0 + i, region.y0 + j);
-                if (std::isinf(zc)) {
-                    out(i, j) = 1.0f;
+        thread_local std::vector<float> sum, wsum;
+        sum.assign(std::size_t(W), 0.0f);
+        wsum.assign(std::size_t(W), 0.0f);
+        for (int j = r0; j < r1; ++j) {
+            const float* zc = &z(region.x0, region.y0 + j);
+            const int lo = horizontal ? std::min(W, R * S) : 0, hi = horizontal ? std::max(lo, W - R * S) : W;
+            std::fill(sum.begin(), sum.end(), 0.0f);
+            std::fill(wsum.begin(), wsum.end(), 0.0f);
+            float* __restrict sp = sum.data();
+            float* __restrict wp = wsum.data();
+            for (int t = -R; t <= R; ++t) {
+                const float g = gauss[std::size_t(std::abs(t))];
+                const int tj = horizontal ? j : std::clamp(j + t * S, 0, region.height - 1);
+                const int shift = horizontal ? t * S : 0;
+                const float* zt = &z(region.x0, region.y0 + tj) + shift;
+                const float* at = &a(0, tj) + shift;
+                for (int i = lo; i < hi; ++i) {
+                    const float w = g * std::max(0.0f, 1.0f - p.edgeSharpness * std::fabs(zt[i] - zc[i]));
+                    sp[i] += w * at[i];
+                    wp[i] += w;
+                }
+            }
+            float* o = &out(0, j);
+            for (int i = lo; i < hi; ++i) o[i] = std::isinf(zc[i]) ? 1.0f : sp[i] / wp[i];
+            // The clamped ends of a horizontal row, pixel by pixel.
+            for (int i = 0; i < W; ++i) {
+                if (i == lo) i = std::max(i, hi);
+                if (i >= W) break;
+                if (std::isinf(zc[i])) {
+                    o[i] = 1.0f;
                     continue;
                 }
-                float sum = 0, wsum = 0;
-                for (int t = -p.blurRadius; t <= p.blurRadius; ++t) {
-                    const int ti = horizontal ? std::clamp(i + t * p.blurStride, 0, region.width - 1) : i;
-                    const int tj = horizontal ? j : std::clamp(j + t * p.blurStride, 0, region.height - 1);
-                    const float zt = z(region.x0 + ti, region.y0 + tj);
-                    const float w =
-                        gauss[std::size_t(std::abs(t))] * std::max(0.0f, 1.0f - p.edgeSharpness * std::fabs(zt - zc));
-                    sum += w * a(ti, tj);
-                    wsum += w;
+                float s = 0, ws = 0;
+                for (int t = -R; t <= R; ++t) {
+                    const int ti = std::clamp(i + t * S, 0, W - 1);
+                    const float w = gauss[std::size_t(std::abs(t))] *
+                                    std::max(0.0f, 1.0f - p.edgeSharpness * std::fabs(zc[ti] - zc[i]));
+                    s += w * a(ti, j);
+                    ws += w;
                 }
-                out(i, j) = sum / wsum;  // the centre tap has weight 1
+                o[i] = s / ws;  // the centre tap has weight 1
             }
+        }
     });
 }
 

@@ -44,6 +44,12 @@ inline int SampleRowSimd(const SimdSampleInput& in, int y, int x0, int x1, float
     const auto widthF = hn::Set(df, float(w)), heightF = hn::Set(df, float(h));
     const auto invP00 = hn::Set(df, 1.0f / in.p00), invP11 = hn::Set(df, 1.0f / in.p11);
     const auto two = hn::Set(df, 2.0f), half = hn::Set(df, 0.5f);
+    // Level starts as a vector when they fit in one (maxMip < lanes): a lane permutation
+    // instead of a gather per tap.
+    const bool offsetsInVector = in.maxLevel < n;
+    HWY_ALIGN std::int32_t offs[hn::MaxLanes(di)] = {};
+    for (int l = 0; l <= in.maxLevel && l < n; ++l) offs[l] = in.levelOffset[l];
+    const auto offVec = hn::Load(di, offs);
     int x = x0;
     // Every lane's partner xb = (x | 1) must be < w.
     for (; x + n <= x1 && ((x + n - 1) | 1) < w; x += n) {
@@ -103,7 +109,8 @@ inline int SampleRowSimd(const SimdSampleInput& in, int y, int x0, int x1, float
             // down, at least 1); the level's start comes from a small table.
             const auto lw = hn::Max(hn::Shr(hn::Set(di, w), m), hn::Set(di, 1));
             const auto lh = hn::Max(hn::Shr(hn::Set(di, h), m), hn::Set(di, 1));
-            const auto lo = hn::GatherIndex(di, in.levelOffset, m);
+            const auto lo = offsetsInVector ? hn::TableLookupLanes(offVec, hn::IndicesFromVec(di, m))
+                                            : hn::GatherIndex(di, in.levelOffset, m);
             const auto ix = hn::Min(hn::Max(hn::Shr(sx, m), hn::Zero(di)), hn::Sub(lw, hn::Set(di, 1)));
             const auto iy = hn::Min(hn::Max(hn::Shr(sy, m), hn::Zero(di)), hn::Sub(lh, hn::Set(di, 1)));
             const auto zq = hn::GatherIndex(df, in.levels, hn::Add(lo, hn::Add(hn::Mul(iy, lw), ix)));
