@@ -12,11 +12,6 @@ namespace ssfx::ao {
 
 namespace {
 
-template <class T>
-void checkRange(const char* name, T v, T lo, T hi) {
-    if (!(v >= lo && v <= hi)) throw Error(fmt::format("alchemy: {} = {} is not in [{}, {}]", name, v, lo, hi));
-}
-
 // SAO paper eq. 1 (AlchemyAO's estimator).
 struct AlchemyEstimator {
     float beta, epsilon, scale, k;
@@ -31,14 +26,14 @@ struct AlchemyEstimator {
 }  // namespace
 
 void validate(const AlchemyParams& p) {
-    checkRange("radius", p.radius, 1e-6f, 100.0f);
-    checkRange("sigma", p.sigma, 0.0f, 100.0f);
-    checkRange("beta", p.beta, 0.0f, 1.0f);
-    checkRange("epsilon", p.epsilon, 1e-9f, 1.0f);
-    checkRange("k", p.k, 0.0f, 10.0f);
-    checkRange("numSamples", p.numSamples, 1, 64);
-    checkRange("numSpiralTurns", p.numSpiralTurns, 1, 64);
-    checkRange("guardBand", p.guardBand, 0, 4096);
+    detail::checkRange("alchemy", "radius", p.radius, 1e-6f, 100.0f);
+    detail::checkRange("alchemy", "sigma", p.sigma, 0.0f, 100.0f);
+    detail::checkRange("alchemy", "beta", p.beta, 0.0f, 1.0f);
+    detail::checkRange("alchemy", "epsilon", p.epsilon, 1e-9f, 1.0f);
+    detail::checkRange("alchemy", "k", p.k, 0.0f, 10.0f);
+    detail::checkRange("alchemy", "numSamples", p.numSamples, 1, 64);
+    detail::checkRange("alchemy", "numSpiralTurns", p.numSpiralTurns, 1, 64);
+    detail::checkRange("alchemy", "guardBand", p.guardBand, 0, 4096);
     SaoParams blurCheck;
     blurCheck.blur = p.blur;
     validate(blurCheck);
@@ -54,10 +49,7 @@ void setParam(AlchemyParams& p, const std::string& name, double v) {
     else if (name == "k") p.k = f;
     else if (name == "numSamples") p.numSamples = i;
     else if (name == "numSpiralTurns") p.numSpiralTurns = i;
-    else if (name == "blurRadius") p.blur.blurRadius = i;
-    else if (name == "blurStride") p.blur.blurStride = i;
-    else if (name == "blurSigma") p.blur.blurSigma = f;
-    else if (name == "edgeSharpness") p.blur.edgeSharpness = f;
+    else if (detail::setBlurParam(p.blur, name, v)) return;
     else if (name == "guardBand") p.guardBand = i;
     else
         throw Error(fmt::format("alchemy: unknown parameter '{}' (radius, sigma, beta, epsilon, k, numSamples, "

@@ -3,16 +3,36 @@
 // rotation, a pyramid level per tap; the estimator is a template parameter.
 #pragma once
 
+#include <fmt/format.h>
+
 #include <bit>
+#include <string>
 #include <cmath>
 #include <numbers>
 #include <vector>
 
 #include "ssfx/ao/depth.hpp"
 #include "ssfx/ao/sao.hpp"
+#include "ssfx/core/error.hpp"
 #include "src/ao/sao_simd.hpp"
 
 namespace ssfx::ao::detail {
+
+//! Throws ssfx::Error "METHOD: NAME = V is not in [LO, HI]" (NaN fails too).
+template <class T>
+void checkRange(const char* method, const char* name, T v, T lo, T hi) {
+    if (!(v >= lo && v <= hi)) throw Error(fmt::format("{}: {} = {} is not in [{}, {}]", method, name, v, lo, hi));
+}
+
+//! Sets a BlurParams field by name; false for a name that is not one of them.
+inline bool setBlurParam(BlurParams& b, const std::string& name, double v) {
+    if (name == "blurRadius") b.blurRadius = int(std::lround(v));
+    else if (name == "blurStride") b.blurStride = int(std::lround(v));
+    else if (name == "blurSigma") b.blurSigma = float(v);
+    else if (name == "edgeSharpness") b.edgeSharpness = float(v);
+    else return false;
+    return true;
+}
 
 inline Vec3 sub(Vec3 a, Vec3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
 inline float dot(Vec3 a, Vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }

@@ -13,11 +13,6 @@ namespace ssfx::ao {
 
 namespace {
 
-template <class T>
-void checkRange(const char* name, T v, T lo, T hi) {
-    if (!(v >= lo && v <= hi)) throw Error(fmt::format("sao: {} = {} is not in [{}, {}]", name, v, lo, hi));
-}
-
 // The paper's updated falloff (appendix, June 2012):
 // A = max(0, 1 - 5 / (r^6 s) * sum max(r^2 - v.v, 0)^3 * max((v.n - beta) / (v.v + eps), 0)) ^ intensity.
 struct SaoEstimator {
@@ -49,20 +44,20 @@ float hashAngle(int x, int y) {
 }
 
 void validate(const SaoParams& p) {
-    checkRange("radius", p.radius, 1e-6f, 100.0f);
-    checkRange("bias", p.bias, 0.0f, 1.0f);
-    checkRange("epsilon", p.epsilon, 1e-9f, 1.0f);
-    checkRange("intensity", p.intensity, 0.0f, 10.0f);
-    checkRange("numSamples", p.numSamples, 1, 64);
-    checkRange("numSpiralTurns", p.numSpiralTurns, 1, 64);
-    checkRange("logQ", p.logQ, 0, 8);
-    checkRange("maxMip", p.maxMip, 0, 16);
-    checkRange("quadThreshold", p.quadThreshold, 0.0f, 10.0f);
-    checkRange("blurRadius", p.blur.blurRadius, 0, 8);
-    checkRange("blurStride", p.blur.blurStride, 1, 8);
-    checkRange("blurSigma", p.blur.blurSigma, 1e-3f, 16.0f);
-    checkRange("edgeSharpness", p.blur.edgeSharpness, 0.0f, 1e6f);
-    checkRange("guardBand", p.guardBand, 0, 4096);
+    detail::checkRange("sao", "radius", p.radius, 1e-6f, 100.0f);
+    detail::checkRange("sao", "bias", p.bias, 0.0f, 1.0f);
+    detail::checkRange("sao", "epsilon", p.epsilon, 1e-9f, 1.0f);
+    detail::checkRange("sao", "intensity", p.intensity, 0.0f, 10.0f);
+    detail::checkRange("sao", "numSamples", p.numSamples, 1, 64);
+    detail::checkRange("sao", "numSpiralTurns", p.numSpiralTurns, 1, 64);
+    detail::checkRange("sao", "logQ", p.logQ, 0, 8);
+    detail::checkRange("sao", "maxMip", p.maxMip, 0, 16);
+    detail::checkRange("sao", "quadThreshold", p.quadThreshold, 0.0f, 10.0f);
+    detail::checkRange("sao", "blurRadius", p.blur.blurRadius, 0, 8);
+    detail::checkRange("sao", "blurStride", p.blur.blurStride, 1, 8);
+    detail::checkRange("sao", "blurSigma", p.blur.blurSigma, 1e-3f, 16.0f);
+    detail::checkRange("sao", "edgeSharpness", p.blur.edgeSharpness, 0.0f, 1e6f);
+    detail::checkRange("sao", "guardBand", p.guardBand, 0, 4096);
 }
 
 void setParam(SaoParams& p, const std::string& name, double v) {
@@ -78,10 +73,7 @@ void setParam(SaoParams& p, const std::string& name, double v) {
     else if (name == "maxMip") p.maxMip = i;
     else if (name == "usePyramid") p.usePyramid = v != 0;
     else if (name == "quadThreshold") p.quadThreshold = f;
-    else if (name == "blurRadius") p.blur.blurRadius = i;
-    else if (name == "blurStride") p.blur.blurStride = i;
-    else if (name == "blurSigma") p.blur.blurSigma = f;
-    else if (name == "edgeSharpness") p.blur.edgeSharpness = f;
+    else if (detail::setBlurParam(p.blur, name, v)) return;
     else if (name == "guardBand") p.guardBand = i;
     else
         throw Error(fmt::format("sao: unknown parameter '{}' (radius, bias, epsilon, intensity, numSamples, "
