@@ -20,7 +20,9 @@ ao::Camera parseCameraJson(const std::string& text, const std::string& name) {
     }
     if (!j.is_object()) throw Error(fmt::format("{}: a camera must be a JSON object", name));
     ao::Camera c;
-    for (const auto& [key, value] : j.items()) {
+    for (auto it = j.begin(); it != j.end(); ++it) {  // (not a structured binding: clang 14 lambdas)
+        const std::string& key = it.key();
+        const nlohmann::json& value = it.value();
         auto number = [&]() {
             if (!value.is_number()) throw Error(fmt::format("{}: '{}' must be a number", name, key));
             return value.get<double>();
