@@ -58,6 +58,21 @@ void validate(const SaoParams& p) {
     detail::checkRange("sao", "blurSigma", p.blur.blurSigma, 1e-3f, 16.0f);
     detail::checkRange("sao", "edgeSharpness", p.blur.edgeSharpness, 0.0f, 1e6f);
     detail::checkRange("sao", "guardBand", p.guardBand, 0, 4096);
+    detail::checkRange("sao", "packZMin", p.packZMin, -1e5f, -1e-3f);
+}
+
+float packAo(float a) { return std::nearbyint(std::clamp(a, 0.0f, 1.0f) * 255.0f) / 255.0f; }
+
+float packZ(float z, float zMin) {
+    if (std::isinf(z)) return z;  // sky is told apart by the depth test, not by the key
+    // key in [0, 1]; hi = floor(key * 256) / 256 and lo = key * 256 - floor(key * 256), each
+    // stored as an 8-bit unorm (hi is a multiple of 1/256, so it survives exactly up to 255/256).
+    const float key = std::clamp(z / zMin, 0.0f, 1.0f);
+    const float t = std::floor(key * 256.0f);
+    const float hi = std::nearbyint(std::min(t, 255.0f) / 256.0f * 255.0f) / 255.0f;
+    const float lo = std::nearbyint((key * 256.0f - std::min(t, 255.0f)) * 255.0f) / 255.0f;
+    const float k = std::nearbyint(hi * 256.0f) / 256.0f + lo / 256.0f;  // unpack
+    return k * zMin;
 }
 
 void setParam(SaoParams& p, const std::string& name, double v) {
@@ -75,10 +90,12 @@ void setParam(SaoParams& p, const std::string& name, double v) {
     else if (name == "quadThreshold") p.quadThreshold = f;
     else if (detail::setBlurParam(p.blur, name, v)) return;
     else if (name == "guardBand") p.guardBand = i;
+    else if (name == "packBlurInput") p.packBlurInput = v != 0;
+    else if (name == "packZMin") p.packZMin = f;
     else
         throw Error(fmt::format("sao: unknown parameter '{}' (radius, bias, epsilon, intensity, numSamples, "
                                 "numSpiralTurns, logQ, maxMip, usePyramid, quadThreshold, blurRadius, blurStride, "
-                                "blurSigma, edgeSharpness, guardBand)",
+                                "blurSigma, edgeSharpness, guardBand, packBlurInput, packZMin)",
                                 name));
 }
 
@@ -241,7 +258,7 @@ ImageF saoImpl(ImageView<const float> depth, const Camera& camera, const SaoPara
     // Buffers kept per calling thread and reused while the sizes stay (a frame loop then
     // allocates only its output).
     thread_local struct Workspace {
-        ImageF z, a, h, v;
+        ImageF z, a, h, v, zp;
         std::vector<ImageF> pyr;
     } ws;
     if (ws.z.width() != depth.width() || ws.z.height() != depth.height()) ws.z = ImageF(depth.width(), depth.height());
@@ -255,8 +272,18 @@ ImageF saoImpl(ImageView<const float> depth, const Camera& camera, const SaoPara
     samplePassImpl(ws.pyr, proj, work, p, exec, vector, ws.a);
     quadBilateral(ws.a, z.view(), work, p.quadThreshold);
     const auto t3 = Clock::now();
-    bilateralPass(ws.a, z.view(), work, p.blur, true, ws.h, exec);
-    bilateralPass(ws.h, z.view(), work, p.blur, false, ws.v, exec);
+    ImageView<const float> zBlur = z.view();
+    if (p.packBlurInput) {
+        // What the blur would read from the packed buffer (the bandwidth option).
+        if (ws.zp.width() != z.width() || ws.zp.height() != z.height()) ws.zp = ImageF(z.width(), z.height());
+        for (int y = work.y0; y < work.y0 + work.height; ++y)
+            for (int x = work.x0; x < work.x0 + work.width; ++x) ws.zp(x, y) = packZ(z(x, y), p.packZMin);
+        float* av = ws.a.data();
+        for (std::int64_t i = 0; i < ws.a.pixelCount(); ++i) av[i] = packAo(av[i]);
+        zBlur = ws.zp.view();
+    }
+    bilateralPass(ws.a, zBlur, work, p.blur, true, ws.h, exec);
+    bilateralPass(ws.h, zBlur, work, p.blur, false, ws.v, exec);
     const ImageF& v = ws.v;
     ImageF result(out.width, out.height);
     for (int y = 0; y < out.height; ++y)

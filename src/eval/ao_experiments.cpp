@@ -227,6 +227,7 @@ std::string runAoExperiments(const AoExperimentOptions& o) {
         std::string name;
         bool sao, pyramid;
         ao::PyramidFilter filter;
+        bool packed = false;
     };
     const std::vector<Variant> variants{{"alchemy", false, false, ao::PyramidFilter::RotatedGrid},
                                         {"sao, no pyramid", true, false, ao::PyramidFilter::RotatedGrid},
@@ -234,7 +235,8 @@ std::string runAoExperiments(const AoExperimentOptions& o) {
                                         {"sao, mean", true, true, ao::PyramidFilter::Mean},
                                         {"sao, harmonic mean", true, true, ao::PyramidFilter::HarmonicMean},
                                         {"sao, min", true, true, ao::PyramidFilter::Min},
-                                        {"sao, max", true, true, ao::PyramidFilter::Max}};
+                                        {"sao, max", true, true, ao::PyramidFilter::Max},
+                                        {"sao, packed A and z", true, true, ao::PyramidFilter::RotatedGrid, true}};
     const std::vector<std::string> scenes{"corner", "room"};
     std::vector<std::vector<double>> psnrTable(variants.size(), std::vector<double>(scenes.size()));
     for (std::size_t si = 0; si < scenes.size(); ++si) {
@@ -254,6 +256,7 @@ std::string runAoExperiments(const AoExperimentOptions& o) {
                 p.guardBand = guard;
                 p.usePyramid = variants[v].pyramid;
                 p.pyramidFilter = variants[v].filter;
+                p.packBlurInput = variants[v].packed;
                 a = ao::sao(g.depth.view(), cam, p, o.exec);
             } else {
                 ao::AlchemyParams p;

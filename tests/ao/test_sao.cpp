@@ -315,3 +315,26 @@ TEST(Sao, VectorKernelMatchesTheScalarReference) {
     const auto odd = eval::castGeometry(eval::cornerScene(), cam, 101, 77);
     compare(sao(odd.depth.view(), cam), saoReference(odd.depth.view(), cam), "sao odd size");
 }
+
+TEST(Sao, PackedBlurInputByHandAndItsEffect) {
+    // A to 8 bits: 0.5 * 255 = 127.5 rounds to even, 128.
+    EXPECT_FLOAT_EQ(packAo(0.5f), 128.0f / 255.0f);
+    EXPECT_EQ(packAo(1.0f), 1.0f);
+    // z = -50 m with z_min = -200 m: key 0.25, key * 256 = 64 exactly: hi = 64/256, lo = 0.
+    EXPECT_FLOAT_EQ(packZ(-50.0f, -200.0f), -50.0f);
+    EXPECT_TRUE(std::isinf(packZ(-INFINITY, -200.0f)));
+    // The fraction channel has 255 steps per 1/256 of the key: |error| <= 200 m * 0.5 / 255 / 256.
+    for (float z = -0.1f; z > -199.0f; z *= 1.37f) EXPECT_LE(std::abs(packZ(z, -200.0f) - z), 1.54e-3f) << z;
+    // On the room, the packed blur input changes A by little more than the 8-bit step.
+    Camera cam;
+    const auto geo = eval::castGeometry(eval::roomScene(), cam, 320 + 32, 180 + 32);
+    SaoParams p;
+    p.guardBand = 16;
+    const ImageF a = sao(geo.depth.view(), cam, p);
+    p.packBlurInput = true;
+    const ImageF b = sao(geo.depth.view(), cam, p);
+    double mx = 0;
+    for (std::size_t i = 0; i < a.pixels().size(); ++i) mx = std::max(mx, double(std::abs(a.pixels()[i] - b.pixels()[i])));
+    EXPECT_GT(mx, 0.0);
+    EXPECT_LT(mx, 0.02);
+}

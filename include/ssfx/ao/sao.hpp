@@ -50,7 +50,17 @@ struct SaoParams {
     float quadThreshold = 0.02f;  //!< [0, 10] m: 2x2 bilateral averages where |dz| is below this
     BlurParams blur;
     int guardBand = 0;          //!< [0, 4096] px on each side of the depth buffer not output
+    //! The paper's bandwidth option (section 2.3, "pack A and z"): the blur reads A as 8 bits
+    //! and z as a 16-bit key, key = z / packZMin in [0, 1] stored as its integer and fraction
+    //! parts of key * 256 (two 8-bit channels). Default off: the blur reads float A and z.
+    bool packBlurInput = false;
+    float packZMin = -200.0f;   //!< [-1e5, -1e-3] m: z_min of the key (the paper's -200 m)
 };
+
+//! The packing of SaoParams::packBlurInput, for tests: A -> 8-bit, and z -> the z the blur
+//! sees after the 16-bit key round trip (sky stays -infinity).
+float packAo(float a);
+float packZ(float z, float zMin);
 
 //! The discrepancy-minimising number of spiral turns for s samples (s = 1..30; spec sao.md);
 //! the paper's default pairs s = 9 with tau = 7 instead.
