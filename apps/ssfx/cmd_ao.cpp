@@ -50,13 +50,15 @@ void run(const AoOptions& o) {
     const Exec exec{o.threads};
     ao::SaoParams sp;
     ao::AlchemyParams ap;
+    ao::RaytracedParams rp;
+    rp.raysPerPixel = o.rays;
     int guard = 0;
     for (const auto& text : o.params) {
         const auto [name, value] = parseParam(text);
-        if (name == "guardBand") guard = int(value);
+        if (name == "guardBand") guard = rp.guardBand = int(value);
         if (o.method == "sao") ao::setParam(sp, name, value);
         else if (o.method == "alchemy") ao::setParam(ap, name, value);
-        else if (name == "radius") continue;
+        else if (name == "radius") rp.radius = float(value);
         else if (name != "guardBand") throw Error(fmt::format("raytraced: unknown parameter '{}' (radius, guardBand)", name));
     }
     ao::Camera cam;
@@ -85,12 +87,6 @@ void run(const AoOptions& o) {
     } else if (o.method == "alchemy") {
         a = ao::alchemy(depth.view(), cam, ap, exec);
     } else {
-        ao::RaytracedParams rp;
-        rp.radius = sp.radius;
-        for (const auto& text : o.params)
-            if (parseParam(text).first == "radius") rp.radius = float(parseParam(text).second);
-        rp.raysPerPixel = o.rays;
-        rp.guardBand = guard;
         a = ao::raytraced(*scene, cam, depth.width(), depth.height(), rp, exec);
     }
     writeAo(o.output, a);
