@@ -10,6 +10,9 @@ PACKAGES=(
   libpng-dev zlib1g-dev              # PNG / APNG
   libcairo2-dev fonts-dejavu-core fontconfig   # test images (aliased vector drawing, real text)
   libopenexr-dev                     # float buffers (depth, AO) as EXR
+  libvulkan-dev glslc mesa-vulkan-drivers vulkan-validationlayers   # scene renderer (lavapipe on CPU)
+  libassimp-dev libstb-dev libglm-dev  # scene import, textures, vector math
+  libembree-dev                      # ray-traced AO ground truth
   libcli11-dev nlohmann-json3-dev libfmt-dev   # CLI, JSON, formatting
   clang libclang-rt-14-dev           # libFuzzer targets (fuzz smoke run in make test)
   chromium                           # the HTML report's browser test (headless, via playwright-core)

@@ -18,5 +18,6 @@ void addTestsceneCommand(CLI::App& app);
 void addTestimagesCommand(CLI::App& app);
 void addEvalCommand(CLI::App& app);
 void addAoCommand(CLI::App& app);
+void addRenderCommand(CLI::App& app);
 
 }  // namespace ssfx::cli

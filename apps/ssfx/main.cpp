@@ -22,6 +22,9 @@ int main(int argc, char** argv) {
     ssfx::cli::addTestsceneCommand(app);
     ssfx::cli::addTestimagesCommand(app);
     ssfx::cli::addAoCommand(app);
+#ifdef SSFX_HAVE_RENDER
+    ssfx::cli::addRenderCommand(app);
+#endif
     ssfx::cli::addEvalCommand(app);
     try {
         app.parse(argc, argv);

@@ -36,8 +36,11 @@ ao::Camera parseCameraJson(const std::string& text, const std::string& name) {
                 c.zFar = -INFINITY;
             else
                 c.zFar = number();
+        } else if (key == "width" || key == "height" || key == "guard" || key == "projection" || key == "view") {
+            // Written by `ssfx render` for other consumers; the AO passes derive all from the three above.
         } else {
-            throw Error(fmt::format("{}: unknown key '{}' (known: fov_y_deg, z_near, z_far)", name, key));
+            throw Error(fmt::format("{}: unknown key '{}' (known: fov_y_deg, z_near, z_far; width, height, "
+                                    "guard, projection, view are ignored)", name, key));
         }
     }
     ao::projection(c, 1, 1);  // validates, with a message naming the field

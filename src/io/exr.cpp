@@ -105,19 +105,34 @@ ImageF readExr(const std::string& path, const std::string& channel, std::string*
 }
 
 std::vector<std::uint8_t> encodeExr(ImageView<const float> image, const std::string& channel) {
-    checkDimensions(image.width(), image.height(), "EXR image");
+    return encodeExr(std::vector<ExrChannel>{{channel, image}});
+}
+
+std::vector<std::uint8_t> encodeExr(const std::vector<ExrChannel>& channels) {
+    if (channels.empty()) throw Error("EXR encoding: no channels");
+    const int w = channels[0].image.width(), h = channels[0].image.height();
+    checkDimensions(w, h, "EXR image");
+    for (const auto& c : channels)
+        if (c.image.width() != w || c.image.height() != h)
+            throw Error(fmt::format("EXR encoding: channel '{}' is {}x{}, not {}x{}", c.name, c.image.width(),
+                                    c.image.height(), w, h));
     try {
-        Imf::Header header(image.width(), image.height());
+        Imf::Header header(w, h);
         header.compression() = Imf::ZIP_COMPRESSION;
-        header.channels().insert(channel, Imf::Channel(Imf::FLOAT));
+        Imf::FrameBuffer fb;
+        for (const auto& c : channels) {
+            if (header.channels().findChannel(c.name)) throw Error(fmt::format("EXR encoding: channel '{}' twice", c.name));
+            header.channels().insert(c.name, Imf::Channel(Imf::FLOAT));
+            fb.insert(c.name, Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(const_cast<float*>(c.image.data())),
+                                         sizeof(float), std::size_t(c.image.stride()) * sizeof(float)));
+        }
         MemoryOStream stream;
         Imf::OutputFile file(stream, header);
-        Imf::FrameBuffer fb;
-        fb.insert(channel, Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(const_cast<float*>(image.data())),
-                                      sizeof(float), std::size_t(image.stride()) * sizeof(float)));
         file.setFrameBuffer(fb);
-        file.writePixels(image.height());
+        file.writePixels(h);
         return std::move(stream.out);
+    } catch (const Error&) {
+        throw;
     } catch (const std::exception& e) {
         throw Error(fmt::format("EXR encoding failed ({})", e.what()));
     }
@@ -128,5 +143,7 @@ void writeExr(const std::string& path, ImageView<const float> image, const std::
     const auto bytes = encodeExr(image, channel);
     writeFileAtomic(path, bytes);
 }
+
+void writeExr(const std::string& path, const std::vector<ExrChannel>& channels) { writeFileAtomic(path, encodeExr(channels)); }
 
 }  // namespace ssfx::io

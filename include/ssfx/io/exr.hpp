@@ -23,6 +23,14 @@ ImageF decodeExr(std::span<const std::uint8_t> bytes, const std::string& name, c
 ImageF readExr(const std::string& path, const std::string& channel = "", std::string* channelUsed = nullptr);
 
 std::vector<std::uint8_t> encodeExr(ImageView<const float> image, const std::string& channel = "Y");
+
+//! Several FLOAT channels of the same size in one file (e.g. a G-buffer: N.X, N.Y, N.Z, ...).
+struct ExrChannel {
+    std::string name;
+    ImageView<const float> image;
+};
+std::vector<std::uint8_t> encodeExr(const std::vector<ExrChannel>& channels);
+void writeExr(const std::string& path, const std::vector<ExrChannel>& channels);
 void writeExr(const std::string& path, ImageView<const float> image, const std::string& channel = "Y");
 
 }  // namespace ssfx::io

@@ -1,0 +1,147 @@
+// ssfx render: depth buffers, G-buffers and forward-shaded colour of a scene (Vulkan).
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <optional>
+
+#include "commands.hpp"
+#include "ssfx/ao/depth.hpp"
+#include "ssfx/core/error.hpp"
+#include "ssfx/io/exr.hpp"
+#include "ssfx/io/png.hpp"
+#include "ssfx/render/renderer.hpp"
+
+namespace ssfx::cli {
+
+namespace {
+
+struct RenderOptions {
+    std::string scene, view, size = "960x540", depthFormat = "d32f", out, device, far;
+    int scale = 1, gbuffer = 0, guard = 0;
+    double near = 0;
+    bool listViews = false, listDevices = false, validation = false;
+};
+
+std::pair<int, int> parseSize(const std::string& text) {
+    int w = 0, h = 0;
+    char x = 0, extra = 0;
+    if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || x != 'x' || w < 1 || h < 1 || w > 16384 || h > 16384)
+        throw Error(fmt::format("--size '{}' is not WIDTHxHEIGHT (1..16384 each)", text));
+    return {w, h};
+}
+
+ao::DepthFormat parseDepthFormat(const std::string& f) {
+    if (f == "d16") return ao::DepthFormat::D16;
+    if (f == "d24") return ao::DepthFormat::D24;
+    if (f == "d32f") return ao::DepthFormat::D32F;
+    throw Error(fmt::format("--depth-format '{}' (d16, d24, d32f)", f));
+}
+
+void writeGBuffer(const std::string& path, const render::GBuffer& g) {
+    const int w = g.sampleWidth(), h = g.sampleHeight();
+    std::vector<ImageF> planes(12, ImageF(w, h));
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const std::size_t i = g.index(x, y);
+            for (int c = 0; c < 3; ++c) planes[std::size_t(c)](x, y) = g.normal[i][c];
+            planes[3](x, y) = g.uv[i].x;
+            planes[4](x, y) = g.uv[i].y;
+            for (int c = 0; c < 4; ++c) planes[std::size_t(5 + c)](x, y) = g.uvGrad[i][c];
+            planes[9](x, y) = g.material[i] == render::GBuffer::kNoMaterial ? -1.0f : float(g.material[i]);
+            planes[10](x, y) = float(g.layer[i]);
+        }
+    planes[11] = g.depth;
+    const char* names[] = {"N.X", "N.Y", "N.Z", "UV.U", "UV.V", "dUVdx.U", "dUVdx.V", "dUVdy.U", "dUVdy.V",
+                           "material", "layer", "Z"};
+    std::vector<io::ExrChannel> channels;
+    for (std::size_t i = 0; i < planes.size(); ++i) channels.push_back({names[i], planes[i].view()});
+    io::writeExr(path, channels);
+}
+
+void writeText(const std::string& path, const std::string& text) {
+    io::writeFileAtomic(path, {reinterpret_cast<const std::uint8_t*>(text.data()), text.size()});
+}
+
+void run(const RenderOptions& o) {
+    if (o.listDevices) {
+        for (const auto& d : render::listDevices())
+            fmt::print("{}: {} ({}, Vulkan {}){}\n", d.index, d.name, d.type, d.api, d.usable ? "" : " [not usable: needs 1.3]");
+        return;
+    }
+    if (o.scene.empty()) throw Error("no scene given (a built-in name: atrium, cornell; a scene .json; or a model file)");
+    render::Scene scene = render::loadScene(o.scene);
+    if (o.listViews) {
+        for (const auto& [name, v] : scene.views)
+            fmt::print("{}: eye ({:.3g}, {:.3g}, {:.3g}) target ({:.3g}, {:.3g}, {:.3g}) fov {:.3g} deg\n", name, v.eye.x,
+                       v.eye.y, v.eye.z, v.target.x, v.target.y, v.target.z, v.fovYDeg);
+        return;
+    }
+    if (o.out.empty()) throw Error("no output folder given (--out DIR)");
+    render::View view = o.view.empty() ? scene.views.at(0).second : scene.view(o.view);
+    if (o.near > 0) view.zNear = o.near;
+    if (!o.far.empty()) {
+        if (o.far == "inf") {
+            view.zFar = INFINITY;
+        } else {
+            char* end = nullptr;
+            view.zFar = std::strtod(o.far.c_str(), &end);
+            if (!end || *end || !(view.zFar > view.zNear)) throw Error(fmt::format("--far '{}': a distance > near, or inf", o.far));
+        }
+    }
+    const auto [w, h] = parseSize(o.size);
+    const ao::DepthFormat format = parseDepthFormat(o.depthFormat);
+    // Everything is rendered before anything is written.
+    render::Renderer renderer({o.device, o.validation});
+    const auto depth = renderer.renderDepth(scene, view, w, h, format, o.guard);
+    const auto color = renderer.renderColor(scene, view, w, h, o.scale);
+    std::optional<render::GBuffer> gbuffer;
+    if (o.gbuffer > 0) gbuffer = renderer.renderGBuffer(scene, view, w, h, o.gbuffer);
+    const ImageF z = ao::depthToZ(depth.depth.view(), depth.camera.camera);
+
+    std::filesystem::create_directories(o.out);
+    const std::filesystem::path dir(o.out);
+    io::writeExr((dir / "depth.exr").string(), depth.depth.view(), "Z");
+    io::writeExr((dir / "z.exr").string(), z.view(), "Z");
+    writeText((dir / "camera.json").string(), render::cameraSetupJson(depth.camera));
+    io::writePng((dir / "color.png").string(), color.color.view());
+    if (gbuffer) writeGBuffer((dir / "gbuffer.exr").string(), *gbuffer);
+    fmt::print("{} / {}: {} triangles, {}x{} + guard {} on {}: depth ({}) {:.2f} ms, colour x{} {:.2f} ms", scene.name,
+               o.view.empty() ? scene.views.at(0).first : o.view, scene.triangleCount(), w, h, o.guard,
+               renderer.device().name, o.depthFormat, depth.gpuMs, o.scale, color.gpuMs);
+    if (gbuffer) fmt::print(", G-buffer {}x{} {:.2f} ms", o.gbuffer, o.gbuffer, gbuffer->gpuMs);
+    fmt::print(" (GPU time) -> {}\n", o.out);
+    for (const auto& m : renderer.validationMessages()) fmt::print(stderr, "validation: {}\n", m);
+}
+
+}  // namespace
+
+void addRenderCommand(CLI::App& app) {
+    auto o = std::make_shared<RenderOptions>();
+    auto* cmd = app.add_subcommand("render", "Render a scene with Vulkan: depth buffer, G-buffer, forward-shaded colour");
+    cmd->add_option("scene", o->scene, "Built-in scene (atrium, cornell), a scene file (.json) or a model (OBJ, glTF, Collada)");
+    cmd->add_option("--view", o->view, "Named viewpoint (default: the scene's first; see --list-views)");
+    cmd->add_option("--size", o->size, "Image size WxH without guard band (default 960x540)");
+    cmd->add_option("--scale", o->scale, "Colour image rendered at scale x size (1..16; for the AA evaluation)")
+        ->check(CLI::Range(1, 16));
+    cmd->add_option("--depth-format", o->depthFormat, "d16, d24 (X8_D24) or d32f (default)");
+    cmd->add_option("--gbuffer", o->gbuffer, "Also write an m x m supersampled G-buffer (m = 1..4) as gbuffer.exr")
+        ->check(CLI::Range(0, 4));
+    cmd->add_option("--guard", o->guard, "Guard band in pixels on every side of the depth buffer (default 0)")
+        ->check(CLI::Range(0, 4096));
+    cmd->add_option("--near", o->near, "Override the view's near plane distance (m)")->check(CLI::PositiveNumber);
+    cmd->add_option("--far", o->far, "Override the far plane: a distance in m, or inf");
+    cmd->add_option("--out", o->out, "Output folder: depth.exr, z.exr, camera.json, color.png [, gbuffer.exr]");
+    cmd->add_option("--device", o->device, "Vulkan device index or part of its name (default: a GPU, else lavapipe)");
+    cmd->add_flag("--validation", o->validation, "Enable the Khronos validation layer and print its messages");
+    cmd->add_flag("--list-views", o->listViews, "List the scene's viewpoints and exit");
+    cmd->add_flag("--list-devices", o->listDevices, "List the Vulkan devices and exit");
+    cmd->footer("Depth is hardware depth in [0, 1] (0 = near); camera.json holds fov_y_deg, z_near, z_far (read by\n"
+                "ssfx ao), the size, guard band and the projection and view matrices (docs/render.md).\n"
+                "Examples:\n"
+                "  ssfx render atrium --view nave --size 1280x720 --guard 128 --out out/atrium\n"
+                "  ssfx render scenes/sponza.json --list-views\n"
+                "  ssfx render cornell --size 256x256 --gbuffer 4 --depth-format d24 --out out/cornell");
+    cmd->callback([o] { run(*o); });
+}
+
+}  // namespace ssfx::cli

@@ -1,0 +1,207 @@
+// Model import with Assimp and scene files (JSON); see scene.hpp.
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+#include <fmt/format.h>
+#include <stb/stb_image.h>
+
+#include <assimp/Importer.hpp>
+#include <cmath>
+#include <filesystem>
+#include <algorithm>
+#include <cstring>
+#include <map>
+#include <numbers>
+#include <nlohmann/json.hpp>
+
+#include "ssfx/core/error.hpp"
+#include "ssfx/io/png.hpp"
+#include "ssfx/render/scene.hpp"
+
+namespace ssfx::render {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::ordered_json;  // views keep the file's order
+
+namespace {
+
+ImageRgba8 decodeTexture(const std::uint8_t* bytes, std::size_t size, const std::string& name) {
+    int w = 0, h = 0, channels = 0;
+    // Check the size before decoding (stb_image would allocate whatever the header says).
+    if (!stbi_info_from_memory(bytes, int(size), &w, &h, &channels))
+        throw Error(fmt::format("texture '{}': cannot decode ({})", name, stbi_failure_reason()));
+    checkDimensions(w, h, fmt::format("texture '{}'", name));
+    std::uint8_t* pixels = stbi_load_from_memory(bytes, int(size), &w, &h, &channels, 4);
+    if (!pixels) throw Error(fmt::format("texture '{}': cannot decode ({})", name, stbi_failure_reason()));
+    ImageRgba8 img(w, h);
+    std::memcpy(img.data(), pixels, std::size_t(w) * std::size_t(h) * 4);
+    stbi_image_free(pixels);
+    return img;
+}
+
+View defaultView(const Scene& s) {
+    const auto [lo, hi] = s.bounds();
+    const glm::dvec3 centre = (glm::dvec3(lo) + glm::dvec3(hi)) * 0.5;
+    const double radius = std::max(1e-3, glm::length(glm::dvec3(hi) - glm::dvec3(lo)) * 0.5);
+    View v;
+    v.fovYDeg = 50.0;
+    // Far enough that the bounding sphere fits the vertical field of view, looking along -z.
+    const double dist = radius / std::sin(v.fovYDeg * std::numbers::pi / 360.0);
+    v.eye = centre + glm::dvec3(0.0, radius * 0.25, dist);
+    v.target = centre;
+    v.zNear = std::max(1e-3, (dist - radius) * 0.05);
+    return v;
+}
+
+glm::vec3 vec3Of(const Json& j, const std::string& what) {
+    if (!j.is_array() || j.size() != 3 || !j[0].is_number() || !j[1].is_number() || !j[2].is_number())
+        throw Error(fmt::format("{} must be an array of three numbers", what));
+    return {j[0].get<float>(), j[1].get<float>(), j[2].get<float>()};
+}
+
+}  // namespace
+
+Scene importModel(const std::string& path, double scale) {
+    if (!(scale > 0.0 && std::isfinite(scale))) throw Error(fmt::format("model '{}': scale {} must be > 0", path, scale));
+    if (!fs::is_regular_file(path)) throw Error(fmt::format("model '{}': no such file", path));
+    Assimp::Importer importer;
+    importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+    const aiScene* ai = importer.ReadFile(
+        path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_GenSmoothNormals |
+                  aiProcess_PreTransformVertices | aiProcess_FlipUVs | aiProcess_SortByPType | aiProcess_ValidateDataStructure);
+    if (!ai || (ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !ai->mRootNode)
+        throw Error(fmt::format("model '{}': cannot import ({})", path, importer.GetErrorString()));
+    Scene s;
+    s.name = fs::path(path).stem().string();
+    const fs::path dir = fs::path(path).parent_path();
+    std::map<std::string, int> layerOf;  // texture path -> layer
+    for (unsigned i = 0; i < ai->mNumMaterials; ++i) {
+        const aiMaterial* m = ai->mMaterials[i];
+        Material mat;
+        aiString name;
+        if (m->Get(AI_MATKEY_NAME, name) == AI_SUCCESS) mat.name = name.C_Str();
+        aiColor3D diffuse(0.8f, 0.8f, 0.8f);
+        m->Get(AI_MATKEY_COLOR_DIFFUSE, diffuse);
+        mat.diffuse = {diffuse.r, diffuse.g, diffuse.b};
+        aiString tex;
+        if (m->GetTextureCount(aiTextureType_DIFFUSE) > 0 && m->GetTexture(aiTextureType_DIFFUSE, 0, &tex) == AI_SUCCESS) {
+            const std::string texName = tex.C_Str();
+            auto found = layerOf.find(texName);
+            if (found == layerOf.end()) {
+                ImageRgba8 img;
+                if (const aiTexture* embedded = ai->GetEmbeddedTexture(texName.c_str())) {
+                    if (embedded->mHeight != 0)
+                        throw Error(fmt::format("model '{}': embedded texture '{}' is uncompressed (unsupported)", path, texName));
+                    img = decodeTexture(reinterpret_cast<const std::uint8_t*>(embedded->pcData), embedded->mWidth,
+                                        texName);
+                } else {
+                    std::string rel = texName;
+                    std::replace(rel.begin(), rel.end(), '\\', '/');
+                    const fs::path file = dir / rel;
+                    if (!fs::is_regular_file(file))
+                        throw Error(fmt::format("model '{}': material '{}' names texture '{}', not found at {}", path,
+                                                mat.name, texName, file.string()));
+                    const auto bytes = io::readFile(file.string());
+                    img = decodeTexture(bytes.data(), bytes.size(), file.string());
+                }
+                found = layerOf.emplace(texName, addTextureLayer(s.textures, img)).first;
+            }
+            mat.textureLayer = found->second;
+            mat.diffuse = glm::vec3(1.0f);  // OBJ's Kd defaults multiply the texture; use the texture as is
+            if (m->Get(AI_MATKEY_COLOR_DIFFUSE, diffuse) == AI_SUCCESS) mat.diffuse = {diffuse.r, diffuse.g, diffuse.b};
+        }
+        s.materials.push_back(mat);
+    }
+    if (s.materials.empty()) s.materials.push_back({"default", glm::vec3(0.8f), -1});
+    for (unsigned mi = 0; mi < ai->mNumMeshes; ++mi) {
+        const aiMesh* mesh = ai->mMeshes[mi];
+        if (!(mesh->mPrimitiveTypes & aiPrimitiveType_TRIANGLE)) continue;
+        const auto base = std::uint32_t(s.vertices.size());
+        for (unsigned v = 0; v < mesh->mNumVertices; ++v) {
+            Vertex vx;
+            const aiVector3D& p = mesh->mVertices[v];
+            vx.position = glm::vec3(glm::dvec3(p.x, p.y, p.z) * scale);
+            if (mesh->mNormals) vx.normal = {mesh->mNormals[v].x, mesh->mNormals[v].y, mesh->mNormals[v].z};
+            if (!(glm::length(vx.normal) > 0.0f) || !std::isfinite(vx.normal.x)) vx.normal = {0, 1, 0};
+            vx.normal = glm::normalize(vx.normal);
+            if (mesh->mTextureCoords[0]) vx.uv = {mesh->mTextureCoords[0][v].x, mesh->mTextureCoords[0][v].y};
+            vx.material = mesh->mMaterialIndex < s.materials.size() ? mesh->mMaterialIndex : 0;
+            s.vertices.push_back(vx);
+        }
+        for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
+            const aiFace& face = mesh->mFaces[f];
+            if (face.mNumIndices != 3) continue;
+            for (int k = 0; k < 3; ++k) s.indices.push_back(base + face.mIndices[k]);
+        }
+    }
+    if (s.indices.empty()) throw Error(fmt::format("model '{}': no triangles", path));
+    s.validate();
+    s.lights.push_back({Light::Type::Directional, glm::normalize(glm::vec3(-0.4f, -1.0f, -0.5f)), glm::vec3(1.0f)});
+    s.views.emplace_back("default", defaultView(s));
+    return s;
+}
+
+Scene loadSceneFile(const std::string& path) {
+    const auto bytes = io::readFile(path);
+    Json j;
+    try {
+        j = Json::parse(bytes.begin(), bytes.end());
+    } catch (const std::exception& e) {
+        throw Error(fmt::format("scene file '{}': not valid JSON ({})", path, e.what()));
+    }
+    if (!j.is_object()) throw Error(fmt::format("scene file '{}': must be a JSON object", path));
+    for (auto it = j.begin(); it != j.end(); ++it)
+        if (it.key() != "model" && it.key() != "scale" && it.key() != "ambient" && it.key() != "background" &&
+            it.key() != "lights" && it.key() != "views")
+            throw Error(fmt::format("scene file '{}': unknown key '{}' (model, scale, ambient, background, lights, views)",
+                                    path, it.key()));
+    if (!j.contains("model") || !j["model"].is_string())
+        throw Error(fmt::format("scene file '{}': 'model' (a path) is required", path));
+    const double scale = j.value("scale", 1.0);
+    fs::path model = j["model"].get<std::string>();
+    if (model.is_relative()) model = fs::path(path).parent_path() / model;
+    Scene s = importModel(model.string(), scale);
+    s.name = fs::path(path).stem().string();
+    const std::string where = fmt::format("scene file '{}'", path);
+    if (j.contains("ambient")) s.ambient = vec3Of(j["ambient"], where + ": 'ambient'");
+    if (j.contains("background")) s.background = vec3Of(j["background"], where + ": 'background'");
+    if (j.contains("lights")) {
+        s.lights.clear();
+        if (!j["lights"].is_array()) throw Error(where + ": 'lights' must be an array");
+        for (const auto& l : j["lights"]) {
+            const std::string type = l.value("type", "");
+            Light light;
+            if (type == "directional") {
+                light.type = Light::Type::Directional;
+                light.vector = vec3Of(l.value("direction", Json()), where + ": a directional light's 'direction'");
+                if (!(glm::length(light.vector) > 0.0f)) throw Error(where + ": a directional light's direction is zero");
+                light.vector = glm::normalize(light.vector);
+            } else if (type == "point") {
+                light.type = Light::Type::Point;
+                light.vector = vec3Of(l.value("position", Json()), where + ": a point light's 'position'");
+            } else {
+                throw Error(fmt::format("{}: light type '{}' (directional, point)", where, type));
+            }
+            light.color = vec3Of(l.value("color", Json::array({1, 1, 1})), where + ": a light's 'color'");
+            s.lights.push_back(light);
+        }
+    }
+    if (j.contains("views")) {
+        if (!j["views"].is_object() || j["views"].empty()) throw Error(where + ": 'views' must be a non-empty object");
+        s.views.clear();
+        for (auto it = j["views"].begin(); it != j["views"].end(); ++it) {
+            const Json& v = it.value();
+            const std::string what = fmt::format("{}: view '{}'", where, it.key());
+            View view;
+            view.eye = glm::dvec3(vec3Of(v.value("eye", Json()), what + " 'eye'"));
+            view.target = glm::dvec3(vec3Of(v.value("target", Json()), what + " 'target'"));
+            if (v.contains("up")) view.up = glm::dvec3(vec3Of(v["up"], what + " 'up'"));
+            view.fovYDeg = v.value("fov_y_deg", view.fovYDeg);
+            view.zNear = v.value("z_near", view.zNear);
+            if (v.contains("z_far") && !v["z_far"].is_null()) view.zFar = v["z_far"].get<double>();
+            s.views.emplace_back(it.key(), view);
+        }
+    }
+    return s;
+}
+
+}  // namespace ssfx::render

@@ -1,0 +1,439 @@
+// Vulkan rasterisation of scenes into depth buffers, G-buffers and forward-shaded colour
+// (see renderer.hpp). One draw of the whole scene per request with dynamic rendering;
+// attachments are copied to host-visible buffers and converted on the CPU.
+#include "ssfx/render/renderer.hpp"
+
+#include <fmt/format.h>
+
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <map>
+
+#include "ssfx/core/error.hpp"
+#include "vk_context.hpp"
+
+namespace ssfx::render {
+
+namespace {
+
+// SPIR-V compiled from src/render/shaders/ by glslc at build time (-mfmt=num).
+const std::uint32_t kSceneVert[] = {
+#include "shaders/scene.vert.inc"
+};
+const std::uint32_t kGBufferFrag[] = {
+#include "shaders/gbuffer.frag.inc"
+};
+const std::uint32_t kForwardFrag[] = {
+#include "shaders/forward.frag.inc"
+};
+
+enum class Pass { Depth, GBuffer, Forward };
+
+// Layouts of the shaders' buffers (common.glsl): std140 / std430 with vec4 members only.
+struct FrameData {
+    glm::mat4 view;
+    glm::vec4 ambient;
+    glm::vec4 params;  // derivative scale, light count
+    glm::vec4 eye;     // camera position, world space
+};
+struct MaterialData {
+    glm::vec4 diffuse;
+    glm::ivec4 layer;
+};
+struct LightData {
+    glm::vec4 vector, color;
+};
+static_assert(sizeof(FrameData) == 112 && sizeof(MaterialData) == 32 && sizeof(LightData) == 32);
+
+// The G-buffer's attachments (documented in renderer.hpp and docs/render.md).
+constexpr std::array<vk::Format, 4> kGBufferFormats = {vk::Format::eR16G16B16A16Snorm, vk::Format::eR32G32Sfloat,
+                                                       vk::Format::eR32G32B32A32Sfloat, vk::Format::eR16G16Uint};
+constexpr std::array<std::size_t, 4> kGBufferBytes = {8, 8, 16, 4};
+
+vk::Format vkDepthFormat(ao::DepthFormat f) {
+    switch (f) {
+        case ao::DepthFormat::D16: return vk::Format::eD16Unorm;
+        case ao::DepthFormat::D24: return vk::Format::eX8D24UnormPack32;
+        case ao::DepthFormat::D32F: return vk::Format::eD32Sfloat;
+    }
+    return vk::Format::eD32Sfloat;
+}
+
+std::size_t depthBytes(vk::Format f) { return f == vk::Format::eD16Unorm ? 2 : 4; }
+
+// Converts the copied depth aspect to [0, 1]: unorm values exactly as v / (2^n - 1) rounded
+// once to float (for D24 that rounding is below half a D24 step); D32F as stored.
+ImageF depthFromBytes(const void* bytes, vk::Format f, int w, int h) {
+    ImageF d(w, h);
+    const std::size_t n = std::size_t(w) * std::size_t(h);
+    if (f == vk::Format::eD16Unorm) {
+        const auto* p = static_cast<const std::uint16_t*>(bytes);
+        for (std::size_t i = 0; i < n; ++i) d.data()[i] = float(double(p[i]) / 65535.0);
+    } else if (f == vk::Format::eX8D24UnormPack32) {
+        const auto* p = static_cast<const std::uint32_t*>(bytes);
+        for (std::size_t i = 0; i < n; ++i) d.data()[i] = float(double(p[i] & 0xFFFFFFu) / 16777215.0);
+    } else {
+        std::memcpy(d.data(), bytes, n * sizeof(float));
+    }
+    return d;
+}
+
+struct ColorTarget {
+    vk::Format format;
+    vk::ClearColorValue clear;
+    std::size_t bytesPerTexel;
+};
+
+}  // namespace
+
+struct Renderer::Impl {
+    explicit Impl(const RendererOptions& o) : ctx(o) {
+        using B = vk::DescriptorSetLayoutBinding;
+        const auto all = vk::ShaderStageFlagBits::eVertex | vk::ShaderStageFlagBits::eFragment;
+        const std::array<B, 4> bindings = {B(0, vk::DescriptorType::eUniformBuffer, 1, all),
+                                           B(1, vk::DescriptorType::eStorageBuffer, 1, vk::ShaderStageFlagBits::eFragment),
+                                           B(2, vk::DescriptorType::eStorageBuffer, 1, vk::ShaderStageFlagBits::eFragment),
+                                           B(3, vk::DescriptorType::eCombinedImageSampler, 1, vk::ShaderStageFlagBits::eFragment)};
+        setLayout = vk::raii::DescriptorSetLayout(ctx.device, vk::DescriptorSetLayoutCreateInfo({}, bindings));
+        const vk::PushConstantRange push(vk::ShaderStageFlagBits::eVertex, 0, sizeof(glm::mat4));
+        const vk::DescriptorSetLayout layouts[] = {*setLayout};
+        pipelineLayout = vk::raii::PipelineLayout(ctx.device, vk::PipelineLayoutCreateInfo({}, layouts, push));
+        vert = vk::raii::ShaderModule(ctx.device, vk::ShaderModuleCreateInfo({}, sizeof(kSceneVert), kSceneVert));
+        gbufferFrag = vk::raii::ShaderModule(ctx.device, vk::ShaderModuleCreateInfo({}, sizeof(kGBufferFrag), kGBufferFrag));
+        forwardFrag = vk::raii::ShaderModule(ctx.device, vk::ShaderModuleCreateInfo({}, sizeof(kForwardFrag), kForwardFrag));
+        sampler = vk::raii::Sampler(
+            ctx.device, vk::SamplerCreateInfo({}, vk::Filter::eLinear, vk::Filter::eLinear, vk::SamplerMipmapMode::eLinear,
+                                              vk::SamplerAddressMode::eRepeat, vk::SamplerAddressMode::eRepeat,
+                                              vk::SamplerAddressMode::eRepeat, 0.0f, ctx.anisotropy,
+                                              std::min(16.0f, ctx.maxAnisotropy), VK_FALSE, vk::CompareOp::eAlways, 0.0f,
+                                              VK_LOD_CLAMP_NONE));
+    }
+
+    const vk::raii::Pipeline& pipeline(Pass pass, vk::Format depthFormat) {
+        const auto key = std::make_pair(int(pass), int(depthFormat));
+        auto it = pipelines.find(key);
+        if (it != pipelines.end()) return it->second;
+        std::vector<vk::PipelineShaderStageCreateInfo> stages = {
+            vk::PipelineShaderStageCreateInfo({}, vk::ShaderStageFlagBits::eVertex, *vert, "main")};
+        std::vector<vk::Format> colorFormats;
+        if (pass == Pass::GBuffer) {
+            stages.emplace_back(vk::PipelineShaderStageCreateFlags(), vk::ShaderStageFlagBits::eFragment, *gbufferFrag, "main");
+            colorFormats.assign(kGBufferFormats.begin(), kGBufferFormats.end());
+        } else if (pass == Pass::Forward) {
+            stages.emplace_back(vk::PipelineShaderStageCreateFlags(), vk::ShaderStageFlagBits::eFragment, *forwardFrag, "main");
+            colorFormats = {vk::Format::eR8G8B8A8Unorm};
+        }
+        const vk::VertexInputBindingDescription binding(0, sizeof(Vertex), vk::VertexInputRate::eVertex);
+        const std::array<vk::VertexInputAttributeDescription, 4> attributes = {
+            vk::VertexInputAttributeDescription(0, 0, vk::Format::eR32G32B32Sfloat, offsetof(Vertex, position)),
+            vk::VertexInputAttributeDescription(1, 0, vk::Format::eR32G32B32Sfloat, offsetof(Vertex, normal)),
+            vk::VertexInputAttributeDescription(2, 0, vk::Format::eR32G32Sfloat, offsetof(Vertex, uv)),
+            vk::VertexInputAttributeDescription(3, 0, vk::Format::eR32Uint, offsetof(Vertex, material))};
+        const vk::PipelineVertexInputStateCreateInfo vertexInput({}, binding, attributes);
+        const vk::PipelineInputAssemblyStateCreateInfo assembly({}, vk::PrimitiveTopology::eTriangleList);
+        const vk::PipelineViewportStateCreateInfo viewport({}, 1, nullptr, 1, nullptr);
+        // Two-sided surfaces (imported models are not reliably closed or consistently wound).
+        const vk::PipelineRasterizationStateCreateInfo raster({}, VK_FALSE, VK_FALSE, vk::PolygonMode::eFill,
+                                                              vk::CullModeFlagBits::eNone, vk::FrontFace::eCounterClockwise,
+                                                              VK_FALSE, 0, 0, 0, 1.0f);
+        const vk::PipelineMultisampleStateCreateInfo multisample({}, vk::SampleCountFlagBits::e1);
+        const vk::PipelineDepthStencilStateCreateInfo depth({}, VK_TRUE, VK_TRUE, vk::CompareOp::eLess);
+        const std::vector<vk::PipelineColorBlendAttachmentState> blend(
+            colorFormats.size(), vk::PipelineColorBlendAttachmentState(VK_FALSE, {}, {}, {}, {}, {}, {},
+                                                                        vk::ColorComponentFlagBits::eR | vk::ColorComponentFlagBits::eG |
+                                                                            vk::ColorComponentFlagBits::eB | vk::ColorComponentFlagBits::eA));
+        const vk::PipelineColorBlendStateCreateInfo blending({}, VK_FALSE, vk::LogicOp::eCopy, blend);
+        const std::array<vk::DynamicState, 2> dynamicStates = {vk::DynamicState::eViewport, vk::DynamicState::eScissor};
+        const vk::PipelineDynamicStateCreateInfo dynamic({}, dynamicStates);
+        const vk::PipelineRenderingCreateInfo rendering(0, colorFormats, depthFormat);
+        vk::GraphicsPipelineCreateInfo info({}, stages, &vertexInput, &assembly, nullptr, &viewport, &raster, &multisample,
+                                            &depth, &blending, &dynamic, *pipelineLayout);
+        info.pNext = &rendering;
+        return pipelines.emplace(key, vk::raii::Pipeline(ctx.device, nullptr, info)).first->second;
+    }
+
+    // Uploads the scene's texture array (a 1x1 white layer when it has none).
+    vkx::Image uploadTextures(const TextureArray& t) {
+        TextureArray white;
+        const TextureArray& tex = t.layers.empty() ? white : t;
+        if (t.layers.empty()) white.layers.push_back({ImageRgba8(1, 1, Rgba8{255, 255, 255, 255})}), white.size = 1;
+        const auto layers = std::uint32_t(tex.layers.size()), levels = std::uint32_t(tex.levelCount());
+        vk::DeviceSize total = 0;
+        for (std::uint32_t l = 0; l < levels; ++l) total += vk::DeviceSize(tex.layers[0][l].pixelCount()) * 4 * layers;
+        vkx::Buffer staging = ctx.createBuffer(total, vk::BufferUsageFlagBits::eTransferSrc, true);
+        std::vector<vk::BufferImageCopy> regions;
+        vk::DeviceSize offset = 0;
+        for (std::uint32_t l = 0; l < levels; ++l) {
+            const auto& first = tex.layers[0][l];
+            regions.emplace_back(offset, 0, 0, vk::ImageSubresourceLayers(vk::ImageAspectFlagBits::eColor, l, 0, layers),
+                                 vk::Offset3D(0, 0, 0), vk::Extent3D(std::uint32_t(first.width()), std::uint32_t(first.height()), 1));
+            for (std::uint32_t k = 0; k < layers; ++k) {
+                const auto& img = tex.layers[k][l];
+                std::memcpy(static_cast<std::uint8_t*>(staging.mapped) + offset, img.data(), std::size_t(img.pixelCount()) * 4);
+                offset += vk::DeviceSize(img.pixelCount()) * 4;
+            }
+        }
+        const auto size = std::uint32_t(tex.layers[0][0].width());
+        vkx::Image image = ctx.createImage(vk::Format::eR8G8B8A8Unorm, size, size,
+                                           vk::ImageUsageFlagBits::eSampled | vk::ImageUsageFlagBits::eTransferDst,
+                                           vk::ImageAspectFlagBits::eColor, layers, levels);
+        ctx.submit([&](const vk::raii::CommandBuffer& cmd) {
+            vkx::transition(cmd, image, vk::ImageLayout::eUndefined, vk::ImageLayout::eTransferDstOptimal,
+                            vk::PipelineStageFlagBits::eTopOfPipe, {}, vk::PipelineStageFlagBits::eTransfer,
+                            vk::AccessFlagBits::eTransferWrite);
+            cmd.copyBufferToImage(*staging.buffer, *image.image, vk::ImageLayout::eTransferDstOptimal, regions);
+            vkx::transition(cmd, image, vk::ImageLayout::eTransferDstOptimal, vk::ImageLayout::eShaderReadOnlyOptimal,
+                            vk::PipelineStageFlagBits::eTransfer, vk::AccessFlagBits::eTransferWrite,
+                            vk::PipelineStageFlagBits::eFragmentShader, vk::AccessFlagBits::eShaderRead);
+        });
+        return image;
+    }
+
+    struct Result {
+        std::vector<vkx::Buffer> colors;
+        vkx::Buffer depth;
+        double gpuMs = 0;
+    };
+
+    // One draw of `scene` from `cam` into width x height attachments; returns their contents.
+    Result draw(const Scene& scene, const CameraSetup& cam, Pass pass, vk::Format depthFormat,
+                const std::vector<ColorTarget>& targets, float derivativeScale) {
+        scene.validate();
+        const auto w = std::uint32_t(cam.bufferWidth()), h = std::uint32_t(cam.bufferHeight());
+        const auto limits = ctx.physical.getProperties().limits;
+        if (w > limits.maxImageDimension2D || h > limits.maxImageDimension2D)
+            throw Error(fmt::format("render size {}x{} exceeds the device's limit of {} pixels per side", w, h,
+                                    limits.maxImageDimension2D));
+        ctx.requireAttachmentFormat(depthFormat, true, "depth");
+        for (const auto& t : targets) ctx.requireAttachmentFormat(t.format, false, "a colour attachment");
+
+        // Scene data.
+        vkx::Buffer vertices = ctx.uploadBuffer(scene.vertices.data(), scene.vertices.size() * sizeof(Vertex),
+                                                vk::BufferUsageFlagBits::eVertexBuffer);
+        vkx::Buffer indices = ctx.uploadBuffer(scene.indices.data(), scene.indices.size() * sizeof(std::uint32_t),
+                                               vk::BufferUsageFlagBits::eIndexBuffer);
+        std::vector<MaterialData> materials;
+        for (const auto& m : scene.materials) materials.push_back({glm::vec4(m.diffuse, 1.0f), glm::ivec4(m.textureLayer, 0, 0, 0)});
+        std::vector<LightData> lights;
+        for (const auto& l : scene.lights)
+            lights.push_back({glm::vec4(l.vector, l.type == Light::Type::Point ? 1.0f : 0.0f), glm::vec4(l.color, 0.0f)});
+        const auto lightCount = float(lights.size());
+        if (lights.empty()) lights.push_back({});
+        vkx::Buffer materialBuffer = ctx.uploadBuffer(materials.data(), materials.size() * sizeof(MaterialData),
+                                                      vk::BufferUsageFlagBits::eStorageBuffer);
+        vkx::Buffer lightBuffer = ctx.uploadBuffer(lights.data(), lights.size() * sizeof(LightData), vk::BufferUsageFlagBits::eStorageBuffer);
+        const glm::dvec3 eye = glm::dvec3(glm::inverse(cam.view)[3]);
+        const FrameData frame{glm::mat4(cam.view), glm::vec4(scene.ambient, 0.0f), glm::vec4(derivativeScale, lightCount, 0, 0),
+                              glm::vec4(glm::vec3(eye), 1.0f)};
+        vkx::Buffer frameBuffer = ctx.uploadBuffer(&frame, sizeof(frame), vk::BufferUsageFlagBits::eUniformBuffer);
+        vkx::Image textures = uploadTextures(scene.textures);
+
+        const vk::DescriptorPoolSize poolSizes[] = {{vk::DescriptorType::eUniformBuffer, 1},
+                                                    {vk::DescriptorType::eStorageBuffer, 2},
+                                                    {vk::DescriptorType::eCombinedImageSampler, 1}};
+        vk::raii::DescriptorPool pool(ctx.device, vk::DescriptorPoolCreateInfo(vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, 1, poolSizes));
+        const vk::DescriptorSetLayout layouts[] = {*setLayout};
+        vk::raii::DescriptorSets sets(ctx.device, vk::DescriptorSetAllocateInfo(*pool, layouts));
+        const vk::DescriptorBufferInfo frameInfo(*frameBuffer.buffer, 0, VK_WHOLE_SIZE),
+            materialInfo(*materialBuffer.buffer, 0, VK_WHOLE_SIZE), lightInfo(*lightBuffer.buffer, 0, VK_WHOLE_SIZE);
+        const vk::DescriptorImageInfo textureInfo(*sampler, *textures.view, vk::ImageLayout::eShaderReadOnlyOptimal);
+        const std::array<vk::WriteDescriptorSet, 4> writes = {
+            vk::WriteDescriptorSet(*sets[0], 0, 0, vk::DescriptorType::eUniformBuffer, {}, frameInfo),
+            vk::WriteDescriptorSet(*sets[0], 1, 0, vk::DescriptorType::eStorageBuffer, {}, materialInfo),
+            vk::WriteDescriptorSet(*sets[0], 2, 0, vk::DescriptorType::eStorageBuffer, {}, lightInfo),
+            vk::WriteDescriptorSet(*sets[0], 3, 0, vk::DescriptorType::eCombinedImageSampler, textureInfo)};
+        ctx.device.updateDescriptorSets(writes, {});
+
+        // Attachments and their read-back buffers.
+        const auto usage = vk::ImageUsageFlagBits::eTransferSrc;
+        std::vector<vkx::Image> colorImages;
+        Result result;
+        for (const auto& t : targets) {
+            colorImages.push_back(ctx.createImage(t.format, w, h, vk::ImageUsageFlagBits::eColorAttachment | usage,
+                                                  vk::ImageAspectFlagBits::eColor));
+            result.colors.push_back(ctx.createBuffer(vk::DeviceSize(w) * h * t.bytesPerTexel, vk::BufferUsageFlagBits::eTransferDst, true));
+        }
+        vkx::Image depthImage = ctx.createImage(depthFormat, w, h, vk::ImageUsageFlagBits::eDepthStencilAttachment | usage,
+                                                vk::ImageAspectFlagBits::eDepth);
+        const bool readDepth = pass != Pass::Forward;
+        if (readDepth)
+            result.depth = ctx.createBuffer(vk::DeviceSize(w) * h * depthBytes(depthFormat), vk::BufferUsageFlagBits::eTransferDst, true);
+        vk::raii::QueryPool queries(ctx.device, vk::QueryPoolCreateInfo({}, vk::QueryType::eTimestamp, 2));
+
+        const vk::raii::Pipeline& pipe = pipeline(pass, depthFormat);
+        const glm::mat4 viewProjection = cam.viewProjectionF();
+        ctx.submit([&](const vk::raii::CommandBuffer& cmd) {
+            using S = vk::PipelineStageFlagBits;
+            using A = vk::AccessFlagBits;
+            for (const auto& img : colorImages)
+                vkx::transition(cmd, img, vk::ImageLayout::eUndefined, vk::ImageLayout::eColorAttachmentOptimal, S::eTopOfPipe,
+                                {}, S::eColorAttachmentOutput, A::eColorAttachmentWrite);
+            vkx::transition(cmd, depthImage, vk::ImageLayout::eUndefined, vk::ImageLayout::eDepthAttachmentOptimal, S::eTopOfPipe,
+                            {}, S::eEarlyFragmentTests | S::eLateFragmentTests,
+                            A::eDepthStencilAttachmentRead | A::eDepthStencilAttachmentWrite);
+            cmd.resetQueryPool(*queries, 0, 2);
+            cmd.writeTimestamp(S::eTopOfPipe, *queries, 0);
+            std::vector<vk::RenderingAttachmentInfo> colorInfos;
+            for (std::size_t i = 0; i < targets.size(); ++i)
+                colorInfos.emplace_back(*colorImages[i].view, vk::ImageLayout::eColorAttachmentOptimal, vk::ResolveModeFlagBits::eNone,
+                                        nullptr, vk::ImageLayout::eUndefined, vk::AttachmentLoadOp::eClear,
+                                        vk::AttachmentStoreOp::eStore, vk::ClearValue(targets[i].clear));
+            const vk::RenderingAttachmentInfo depthInfo(*depthImage.view, vk::ImageLayout::eDepthAttachmentOptimal,
+                                                        vk::ResolveModeFlagBits::eNone, nullptr, vk::ImageLayout::eUndefined,
+                                                        vk::AttachmentLoadOp::eClear, vk::AttachmentStoreOp::eStore,
+                                                        vk::ClearValue(vk::ClearDepthStencilValue(1.0f, 0)));
+            cmd.beginRendering(vk::RenderingInfo({}, vk::Rect2D({0, 0}, {w, h}), 1, 0, colorInfos, &depthInfo));
+            cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipe);
+            cmd.setViewport(0, vk::Viewport(0.0f, 0.0f, float(w), float(h), 0.0f, 1.0f));
+            cmd.setScissor(0, vk::Rect2D({0, 0}, {w, h}));
+            cmd.bindVertexBuffers(0, {*vertices.buffer}, {vk::DeviceSize(0)});
+            cmd.bindIndexBuffer(*indices.buffer, 0, vk::IndexType::eUint32);
+            cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipelineLayout, 0, {*sets[0]}, {});
+            cmd.pushConstants<glm::mat4>(*pipelineLayout, vk::ShaderStageFlagBits::eVertex, 0, viewProjection);
+            cmd.drawIndexed(std::uint32_t(scene.indices.size()), 1, 0, 0, 0);
+            cmd.endRendering();
+            cmd.writeTimestamp(S::eBottomOfPipe, *queries, 1);
+            for (std::size_t i = 0; i < targets.size(); ++i) {
+                vkx::transition(cmd, colorImages[i], vk::ImageLayout::eColorAttachmentOptimal, vk::ImageLayout::eTransferSrcOptimal,
+                                S::eColorAttachmentOutput, A::eColorAttachmentWrite, S::eTransfer, A::eTransferRead);
+                cmd.copyImageToBuffer(*colorImages[i].image, vk::ImageLayout::eTransferSrcOptimal, *result.colors[i].buffer,
+                                      vk::BufferImageCopy(0, 0, 0, vk::ImageSubresourceLayers(vk::ImageAspectFlagBits::eColor, 0, 0, 1),
+                                                          {0, 0, 0}, {w, h, 1}));
+            }
+            if (readDepth) {
+                vkx::transition(cmd, depthImage, vk::ImageLayout::eDepthAttachmentOptimal, vk::ImageLayout::eTransferSrcOptimal,
+                                S::eLateFragmentTests, A::eDepthStencilAttachmentWrite, S::eTransfer, A::eTransferRead);
+                cmd.copyImageToBuffer(*depthImage.image, vk::ImageLayout::eTransferSrcOptimal, *result.depth.buffer,
+                                      vk::BufferImageCopy(0, 0, 0, vk::ImageSubresourceLayers(vk::ImageAspectFlagBits::eDepth, 0, 0, 1),
+                                                          {0, 0, 0}, {w, h, 1}));
+            }
+            const vk::MemoryBarrier toHost(A::eTransferWrite, A::eHostRead);
+            cmd.pipelineBarrier(S::eTransfer, S::eHost, {}, toHost, {}, {});
+        });
+        if (ctx.timestampPeriodNs > 0) {
+            const auto [status, ticks] = queries.getResults<std::uint64_t>(0, 2, 2 * sizeof(std::uint64_t), sizeof(std::uint64_t),
+                                                                         vk::QueryResultFlagBits::e64 | vk::QueryResultFlagBits::eWait);
+            if (status == vk::Result::eSuccess) result.gpuMs = double(ticks[1] - ticks[0]) * ctx.timestampPeriodNs * 1e-6;
+        }
+        return result;
+    }
+
+    vkx::Context ctx;
+    vk::raii::DescriptorSetLayout setLayout{nullptr};
+    vk::raii::PipelineLayout pipelineLayout{nullptr};
+    vk::raii::ShaderModule vert{nullptr}, gbufferFrag{nullptr}, forwardFrag{nullptr};
+    vk::raii::Sampler sampler{nullptr};
+    std::map<std::pair<int, int>, vk::raii::Pipeline> pipelines;
+};
+
+namespace {
+
+// Vulkan-Hpp reports API failures as exceptions of its own; callers see ssfx::Error.
+template <class F>
+auto guarded(const char* what, F&& f) {
+    try {
+        return f();
+    } catch (const vk::SystemError& e) {
+        throw Error(fmt::format("Vulkan: {} failed: {}", what, e.what()));
+    }
+}
+
+}  // namespace
+
+std::vector<DeviceInfo> listDevices() {
+    return guarded("listing devices", [] {
+        vk::raii::Context context = [] {
+            try {
+                return vk::raii::Context();
+            } catch (const std::runtime_error& e) {
+                throw Error(fmt::format("no Vulkan loader ({}); install libvulkan1", e.what()));
+            }
+        }();
+        const vk::ApplicationInfo app("ssfx", 1, "ssfx", 1, VK_API_VERSION_1_3);
+        vk::raii::Instance instance(context, vk::InstanceCreateInfo({}, &app));
+        return vkx::enumerateDevices(instance);
+    });
+}
+
+Renderer::Renderer(const RendererOptions& options)
+    : impl_(guarded("creating the device", [&] { return std::make_unique<Impl>(options); })) {}
+
+Renderer::~Renderer() = default;
+
+const DeviceInfo& Renderer::device() const { return impl_->ctx.info; }
+
+std::vector<std::string> Renderer::validationMessages() const {
+    std::lock_guard lock(impl_->ctx.mutex);
+    return impl_->ctx.messages;
+}
+
+DepthRender Renderer::renderDepth(const Scene& scene, const View& view, int width, int height, ao::DepthFormat format,
+                                  int guard) {
+    return guarded("rendering depth", [&] {
+        DepthRender out;
+        out.camera = cameraSetup(view, width, height, guard);
+        const vk::Format f = vkDepthFormat(format);
+        auto r = impl_->draw(scene, out.camera, Pass::Depth, f, {}, 1.0f);
+        out.depth = depthFromBytes(r.depth.mapped, f, out.camera.bufferWidth(), out.camera.bufferHeight());
+        out.gpuMs = r.gpuMs;
+        return out;
+    });
+}
+
+GBuffer Renderer::renderGBuffer(const Scene& scene, const View& view, int width, int height, int m) {
+    if (m < 1 || m > 4) throw Error(fmt::format("G-buffer supersampling m = {} is not in 1..4", m));
+    return guarded("rendering the G-buffer", [&] {
+        GBuffer g;
+        g.width = width;
+        g.height = height;
+        g.m = m;
+        checkDimensions(width, height, "G-buffer size");
+        g.camera = cameraSetup(view, m * width, m * height, 0);
+        std::vector<ColorTarget> targets;
+        const std::array<vk::ClearColorValue, 4> clears = {vk::ClearColorValue(0.0f, 0.0f, 0.0f, 0.0f),
+                                                           vk::ClearColorValue(0.0f, 0.0f, 0.0f, 0.0f),
+                                                           vk::ClearColorValue(0.0f, 0.0f, 0.0f, 0.0f),
+                                                           vk::ClearColorValue(std::array<std::uint32_t, 4>{0xFFFFu, 0xFFFFu, 0, 0})};
+        for (std::size_t i = 0; i < 4; ++i) targets.push_back({kGBufferFormats[i], clears[i], kGBufferBytes[i]});
+        auto r = impl_->draw(scene, g.camera, Pass::GBuffer, vk::Format::eD32Sfloat, targets, float(m));
+        const int sw = g.sampleWidth(), sh = g.sampleHeight();
+        const std::size_t n = std::size_t(sw) * std::size_t(sh);
+        g.depth = depthFromBytes(r.depth.mapped, vk::Format::eD32Sfloat, sw, sh);
+        g.normal.resize(n);
+        g.uv.resize(n);
+        g.uvGrad.resize(n);
+        g.material.resize(n);
+        g.layer.resize(n);
+        const auto* normals = static_cast<const std::int16_t*>(r.colors[0].mapped);
+        for (std::size_t i = 0; i < n; ++i)
+            for (int c = 0; c < 3; ++c) g.normal[i][c] = std::max(float(normals[4 * i + std::size_t(c)]) / 32767.0f, -1.0f);
+        std::memcpy(g.uv.data(), r.colors[1].mapped, n * sizeof(glm::vec2));
+        std::memcpy(g.uvGrad.data(), r.colors[2].mapped, n * sizeof(glm::vec4));
+        const auto* ids = static_cast<const std::uint16_t*>(r.colors[3].mapped);
+        for (std::size_t i = 0; i < n; ++i) {
+            g.material[i] = ids[2 * i];
+            g.layer[i] = ids[2 * i + 1] == 0xFFFFu ? std::int16_t(-1) : std::int16_t(ids[2 * i + 1]);
+        }
+        g.gpuMs = r.gpuMs;
+        return g;
+    });
+}
+
+ColorRender Renderer::renderColor(const Scene& scene, const View& view, int width, int height, int scale) {
+    if (scale < 1 || scale > 16) throw Error(fmt::format("colour scale {} is not in 1..16", scale));
+    return guarded("rendering colour", [&] {
+        checkDimensions(width, height, "colour size");
+        const CameraSetup cam = cameraSetup(view, scale * width, scale * height, 0);
+        const glm::vec3 bg = glm::clamp(scene.background, 0.0f, 1.0f);
+        auto r = impl_->draw(scene, cam, Pass::Forward, vk::Format::eD32Sfloat,
+                             {{vk::Format::eR8G8B8A8Unorm, vk::ClearColorValue(bg.r, bg.g, bg.b, 1.0f), 4}}, 1.0f);
+        ColorRender out;
+        out.color = ImageRgba8(cam.bufferWidth(), cam.bufferHeight());
+        std::memcpy(out.color.data(), r.colors[0].mapped, std::size_t(out.color.pixelCount()) * 4);
+        out.gpuMs = r.gpuMs;
+        return out;
+    });
+}
+
+}  // namespace ssfx::render

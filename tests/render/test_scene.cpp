@@ -1,0 +1,232 @@
+// Scenes without the GPU: camera matrices, the procedural scenes, Assimp import of OBJ and
+// glTF files written here, scene files, and their errors.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+
+#include "ssfx/core/error.hpp"
+#include "ssfx/io/camera.hpp"
+#include "ssfx/io/png.hpp"
+#include "ssfx/render/camera.hpp"
+#include "ssfx/render/scene.hpp"
+#include "support/test_support.hpp"
+
+namespace ssfx::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path scratch(const std::string& name) {
+    const fs::path dir = fs::path(outDir()) / "render" / name;
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir;
+}
+
+void writeText(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
+
+// Clip-space depth of camera-space z through the projection.
+double clipDepth(const glm::dmat4& p, double z) {
+    const glm::dvec4 c = p * glm::dvec4(0.0, 0.0, z, 1.0);
+    return c.z / c.w;
+}
+
+TEST(RenderCamera, ProjectionMapsNearToZeroAndFarToOne) {
+    const auto finite = render::perspective(1.0, 1.5, 0.2, 50.0);
+    EXPECT_NEAR(clipDepth(finite, -0.2), 0.0, 1e-15);
+    EXPECT_NEAR(clipDepth(finite, -50.0), 1.0, 1e-15);
+    const auto infinite = render::perspective(1.0, 1.5, 0.2, INFINITY);
+    EXPECT_NEAR(clipDepth(infinite, -0.2), 0.0, 1e-15);
+    EXPECT_NEAR(clipDepth(infinite, -1e12), 1.0, 1e-12);
+    // It is the inverse of the SAO reconstruction (sao.md eq. 2) for both planes.
+    ao::Camera cam;
+    cam.zNear = -0.2;
+    cam.zFar = -50.0;
+    for (double z : {-0.3, -1.0, -7.5, -49.0}) EXPECT_NEAR(clipDepth(finite, z), ao::zToDepth(z, cam), 1e-14);
+    cam.zFar = -INFINITY;
+    for (double z : {-0.3, -1.0, -7.5, -1000.0}) EXPECT_NEAR(clipDepth(infinite, z), ao::zToDepth(z, cam), 1e-14);
+    // y down: a point above the axis lands in the upper half (y_ndc < 0).
+    const glm::dvec4 up = finite * glm::dvec4(0.0, 1.0, -5.0, 1.0);
+    EXPECT_LT(up.y / up.w, 0.0);
+    EXPECT_THROW(render::perspective(1.0, 1.0, 0.0, 10.0), Error);
+    EXPECT_THROW(render::perspective(1.0, 1.0, 1.0, 1.0), Error);
+    EXPECT_THROW(render::perspective(4.0, 1.0, 1.0, 10.0), Error);
+}
+
+TEST(RenderCamera, LookAtAndGuardBand) {
+    render::View v;
+    v.eye = {1, 2, 3};
+    v.target = {1, 2, -7};
+    const auto view = render::lookAt(v.eye, v.target, v.up);
+    const glm::dvec4 t = view * glm::dvec4(1, 2, -7, 1);
+    EXPECT_NEAR(t.x, 0.0, 1e-12);
+    EXPECT_NEAR(t.y, 0.0, 1e-12);
+    EXPECT_NEAR(t.z, -10.0, 1e-12);
+    const auto s = render::cameraSetup(v, 200, 100, 50);
+    EXPECT_EQ(s.bufferWidth(), 300);
+    EXPECT_EQ(s.bufferHeight(), 200);
+    // Same pixel size: tan(fov'/2) / (h + 2g) = tan(fov/2) / h.
+    EXPECT_NEAR(std::tan(s.camera.fovY / 2) / 200.0, std::tan(std::numbers::pi / 6) / 100.0, 1e-15);
+    EXPECT_THROW(render::lookAt({0, 0, 0}, {0, 5, 0}, {0, 1, 0}), Error);
+    EXPECT_THROW(render::cameraSetup(v, 0, 10), Error);
+    EXPECT_THROW(render::cameraSetup(v, 10, 10, -1), Error);
+    // camera.json is readable by the AO tools.
+    const ao::Camera back = io::parseCameraJson(render::cameraSetupJson(s), "camera.json");
+    EXPECT_NEAR(back.fovY, s.camera.fovY, 1e-9);
+    EXPECT_EQ(back.zNear, s.camera.zNear);
+    EXPECT_TRUE(std::isinf(back.zFar));
+}
+
+TEST(RenderScenes, BuiltInScenesAreWellFormed) {
+    const auto cornell = render::cornellBox();
+    EXPECT_NO_THROW(cornell.validate());
+    EXPECT_EQ(cornell.triangleCount(), 34u);  // 5 walls (10) + two boxes (24)
+    EXPECT_EQ(cornell.materials.size(), 3u);
+    const auto a = render::atrium();
+    EXPECT_NO_THROW(a.validate());
+    EXPECT_GT(a.triangleCount(), 10000u);
+    EXPECT_GE(a.materials.size(), 6u);
+    ASSERT_EQ(a.textures.layers.size(), 2u);  // checker, brick
+    EXPECT_EQ(a.textures.size, 256);
+    EXPECT_EQ(a.textures.levelCount(), 9);  // 256 .. 1
+    EXPECT_GE(a.views.size(), 4u);
+    const auto [lo, hi] = a.bounds();
+    EXPECT_NEAR(lo.x, -10.0f, 1e-4f);
+    EXPECT_NEAR(hi.x, 10.0f, 1e-4f);
+    EXPECT_THROW(a.view("nope"), Error);
+    EXPECT_THROW(render::builtinScene("nope"), Error);
+    // Mips are 2x2 box filters: the checker's 1x1 level is its mean.
+    const auto& top = a.textures.layers[0].back()(0, 0);
+    EXPECT_NEAR(int(top.r), (225 + 40) / 2, 1);
+}
+
+TEST(RenderImport, ObjWithMaterialAndTexture) {
+    const fs::path dir = scratch("obj");
+    ImageRgba8 tex(4, 2, Rgba8{10, 200, 30, 255});
+    tex(0, 0) = {255, 0, 0, 255};
+    io::writePng((dir / "tex.png").string(), tex.view());
+    writeText(dir / "m.mtl", "newmtl red\nKd 0.5 0.25 1\nnewmtl tex\nKd 1 1 1\nmap_Kd tex.png\n");
+    writeText(dir / "m.obj",
+              "mtllib m.mtl\n"
+              "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+              "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+              "usemtl red\nf 1/1 2/2 3/3\n"
+              "usemtl tex\nf 1/1 3/3 4/4\n");
+    const auto s = render::importModel((dir / "m.obj").string(), 2.0);
+    EXPECT_EQ(s.triangleCount(), 2u);
+    ASSERT_EQ(s.textures.layers.size(), 1u);
+    EXPECT_EQ(s.textures.size, 4);  // power of two covering 4x2
+    int textured = 0;
+    for (const auto& m : s.materials) {
+        if (m.name == "red") {
+            EXPECT_EQ(m.diffuse, glm::vec3(0.5f, 0.25f, 1.0f));
+        }
+        textured += m.textureLayer == 0;
+    }
+    EXPECT_EQ(textured, 1);
+    const auto [lo, hi] = s.bounds();
+    EXPECT_EQ(hi, glm::vec3(2.0f, 2.0f, 0.0f));  // scaled
+    // OBJ's v = 0 is the image's bottom; ours is the top row: v is flipped.
+    for (const auto& v : s.vertices)
+        if (v.position == glm::vec3(0.0f)) {
+            EXPECT_EQ(v.uv.y, 1.0f);
+        }
+    // Normals generated where the file has none: the quad lies in z = 0.
+    for (const auto& v : s.vertices) EXPECT_NEAR(std::abs(v.normal.z), 1.0f, 1e-5f);
+    EXPECT_EQ(s.views.at(0).first, "default");
+}
+
+TEST(RenderImport, GltfWithEmbeddedBuffer) {
+    const fs::path dir = scratch("gltf");
+    // One triangle: three float3 positions (36 bytes) and three uint16 indices (6 bytes),
+    // base64 in a data URI. Bytes: (0,0,0), (1,0,0), (0,1,0); indices 0 1 2.
+    writeText(dir / "t.gltf", R"({
+  "asset": {"version": "2.0"},
+  "scene": 0, "scenes": [{"nodes": [0]}],
+  "nodes": [{"mesh": 0, "translation": [0, 0, -3]}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1, "material": 0}]}],
+  "materials": [{"pbrMetallicRoughness": {"baseColorFactor": [0.2, 0.4, 0.6, 1.0]}}],
+  "buffers": [{"byteLength": 44, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAAABAAIAAAA="}],
+  "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 6}],
+  "accessors": [
+    {"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [0, 0, 0], "max": [1, 1, 0]},
+    {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"}]
+})");
+    const auto s = render::importModel((dir / "t.gltf").string());
+    ASSERT_EQ(s.triangleCount(), 1u);
+    const auto [lo, hi] = s.bounds();
+    EXPECT_EQ(lo, glm::vec3(0.0f, 0.0f, -3.0f));  // the node's transform is applied
+    EXPECT_EQ(hi, glm::vec3(1.0f, 1.0f, -3.0f));
+    EXPECT_NEAR(s.materials.at(s.vertices[0].material).diffuse.y, 0.4f, 1e-6f);
+}
+
+TEST(RenderImport, SceneFileNamesModelLightsAndViews) {
+    const fs::path dir = scratch("scenefile");
+    fs::create_directories(dir / "models");
+    writeText(dir / "models" / "tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    writeText(dir / "s.json", R"({"model": "models/tri.obj", "scale": 3, "ambient": [0.1, 0.2, 0.3],
+      "lights": [{"type": "point", "position": [0, 2, 0], "color": [5, 5, 5]}],
+      "views": {"b": {"eye": [0, 0, 5], "target": [0, 0, 0]}, "a": {"eye": [1, 1, 5], "target": [0, 0, 0], "z_far": 30}}})");
+    const auto s = render::loadScene((dir / "s.json").string());
+    EXPECT_EQ(s.name, "s");
+    EXPECT_EQ(s.bounds().second, glm::vec3(3.0f, 3.0f, 0.0f));
+    EXPECT_EQ(s.ambient, glm::vec3(0.1f, 0.2f, 0.3f));
+    ASSERT_EQ(s.lights.size(), 1u);
+    EXPECT_EQ(s.lights[0].type, render::Light::Type::Point);
+    ASSERT_EQ(s.views.size(), 2u);
+    EXPECT_EQ(s.views[0].first, "b");  // the file's order
+    EXPECT_EQ(s.view("a").zFar, 30.0);
+    EXPECT_TRUE(std::isinf(s.view("b").zFar));
+}
+
+TEST(RenderImport, BadInputsGiveClearErrors) {
+    const fs::path dir = scratch("bad");
+    auto message = [](auto&& f) {
+        try {
+            f();
+        } catch (const Error& e) {
+            return std::string(e.what());
+        }
+        return std::string("(no error)");
+    };
+    EXPECT_NE(message([&] { render::loadScene((dir / "missing.obj").string()); }).find("no such file"), std::string::npos);
+    EXPECT_NE(message([&] { render::loadScene("nonexistent-builtin"); }).find("not a built-in scene"), std::string::npos);
+    writeText(dir / "corrupt.gltf", "{\"asset\": {\"version\": \"2.0\"}, \"meshes\": [ {\"primitives\": [");
+    EXPECT_NE(message([&] { render::importModel((dir / "corrupt.gltf").string()); }).find("corrupt.gltf"), std::string::npos);
+    writeText(dir / "garbage.obj", "this is not an OBJ file\n\x01\x02\x03");
+    EXPECT_NE(message([&] { render::importModel((dir / "garbage.obj").string()); }).find("garbage.obj"), std::string::npos);
+    writeText(dir / "notex.mtl", "newmtl t\nmap_Kd missing.png\n");
+    writeText(dir / "notex.obj", "mtllib notex.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl t\nf 1 2 3\n");
+    EXPECT_NE(message([&] { render::importModel((dir / "notex.obj").string()); }).find("missing.png"), std::string::npos);
+    writeText(dir / "badtex.png", "not a png");
+    writeText(dir / "badtex.mtl", "newmtl t\nmap_Kd badtex.png\n");
+    writeText(dir / "badtex.obj", "mtllib badtex.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl t\nf 1 2 3\n");
+    EXPECT_NE(message([&] { render::importModel((dir / "badtex.obj").string()); }).find("cannot decode"), std::string::npos);
+    EXPECT_NE(message([&] { render::importModel((dir / "badtex.obj").string(), -1.0); }).find("scale"), std::string::npos);
+    writeText(dir / "s1.json", R"({"model": "tri.obj", "camera": 1})");
+    EXPECT_NE(message([&] { render::loadScene((dir / "s1.json").string()); }).find("unknown key 'camera'"), std::string::npos);
+    writeText(dir / "s2.json", R"({"scale": 1})");
+    EXPECT_NE(message([&] { render::loadScene((dir / "s2.json").string()); }).find("'model'"), std::string::npos);
+    writeText(dir / "tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    writeText(dir / "s3.json", R"({"model": "tri.obj", "views": {"v": {"eye": [0, 0], "target": [0, 0, 0]}}})");
+    EXPECT_NE(message([&] { render::loadScene((dir / "s3.json").string()); }).find("'eye'"), std::string::npos);
+    writeText(dir / "s4.json", R"({"model": "tri.obj", "lights": [{"type": "spot"}]})");
+    EXPECT_NE(message([&] { render::loadScene((dir / "s4.json").string()); }).find("spot"), std::string::npos);
+    writeText(dir / "s5.json", "{not json");
+    EXPECT_NE(message([&] { render::loadScene((dir / "s5.json").string()); }).find("not valid JSON"), std::string::npos);
+}
+
+TEST(RenderImport, SharedModelsLoad) {
+    const auto assets = sharedDir("assets");
+    if (!assets) GTEST_SKIP() << "../shared/assets is absent";
+    const fs::path root = fs::path(SSFX_SOURCE_DIR) / "scenes";
+    const auto sponza = render::loadScene((root / "sponza.json").string());
+    EXPECT_EQ(sponza.triangleCount(), 66447u);  // SOURCE.md
+    const auto bunny = render::loadScene((root / "bunny.json").string());
+    EXPECT_EQ(bunny.triangleCount(), 69451u);
+}
+
+}  // namespace
+}  // namespace ssfx::test
