@@ -13,17 +13,29 @@
 #include "ssfx/io/camera.hpp"
 #include "ssfx/io/exr.hpp"
 #include "ssfx/io/png.hpp"
+#ifdef SSFX_HAVE_RENDER
+#include "ssfx/render/raytrace.hpp"
+#include "ssfx/render/renderer.hpp"
+#endif
 
 namespace ssfx::cli {
 
 namespace {
 
 struct AoOptions {
-    std::string method = "sao", depth, camera, scene, size, output, saveDepth, saveCamera;
+    std::string method = "sao", depth, camera, scene, view, size, output, saveDepth, saveCamera, device;
     std::vector<std::string> params;
     double fovDeg = 60;
     int threads = 0, rays = 256;
 };
+
+std::pair<int, int> parseSize(const std::string& text) {
+    int w = 0, h = 0;
+    char x = 0;
+    if (std::sscanf(text.c_str(), "%d%c%d", &w, &x, &h) != 3 || x != 'x' || w < 1 || h < 1 || w > 16384 || h > 16384)
+        throw Error(fmt::format("--size '{}' is not WIDTHxHEIGHT (1..16384)", text));
+    return {w, h};
+}
 
 void writeAo(const std::string& path, const ImageF& a) {
     const std::string ext = std::filesystem::path(path).extension().string();
@@ -64,17 +76,30 @@ void run(const AoOptions& o) {
     ao::Camera cam;
     ImageF depth;
     std::optional<eval::AnalyticScene> scene;
-    if (!o.depth.empty()) {
+    std::unique_ptr<ao::RayScene> meshScene;  // a rendered scene's triangles (Embree)
+    const bool analytic = o.scene == "corner" || o.scene == "room";
+    if (!o.scene.empty() && !analytic) {
+#ifdef SSFX_HAVE_RENDER
+        // A renderer scene: D32F depth from Vulkan, geometry for the ground truth from Embree.
+        const auto [w, h] = parseSize(o.size);
+        const render::Scene rs = render::loadScene(o.scene);
+        const render::View view = o.view.empty() ? rs.views.at(0).second : rs.view(o.view);
+        render::Renderer renderer({o.device, false});
+        auto r = renderer.renderDepth(rs, view, w, h, ao::DepthFormat::D32F, guard);
+        depth = std::move(r.depth);
+        cam = r.camera.camera;
+        if (o.method == "raytraced") meshScene = render::cameraSpaceRayScene(rs, r.camera);
+#else
+        throw Error(fmt::format("scene '{}': this ssfx was built without the renderer (analytic scenes: corner, room)", o.scene));
+#endif
+    } else if (!o.depth.empty()) {
         if (o.method == "raytraced") throw Error("raytraced needs the geometry: use --scene");
         if (o.camera.empty()) throw Error("--depth needs --camera FILE (JSON: fov_y_deg, z_near, z_far)");
         cam = io::readCameraJson(o.camera);
         depth = io::readExr(o.depth);
     } else {
         scene = eval::analyticSceneByName(o.scene);
-        int w = 0, h = 0;
-        char x = 0;
-        if (std::sscanf(o.size.c_str(), "%d%c%d", &w, &x, &h) != 3 || x != 'x' || w < 1 || h < 1 || w > 16384 || h > 16384)
-            throw Error(fmt::format("--size '{}' is not WIDTHxHEIGHT (1..16384)", o.size));
+        const auto [w, h] = parseSize(o.size);
         cam.fovY = o.fovDeg * M_PI / 180.0;
         depth = eval::castGeometry(*scene, cam, w + 2 * guard, h + 2 * guard, exec).depth;
     }
@@ -87,7 +112,8 @@ void run(const AoOptions& o) {
     } else if (o.method == "alchemy") {
         a = ao::alchemy(depth.view(), cam, ap, exec);
     } else {
-        a = ao::raytraced(*scene, cam, depth.width(), depth.height(), rp, exec);
+        const ao::RayScene& geometry = meshScene ? *meshScene : static_cast<const ao::RayScene&>(*scene);
+        a = ao::raytraced(geometry, cam, depth.width(), depth.height(), rp, exec);
     }
     writeAo(o.output, a);
 }
@@ -100,10 +126,14 @@ void addAoCommand(CLI::App& app) {
     cmd->add_option("-m,--method", o->method, "sao (default), alchemy, raytraced");
     cmd->add_option("--depth", o->depth, "Depth buffer (EXR; channel Z, Y, R or the only one; values in [0, 1])");
     cmd->add_option("--camera", o->camera, "Camera JSON of the depth buffer: {\"fov_y_deg\", \"z_near\", \"z_far\"}");
-    cmd->add_option("--scene", o->scene, "Analytic scene instead of a depth file: corner, room");
+    cmd->add_option("--scene", o->scene,
+                    "Scene instead of a depth file: analytic corner or room; or rendered with Vulkan: atrium, "
+                    "cornell, a scene .json or a model file");
+    cmd->add_option("--view", o->view, "With a rendered scene: its named viewpoint (default: the first)");
+    cmd->add_option("--device", o->device, "With a rendered scene: Vulkan device index or name part");
     cmd->add_option("--size", o->size, "With --scene: output size WxH (the buffer adds the guard band)")
         ->default_val("960x540");
-    cmd->add_option("--fov", o->fovDeg, "With --scene: vertical field of view in degrees (default 60)")
+    cmd->add_option("--fov", o->fovDeg, "With an analytic scene: vertical field of view in degrees (default 60)")
         ->check(CLI::Range(1.0, 179.0));
     cmd->add_option("-o,--output", o->output, "AO output: .png (8-bit) or .exr (float)");
     cmd->add_option("-p,--param", o->params,
@@ -117,6 +147,8 @@ void addAoCommand(CLI::App& app) {
     cmd->footer("Depth d in [0, 1] (0 = near plane); camera space looks down -z (docs/methods/sao.md).\n"
                 "Examples:\n"
                 "  ssfx ao --scene room --size 960x540 -p guardBand=64 -o ao.png --save-depth d.exr --save-camera c.json\n"
+                "  ssfx ao --scene atrium --view colonnade --size 960x540 -p guardBand=64 -o ao.png\n"
+                "  ssfx ao -m raytraced --scene scenes/sponza.json --size 480x270 --rays 256 -o truth.exr\n"
                 "  ssfx ao -m alchemy --depth d.exr --camera c.json -p guardBand=64 -o alchemy.exr");
     cmd->callback([o] { run(*o); });
 }

@@ -16,6 +16,10 @@
 #include "ssfx/eval/temporal.hpp"
 #include "ssfx/eval/test_images.hpp"
 #include "ssfx/io/png.hpp"
+#ifdef SSFX_HAVE_RENDER
+#include "ssfx/render/raytrace.hpp"
+#include "ssfx/render/renderer.hpp"
+#endif
 
 namespace ssfx::cli {
 
@@ -191,6 +195,43 @@ void addSpeed(CLI::App& eval) {
     });
 }
 
+// Scenes rendered with Vulkan (D32F depth) for the AO accuracy table, each "SCENE[:VIEW]";
+// a scene file that is absent here (the shared models) is skipped with a message.
+const std::vector<std::string> kDefaultAoScenes = {"atrium:colonnade", "cornell:corner", "scenes/sponza.json:arcade",
+                                                   "scenes/bunny.json:front"};
+
+eval::AoSceneSource renderedAoScenes(const std::vector<std::string>& specs) {
+#ifdef SSFX_HAVE_RENDER
+    return [specs](int width, int height, int guard) {
+        std::vector<eval::AoRenderedScene> out;
+        std::unique_ptr<render::Renderer> renderer;
+        for (const auto& spec : specs) {
+            const auto colon = spec.rfind(':');
+            const std::string scenePath = colon == std::string::npos ? spec : spec.substr(0, colon);
+            const std::string viewName = colon == std::string::npos ? "" : spec.substr(colon + 1);
+            render::Scene scene;
+            try {
+                scene = render::loadScene(scenePath);
+            } catch (const Error& e) {
+                if (scenePath.find('/') == std::string::npos) throw;  // a built-in name: a real error
+                progressLine(fmt::format("ao: skipping {} ({})", scenePath, e.what()));
+                continue;
+            }
+            if (!renderer) renderer = std::make_unique<render::Renderer>();
+            progressLine(fmt::format("ao: rendering {} on {}", spec, renderer->device().name));
+            const render::View& view = viewName.empty() ? scene.views.at(0).second : scene.view(viewName);
+            auto r = renderer->renderDepth(scene, view, width, height, ao::DepthFormat::D32F, guard);
+            out.push_back({scene.name, std::move(r.depth), r.camera.camera,
+                           std::shared_ptr<const ao::RayScene>(render::cameraSpaceRayScene(scene, r.camera))});
+        }
+        return out;
+    };
+#else
+    if (!specs.empty()) progressLine("ao: built without the renderer; rendered scenes left out");
+    return {};
+#endif
+}
+
 void addReport(CLI::App& eval) {
     auto o = std::make_shared<eval::ReportOptions>();
     auto threads = std::make_shared<int>(0);
@@ -203,8 +244,13 @@ void addReport(CLI::App& eval) {
         ->check(CLI::Range(4, 100000));
     cmd->add_flag("--quick", o->quick, "Fewer repetitions and every 4th animation frame (tests)");
     cmd->add_flag("!--no-ao", o->ambientObscurance, "Leave out the ambient obscurance experiments");
+    auto scenes = std::make_shared<std::vector<std::string>>(kDefaultAoScenes);
+    cmd->add_option("--ao-scene", *scenes, "Rendered scenes for the AO accuracy table, SCENE[:VIEW] (repeatable; "
+                                           "default atrium:colonnade cornell:corner scenes/sponza.json:arcade "
+                                           "scenes/bunny.json:front; 'none' for none)");
     cmd->add_option("--threads", *threads, "Worker threads (0 = all)")->check(CLI::Range(0, 1024));
-    cmd->callback([o, threads] {
+    cmd->callback([o, threads, scenes] {
+        if (!(scenes->size() == 1 && scenes->front() == "none")) o->renderedScenes = renderedAoScenes(*scenes);
         o->exec = Exec{*threads};
         o->progress = progressLine;
         eval::writeReport(*o);
@@ -219,11 +265,17 @@ void addAo(CLI::App& eval) {
                                           "pyramid filters, radius scaling, pass times, accuracy)");
     cmd->add_option("--out", o->outDir, "Output directory: images/, plots/, data/ao.json, data/ao.md")->required();
     cmd->add_flag("--quick", o->quick, "Small sizes and few repetitions (tests)");
+    auto scenes = std::make_shared<std::vector<std::string>>(kDefaultAoScenes);
+    cmd->add_option("--ao-scene", *scenes, "Rendered scenes for the accuracy table, SCENE[:VIEW] (repeatable; "
+                                           "'none' for none)");
     cmd->add_option("--threads", *threads, "Worker threads (0 = all)")->check(CLI::Range(0, 1024));
     cmd->footer("Scenes: 'corner' (floor meeting a wall) and 'room' (walls, boxes from 5 cm to 2 m, a stair, a\n"
-                "column, spheres), ray cast exactly; the ground truth is ray-traced obscurance with SAO's\n"
+                "column, spheres), ray cast exactly; for the accuracy table also the atrium, the Cornell box,\n"
+                "Sponza and the bunny rasterised with Vulkan (the last two when ../shared/assets is present),\n"
+                "their triangles ray traced with Embree. The ground truth is ray-traced obscurance with SAO's\n"
                 "falloff (docs/evaluation.md).");
-    cmd->callback([o, threads] {
+    cmd->callback([o, threads, scenes] {
+        if (!(scenes->size() == 1 && scenes->front() == "none")) o->renderedScenes = renderedAoScenes(*scenes);
         o->exec = Exec{*threads};
         o->progress = progressLine;
         fmt::print("{}", eval::runAoExperiments(*o));

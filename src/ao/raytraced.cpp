@@ -75,9 +75,9 @@ ImageF raytraced(const RayScene& scene, const Camera& camera, int width, int hei
                 const double a = -1.0 / (sign + nn.z), b = nn.x * nn.y * a;
                 const Vec3d t1{1.0 + sign * nn.x * nn.x * a, sign * b, -sign * nn.x};
                 const Vec3d t2{b, sign + nn.y * nn.y * a, -nn.y};
-                // Start rays a little off the surface, scaled with distance (float-free, but
-                // the hit point itself carries the intersection's rounding).
-                const double eps = 1e-6 * std::max(1.0, hit.t);
+                // Start rays a little off the surface, scaled with distance (the hit point
+                // carries the intersection's rounding).
+                const double eps = scene.surfaceOffset() * std::max(1.0, hit.t);
                 const Vec3d o{c.x + nn.x * eps, c.y + nn.y * eps, c.z + nn.z * eps};
                 double su, sv;
                 pixelShift(x, y, su, sv);

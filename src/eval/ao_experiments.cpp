@@ -237,17 +237,27 @@ std::string runAoExperiments(const AoExperimentOptions& o) {
                                         {"sao, min", true, true, ao::PyramidFilter::Min},
                                         {"sao, max", true, true, ao::PyramidFilter::Max},
                                         {"sao, packed A and z", true, true, ao::PyramidFilter::RotatedGrid, true}};
-    const std::vector<std::string> scenes{"corner", "room"};
-    std::vector<std::vector<double>> psnrTable(variants.size(), std::vector<double>(scenes.size()));
-    for (std::size_t si = 0; si < scenes.size(); ++si) {
-        const AnalyticScene scene = analyticSceneByName(scenes[si]);
-        say(fmt::format("ao: {} ray-traced truth ({} rays per pixel)", scenes[si], rays));
-        const GeometryBuffer g = castGeometry(scene, cam, aw + 2 * guard, ah + 2 * guard, o.exec);
+    // The analytic scenes (exact ray casting) and, when the caller supplies them, rendered ones.
+    std::vector<AoRenderedScene> entries;
+    for (const char* name : {"corner", "room"}) {
+        auto scene = std::make_shared<AnalyticScene>(analyticSceneByName(name));
+        GeometryBuffer g = castGeometry(*scene, cam, aw + 2 * guard, ah + 2 * guard, o.exec);
+        entries.push_back({name, std::move(g.depth), cam, scene});
+    }
+    if (o.renderedScenes)
+        for (auto& r : o.renderedScenes(aw, ah, guard)) entries.push_back(std::move(r));
+    std::vector<std::vector<double>> psnrTable(variants.size(), std::vector<double>(entries.size()));
+    for (std::size_t si = 0; si < entries.size(); ++si) {
+        const AoRenderedScene& e = entries[si];
+        if (e.depth.width() != aw + 2 * guard || e.depth.height() != ah + 2 * guard)
+            throw Error(fmt::format("ao: scene '{}' depth is {}x{}, not {}x{}", e.name, e.depth.width(),
+                                    e.depth.height(), aw + 2 * guard, ah + 2 * guard));
+        say(fmt::format("ao: {} ray-traced truth ({} rays per pixel)", e.name, rays));
         ao::RaytracedParams rp;
         rp.raysPerPixel = rays;
         rp.guardBand = guard;
-        const ImageF truth = ao::raytraced(scene, cam, aw + 2 * guard, ah + 2 * guard, rp, o.exec);
-        io::writePng((out / "images" / fmt::format("ao_{}_raytraced.png", scenes[si])).string(), grey(truth).view());
+        const ImageF truth = ao::raytraced(*e.geometry, e.camera, aw + 2 * guard, ah + 2 * guard, rp, o.exec);
+        io::writePng((out / "images" / fmt::format("ao_{}_raytraced.png", e.name)).string(), grey(truth).view());
         ImageF noPyramid;
         for (std::size_t v = 0; v < variants.size(); ++v) {
             ImageF a;
@@ -257,27 +267,32 @@ std::string runAoExperiments(const AoExperimentOptions& o) {
                 p.usePyramid = variants[v].pyramid;
                 p.pyramidFilter = variants[v].filter;
                 p.packBlurInput = variants[v].packed;
-                a = ao::sao(g.depth.view(), cam, p, o.exec);
+                a = ao::sao(e.depth.view(), e.camera, p, o.exec);
             } else {
                 ao::AlchemyParams p;
                 p.guardBand = guard;
-                a = ao::alchemy(g.depth.view(), cam, p, o.exec);
+                a = ao::alchemy(e.depth.view(), e.camera, p, o.exec);
             }
             if (v == 1) noPyramid = ImageF::copyOf(a.view());
             psnrTable[v][si] = psnrOf(mseF(a, truth));
             std::string file = variants[v].name;
             std::replace(file.begin(), file.end(), ' ', '_');
             file.erase(std::remove(file.begin(), file.end(), ','), file.end());
-            io::writePng((out / "images" / fmt::format("ao_{}_{}.png", scenes[si], file)).string(), grey(a).view());
+            io::writePng((out / "images" / fmt::format("ao_{}_{}.png", e.name, file)).string(), grey(a).view());
             if (v >= 2)
-                io::writePng((out / "images" / fmt::format("ao_{}_{}_diff.png", scenes[si], file)).string(),
+                io::writePng((out / "images" / fmt::format("ao_{}_{}_diff.png", e.name, file)).string(),
                              grey(difference(a, noPyramid), 0.5f, 4.0f).view());
-            j["accuracy"][scenes[si]][variants[v].name] = {{"psnr_vs_raytraced", psnrTable[v][si]}};
+            j["accuracy"][e.name][variants[v].name] = {{"psnr_vs_raytraced", psnrTable[v][si]}};
         }
     }
-    md += mdHead({"method", "corner", "room"});
-    for (std::size_t v = 0; v < variants.size(); ++v)
-        md += mdRow({variants[v].name, fmt::format("{:.2f}", psnrTable[v][0]), fmt::format("{:.2f}", psnrTable[v][1])});
+    std::vector<std::string> columns{"method"};
+    for (const auto& e : entries) columns.push_back(e.name);
+    md += mdHead(columns);
+    for (std::size_t v = 0; v < variants.size(); ++v) {
+        std::vector<std::string> row{variants[v].name};
+        for (std::size_t si = 0; si < entries.size(); ++si) row.push_back(fmt::format("{:.2f}", psnrTable[v][si]));
+        md += mdRow(row);
+    }
 
     // ---- Figure 5: AO pass time vs radius -----------------------------------------------
     const int fw = o.quick ? 320 : 2560, fh = o.quick ? 200 : 1600, reps = o.quick ? 1 : 3;

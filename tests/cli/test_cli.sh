@@ -120,6 +120,36 @@ contains ao_badcam "$OUT/ao_badcam.err" "zNear"
 check eval_ao 0 "$SSFX" eval ao --quick --out "$OUT/evalao"
 contains eval_ao "$OUT/evalao/data/ao.md" "Normal precision"
 
+# The scene renderer (Vulkan; lavapipe without a GPU): outputs, a round trip into ssfx ao,
+# rendered scenes for ssfx ao directly, and errors.
+if "$SSFX" render --help >/dev/null 2>&1; then
+  check help_render 0 "$SSFX" render --help
+  check render_devices 0 "$SSFX" render --list-devices
+  check render_views 0 "$SSFX" render atrium --list-views
+  contains render_views "$OUT/render_views.out" "colonnade"
+  check render 0 "$SSFX" render atrium --view nave --size 64x36 --guard 8 --gbuffer 2 --depth-format d24 --out "$OUT/r"
+  for f in depth.exr z.exr camera.json color.png gbuffer.exr; do
+    [ -s "$OUT/r/$f" ] || { echo "FAIL render: no $f"; fail=1; }
+  done
+  contains render_camera "$OUT/r/camera.json" '"guard": 8'
+  check render_ao 0 "$SSFX" ao --depth "$OUT/r/depth.exr" --camera "$OUT/r/camera.json" -p guardBand=8 -o "$OUT/r_ao.png"
+  check ao_rendered 0 "$SSFX" ao --scene cornell --size 48x32 -p guardBand=8 -o "$OUT/ao_cornell.png"
+  check ao_rendered_rt 0 "$SSFX" ao -m raytraced --scene cornell --view corner --size 24x16 --rays 8 -o "$OUT/ao_rt.exr"
+  check render_noscene 2 "$SSFX" render --out "$OUT/x"
+  check render_badscene 2 "$SSFX" render nosuchscene --out "$OUT/x"
+  contains render_badscene "$OUT/render_badscene.err" "not a built-in scene"
+  check render_missing 2 "$SSFX" render "$OUT/missing.obj" --out "$OUT/x"
+  check render_view 2 "$SSFX" render cornell --view nope --out "$OUT/x"
+  contains render_view "$OUT/render_view.err" "front"
+  check render_size 2 "$SSFX" render cornell --size 0x10 --out "$OUT/x"
+  check render_huge 2 "$SSFX" render cornell --size 16384x16384 --guard 64 --out "$OUT/x"
+  check render_format 2 "$SSFX" render cornell --depth-format d8 --out "$OUT/x"
+  check render_device 2 "$SSFX" render cornell --device no-such-gpu --out "$OUT/x"
+  contains render_device "$OUT/render_device.err" "no Vulkan device"
+  check render_far 2 "$SSFX" render cornell --far 0.01 --out "$OUT/x"
+  [ ! -e "$OUT/x" ] || { echo "FAIL render: a failed run left $OUT/x"; fail=1; }
+fi
+
 # An existing output survives a failed run untouched.
 cp "$OUT/ddaa2.png" "$OUT/keep.png"
 check keep 2 "$SSFX" aa -m ddaa2 "$OUT/trunc.png" -o "$OUT/keep.png"

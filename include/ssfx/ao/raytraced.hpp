@@ -35,6 +35,10 @@ public:
     //! The nearest hit with tMin < t < tMax, or t = +infinity when there is none.
     //! `dir` is a unit vector.
     virtual RayHit intersect(const Vec3d& origin, const Vec3d& dir, double tMin, double tMax) const = 0;
+    //! Secondary rays start this far (times max(1, distance from the camera)) off the surface,
+    //! above the intersector's own rounding: exact analytic geometry needs little, float
+    //! triangle intersectors more.
+    virtual double surfaceOffset() const { return 1e-6; }
 };
 
 struct RaytracedParams {

@@ -1,5 +1,6 @@
 // The SAO paper's experiments (spec sao.md "Experiments to reproduce"), on the analytic
-// scenes of ao_scenes.hpp until the Vulkan scene renderer provides real ones:
+// scenes of ao_scenes.hpp and, for the accuracy table, on scenes rendered by the Vulkan
+// renderer (supplied by the caller, which links it):
 //   Figure 3  z precision: camera-space z error vs distance for D16 / D24 / D32F depth,
 //             each with a finite and an infinite far plane;
 //   Figure 4  normal precision: angle between reconstructed (quad-pair) and true face
@@ -13,18 +14,34 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "ssfx/ao/depth.hpp"
+#include "ssfx/ao/raytraced.hpp"
+#include "ssfx/core/image.hpp"
 #include "ssfx/core/parallel.hpp"
 
 namespace ssfx::eval {
+
+//! A depth buffer made elsewhere (the Vulkan scene renderer) with the geometry behind it
+//! (camera space), for the accuracy table. `depth` includes the guard band.
+struct AoRenderedScene {
+    std::string name;
+    ImageF depth;
+    ao::Camera camera;
+    std::shared_ptr<const ao::RayScene> geometry;
+};
+//! Called with the accuracy experiment's image size and guard band.
+using AoSceneSource = std::function<std::vector<AoRenderedScene>(int width, int height, int guard)>;
 
 struct AoExperimentOptions {
     std::string outDir;   //!< images/, plots/, data/ are written here
     bool quick = false;   //!< small sizes and few repetitions (tests)
     Exec exec;
     std::function<void(const std::string&)> progress;
+    AoSceneSource renderedScenes;  //!< optional: real scenes joining the accuracy table
 };
 
 //! Runs every experiment, writes the images, plots and data/ao.json, data/ao.md, and

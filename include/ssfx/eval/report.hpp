@@ -11,6 +11,8 @@
 //   DIR/ao/                        the ambient obscurance experiments (images, plots, data)
 #pragma once
 
+#include "ssfx/eval/ao_experiments.hpp"
+
 #include <functional>
 #include <string>
 #include <vector>
@@ -30,6 +32,8 @@ struct ReportOptions {
     bool quick = false;
     //! Also run the SAO experiments (eval/ao_experiments.hpp) into DIR/ao/ and show them.
     bool ambientObscurance = true;
+    //! Rendered scenes for the AO accuracy table (optional; see ao_experiments.hpp).
+    AoSceneSource renderedScenes;
     Exec exec;
     std::function<void(const std::string&)> progress;
 };
