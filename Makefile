@@ -41,6 +41,7 @@ fuzz: fuzz-smoke
 bench: build
 	@$(BUILD)/bench/bench_aa --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 	@$(BUILD)/bench/bench_ao --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+	@$(BUILD)/bench/bench_render --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 	@$(SSFX) bench
 
 clean:
