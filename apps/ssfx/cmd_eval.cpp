@@ -249,8 +249,25 @@ void addReport(CLI::App& eval) {
                                            "default atrium:colonnade cornell:corner scenes/sponza.json:arcade "
                                            "scenes/bunny.json:front; 'none' for none)");
     cmd->add_option("--threads", *threads, "Worker threads (0 = all)")->check(CLI::Range(0, 1024));
-    cmd->callback([o, threads, scenes] {
+    auto noRender = std::make_shared<bool>(false);
+    cmd->add_flag("--no-render", *noRender, "Leave out the Vulkan-rendered atrium from the quality table");
+    cmd->callback([o, threads, scenes, noRender] {
         if (!(scenes->size() == 1 && scenes->front() == "none")) o->renderedScenes = renderedAoScenes(*scenes);
+#ifdef SSFX_HAVE_RENDER
+        // The atrium's nave, forward-shaded at 1x..8x, joins the quality table (like the paper's sponza).
+        if (!*noRender)
+            o->addRenderSets = [quick = o->quick](const std::string& dir) {
+                render::Renderer renderer;
+                const render::Scene scene = render::atrium();
+                progressLine(fmt::format("report: rendering the atrium at 1x..8x on {}", renderer.device().name));
+                const int w = quick ? 160 : 640, h = quick ? 90 : 360;
+                render::writeAaRenderSet(renderer, scene, scene.view("nave"), w, h, dir, "atrium");
+                return std::vector<std::pair<std::string, std::string>>{
+                    {"atrium", fmt::format("The procedural atrium (view nave), {}x{}, rasterised with Vulkan and "
+                                           "forward-shaded without anti-aliasing: checker floor, brick walls, thin "
+                                           "bars, curtain folds (ssfx render atrium --view nave --aa-set).", w, h)}};
+            };
+#endif
         o->exec = Exec{*threads};
         o->progress = progressLine;
         eval::writeReport(*o);

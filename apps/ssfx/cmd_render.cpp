@@ -19,7 +19,7 @@ struct RenderOptions {
     std::string scene, view, size = "960x540", depthFormat = "d32f", out, device, far;
     int scale = 1, gbuffer = 0, guard = 0;
     double near = 0;
-    bool listViews = false, listDevices = false, validation = false;
+    bool listViews = false, listDevices = false, validation = false, aaSet = false;
 };
 
 std::pair<int, int> parseSize(const std::string& text) {
@@ -92,6 +92,13 @@ void run(const RenderOptions& o) {
     const ao::DepthFormat format = parseDepthFormat(o.depthFormat);
     // Everything is rendered before anything is written.
     render::Renderer renderer({o.device, o.validation});
+    if (o.aaSet) {
+        std::filesystem::create_directories(o.out);
+        render::writeAaRenderSet(renderer, scene, view, w, h, o.out, scene.name);
+        fmt::print("{}: {}.png, {}x2.png, {}x4.png, {}x8.png -> {}\n", scene.name, scene.name, scene.name, scene.name,
+                   scene.name, o.out);
+        return;
+    }
     const auto depth = renderer.renderDepth(scene, view, w, h, format, o.guard);
     const auto color = renderer.renderColor(scene, view, w, h, o.scale);
     std::optional<render::GBuffer> gbuffer;
@@ -133,6 +140,8 @@ void addRenderCommand(CLI::App& app) {
     cmd->add_option("--out", o->out, "Output folder: depth.exr, z.exr, camera.json, color.png [, gbuffer.exr]");
     cmd->add_option("--device", o->device, "Vulkan device index or part of its name (default: a GPU, else lavapipe)");
     cmd->add_flag("--validation", o->validation, "Enable the Khronos validation layer and print its messages");
+    cmd->add_flag("--aa-set", o->aaSet,
+                  "Instead: the colour images at 1x, 2x, 4x, 8x as NAME.png, NAMEx2.png, ... for ssfx eval quality");
     cmd->add_flag("--list-views", o->listViews, "List the scene's viewpoints and exit");
     cmd->add_flag("--list-devices", o->listDevices, "List the Vulkan devices and exit");
     cmd->footer("Depth is hardware depth in [0, 1] (0 = near); camera.json holds fov_y_deg, z_near, z_far (read by\n"
@@ -140,7 +149,8 @@ void addRenderCommand(CLI::App& app) {
                 "Examples:\n"
                 "  ssfx render atrium --view nave --size 1280x720 --guard 128 --out out/atrium\n"
                 "  ssfx render scenes/sponza.json --list-views\n"
-                "  ssfx render cornell --size 256x256 --gbuffer 4 --depth-format d24 --out out/cornell");
+                "  ssfx render cornell --size 256x256 --gbuffer 4 --depth-format d24 --out out/cornell\n"
+                "  ssfx render atrium --view nave --size 640x360 --aa-set --out imgs && ssfx eval quality imgs");
     cmd->callback([o] { run(*o); });
 }
 

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
@@ -202,6 +203,16 @@ void writeReport(const ReportOptions& o) {
                              aa::downscaleMitchell(img.view(), 8, {}, o.exec).view());
         }
     }
+
+    // 1b. Render sets from elsewhere (3-D scenes), with their references.
+    std::map<std::string, std::string> extraSets;  // name -> description
+    if (o.addRenderSets)
+        for (const auto& [name, description] : o.addRenderSets((out / "images").string())) {
+            extraSets[name] = description;
+            const ImageRgba8 x8 = io::readPng((out / "images" / (name + "x8.png")).string());
+            io::writePng((out / "images" / (name + "_reference.png")).string(),
+                         aa::downscaleMitchell(x8.view(), 8, {}, o.exec).view());
+        }
 
     // 2. Quality (Table 2) on our images, writing every output for the viewer.
     QualityOptions qo;
@@ -507,11 +518,23 @@ void writeReport(const ReportOptions& o) {
          "is nearest-neighbour; drag or scroll to pan (all panes move together). <code>reference</code> is the x8 "
          "render resolved to 1x with the Mitchell filter.</p>\n";
     for (const auto& name : quality.images) {
-        const TestImageInfo& info = testImageByName(name);
+        std::string description;
+        int width = 0, height = 0;
+        if (auto e = extraSets.find(name); e != extraSets.end()) {
+            description = e->second;
+            const ImageRgba8 img = io::readPng((out / "images" / (name + ".png")).string());
+            width = img.width();
+            height = img.height();
+        } else {
+            const TestImageInfo& info = testImageByName(name);
+            description = info.description;
+            width = info.width;
+            height = info.height;
+        }
         std::vector<std::pair<std::string, std::string>> src{{"reference", "images/" + name + "_reference.png"}};
         for (const auto& id : methodIds) src.emplace_back(id, fmt::format("images/{}_{}.png", name, id));
-        h += fmt::format("<h3>{}</h3><p class=\"note\">{}</p>\n", esc(name), esc(info.description));
-        h += viewer(name, info.width, info.height, src, {"noaa", "ddaa2"});
+        h += fmt::format("<h3>{}</h3><p class=\"note\">{}</p>\n", esc(name), esc(description));
+        h += viewer(name, width, height, src, {"noaa", "ddaa2"});
     }
 
     h += "<h2>Temporal stability</h2>\n<p class=\"note\">Each method applied to every frame of <code>animated</code>"

@@ -11,6 +11,7 @@
 #include <map>
 
 #include "ssfx/core/error.hpp"
+#include "ssfx/io/png.hpp"
 #include "vk_context.hpp"
 
 namespace ssfx::render {
@@ -434,6 +435,15 @@ ColorRender Renderer::renderColor(const Scene& scene, const View& view, int widt
         out.gpuMs = r.gpuMs;
         return out;
     });
+}
+
+void writeAaRenderSet(Renderer& renderer, const Scene& scene, const View& view, int width, int height,
+                      const std::string& dir, const std::string& name) {
+    std::vector<ImageRgba8> images;  // all rendered before any is written
+    for (int scale : {1, 2, 4, 8}) images.push_back(renderer.renderColor(scene, view, width, height, scale).color);
+    const char* suffix[] = {"", "x2", "x4", "x8"};
+    for (std::size_t i = 0; i < images.size(); ++i)
+        io::writePng(dir + "/" + name + suffix[i] + ".png", images[i].view());
 }
 
 }  // namespace ssfx::render

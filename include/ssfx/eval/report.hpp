@@ -15,6 +15,7 @@
 
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "ssfx/core/parallel.hpp"
@@ -34,6 +35,10 @@ struct ReportOptions {
     bool ambientObscurance = true;
     //! Rendered scenes for the AO accuracy table (optional; see ao_experiments.hpp).
     AoSceneSource renderedScenes;
+    //! Optional: writes more render sets (NAME.png, NAMEx2/x4/x8.png; e.g. 3-D scenes from the
+    //! Vulkan renderer) into the given folder before the quality table is computed, and
+    //! returns their names with a one-line description each.
+    std::function<std::vector<std::pair<std::string, std::string>>(const std::string& imagesDir)> addRenderSets;
     Exec exec;
     std::function<void(const std::string&)> progress;
 };

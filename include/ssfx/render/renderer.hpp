@@ -91,4 +91,10 @@ private:
     std::unique_ptr<Impl> impl_;
 };
 
+//! The anti-aliasing evaluation's render set (ssfx/eval/quality.hpp) of one view: NAME.png at
+//! width x height and NAMEx2.png, NAMEx4.png, NAMEx8.png at 2, 4 and 8 times that size, all
+//! forward-shaded without anti-aliasing, written into `dir` (like the paper's sponza image).
+void writeAaRenderSet(Renderer& renderer, const Scene& scene, const View& view, int width, int height,
+                      const std::string& dir, const std::string& name);
+
 }  // namespace ssfx::render
