@@ -19,5 +19,6 @@ void addTestimagesCommand(CLI::App& app);
 void addEvalCommand(CLI::App& app);
 void addAoCommand(CLI::App& app);
 void addRenderCommand(CLI::App& app);
+void addDeferredCommand(CLI::App& app);
 
 }  // namespace ssfx::cli

@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
     ssfx::cli::addAoCommand(app);
 #ifdef SSFX_HAVE_RENDER
     ssfx::cli::addRenderCommand(app);
+    ssfx::cli::addDeferredCommand(app);
 #endif
     ssfx::cli::addEvalCommand(app);
     try {

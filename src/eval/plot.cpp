@@ -209,4 +209,29 @@ ImageRgba8 lineChart(const std::vector<double>& x, const std::vector<Series>& se
     return ch.sf.image();
 }
 
+ImageRgba8 heatMap(ImageView<const float> values, float lo, float hi) {
+    // Stops of the ramp at t = 0, 0.25, 0.5, 0.75, 1.
+    static constexpr float kStops[5][3] = {{0.05f, 0.05f, 0.45f}, {0.0f, 0.6f, 0.9f}, {0.2f, 0.8f, 0.2f},
+                                           {0.95f, 0.85f, 0.1f}, {0.85f, 0.05f, 0.05f}};
+    ImageRgba8 out(values.width(), values.height());
+    const float span = hi > lo ? hi - lo : 1.0f;
+    for (int y = 0; y < values.height(); ++y)
+        for (int x = 0; x < values.width(); ++x) {
+            const float v = values(x, y);
+            if (std::isnan(v)) {
+                out(x, y) = {0, 0, 0, 255};
+                continue;
+            }
+            const float t = std::clamp((v - lo) / span, 0.0f, 1.0f) * 4.0f;
+            const int i = std::min(int(t), 3);
+            const float f = t - float(i);
+            Rgba8 c{0, 0, 0, 255};
+            std::uint8_t* ch[3] = {&c.r, &c.g, &c.b};
+            for (int k = 0; k < 3; ++k)
+                *ch[k] = std::uint8_t(std::lround(255.0f * (kStops[i][k] * (1.0f - f) + kStops[i + 1][k] * f)));
+            out(x, y) = c;
+        }
+    return out;
+}
+
 }  // namespace ssfx::eval

@@ -26,4 +26,8 @@ ImageRgba8 groupedBarChart(const std::vector<std::string>& categories, const std
                            const ChartStyle& style);
 ImageRgba8 lineChart(const std::vector<double>& x, const std::vector<Series>& series, const ChartStyle& style);
 
+//! A heat map of a float image: lo -> dark blue, through cyan, green, yellow, to red at hi
+//! (a piecewise-linear "jet"-like ramp, clamped); NaN -> black.
+ImageRgba8 heatMap(ImageView<const float> values, float lo, float hi);
+
 }  // namespace ssfx::eval

@@ -1,0 +1,65 @@
+// Adaptive supersampling for deferred shading (Holländer, Boubekeur, Eisemann, "Adaptive
+// Supersampling for Deferred Anti-Aliasing", JCGT 2(1) 2013; spec adaptive_ss.md): shade
+// the first sample of each pixel's m x m G-buffer window, decide per pixel how many samples
+// k it needs from depth variance, normal cone and luminance range, shade k - 1 more in
+// ordered-dither order and average. The reference shades all m^2 samples.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "ssfx/core/image.hpp"
+#include "ssfx/core/parallel.hpp"
+#include "ssfx/deferred/shading.hpp"
+
+namespace ssfx::deferred {
+
+struct AdaptiveParams {
+    //! Metric constants c (paper section 3.1; scene dependent). Depth is camera-space
+    //! distance in metres (background: kBackgroundDepth), so cDepth is per square metre.
+    float cDepth = 16.0f;    //!< [0, 1e9]: a 1 m step between half the samples gives k = 4
+    float cNormal = 24.0f;   //!< [0, 1e9]
+    float cShading = 64.0f;  //!< [0, 1e9]
+    //! The shading metric's early exit, FXAA's medium preset (ppaa.md section 1).
+    float tMin = 0.0625f;   //!< [0, 1] EDGE_THRESHOLD_MIN
+    float tEdge = 0.166f;   //!< [0, 1] EDGE_THRESHOLD_MAX
+    ShadingParams shading;
+};
+void validate(const AdaptiveParams& p);
+
+//! Depth that background samples count with in the depth metric: any window mixing
+//! geometry and background gets every sample.
+inline constexpr float kBackgroundDepth = 1000.0f;
+
+//! The ordered-dither index matrix of size m (2, 3, 4), row-major (adaptive_ss.md).
+std::vector<int> ditherMatrix(int m);
+//! Window positions (x, y) of dither indices 0, 1, ..., m^2 - 1.
+std::vector<std::array<int, 2>> ditherOrder(int m);
+
+//! The metrics of one window / pixel (paper section 3.1), before rounding and clamping.
+float depthMetric(const float* depths, int n, float c);          //!< c * variance
+float normalMetric(const glm::vec3* normals, int n, float c);    //!< c * sqrt(1 - min |mean . n_ij|); 0 if n = 0
+//! c * (lMax - lMin) over the pixel and its 4 neighbours, 0 under FXAA's threshold.
+float shadingMetric(float centre, float north, float south, float west, float east, float c, float tMin, float tEdge);
+
+struct DeferredResult {
+    ImageRgbF image;
+    Image<std::uint8_t> samples;      //!< k per pixel
+    ImageF kDepth, kNormal, kShading; //!< the metrics' values (adaptive only; paper Figure 8)
+    std::int64_t shaded = 0;          //!< samples shaded (a reshaded first sample counts again)
+    std::int64_t possible = 0;        //!< width * height * m^2
+    double firstMs = 0, evaluateMs = 0, restMs = 0;  //!< per phase (adaptive); restMs = all (reference)
+    double shadedPercent() const { return possible ? 100.0 * double(shaded) / double(possible) : 0.0; }
+    double totalMs() const { return firstMs + evaluateMs + restMs; }
+};
+
+//! The method. Where k > 1 and the first sample is textured, it is shaded again with the
+//! k-sample footprint so that k = m^2 gives exactly the reference (and counted).
+DeferredResult adaptiveSupersampling(const render::Scene& scene, const render::GBuffer& gbuffer,
+                                     const AdaptiveParams& params, const Exec& exec = {});
+//! Brute force: every sample with the 1/m footprint, averaged in dither order.
+DeferredResult referenceSupersampling(const render::Scene& scene, const render::GBuffer& gbuffer,
+                                      const ShadingParams& params, const Exec& exec = {});
+
+}  // namespace ssfx::deferred

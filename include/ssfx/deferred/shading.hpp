@@ -1,0 +1,70 @@
+// Shading one G-buffer sample for adaptive supersampling (adaptive_ss.md "Shading a
+// sample"): Lambert diffuse plus a Blinn-Phong specular term over all of the scene's
+// lights, the albedo looked up in the texture array with anisotropic filtering driven by
+// the G-buffer's texture-coordinate derivatives, scaled to the share of the pixel the
+// sample stands for; and an optional artificial cost per sample ("stall").
+#pragma once
+
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <vector>
+
+#include "ssfx/ao/depth.hpp"
+#include "ssfx/core/image.hpp"
+#include "ssfx/render/renderer.hpp"
+
+namespace ssfx::deferred {
+
+//! Linear RGB, row-major.
+struct ImageRgbF {
+    int width = 0, height = 0;
+    std::vector<glm::vec3> pixels;
+    ImageRgbF() = default;
+    ImageRgbF(int w, int h) : width(w), height(h), pixels(std::size_t(w) * std::size_t(h), glm::vec3(0.0f)) {}
+    glm::vec3& operator()(int x, int y) { return pixels[std::size_t(y) * std::size_t(width) + std::size_t(x)]; }
+    const glm::vec3& operator()(int x, int y) const { return pixels[std::size_t(y) * std::size_t(width) + std::size_t(x)]; }
+    friend bool operator==(const ImageRgbF&, const ImageRgbF&) = default;
+};
+//! Clamped to [0, 1] and rounded to 8 bits, alpha 255.
+ImageRgba8 toRgba8(const ImageRgbF& image);
+//! Mean over pixels and the three channels of the squared difference of values clamped to [0, 1].
+double mse(const ImageRgbF& a, const ImageRgbF& b);
+
+struct ShadingParams {
+    float specular = 0.25f;   //!< [0, 1]: Blinn-Phong specular colour (white, times the light)
+    float shininess = 40.0f;  //!< [1, 10000]: Blinn-Phong exponent
+    int maxAnisotropy = 16;   //!< [1, 16]: probes of the anisotropic lookup
+    int stall = 0;            //!< [0, 10^7]: extra dependent integer operations per shaded sample
+};
+//! Throws ssfx::Error naming the parameter when one is out of range.
+void validate(const ShadingParams& p);
+
+class SampleShader {
+public:
+    //! Throws ssfx::Error when the G-buffer is empty or inconsistent, or the params are bad.
+    SampleShader(const render::Scene& scene, const render::GBuffer& gbuffer, const ShadingParams& params);
+
+    //! The colour of G-buffer sample (sx, sy) for a sample standing for `footprint` (linear
+    //! fraction of a final pixel: 1 = the whole pixel, 1/m = one of m x m samples); the
+    //! background colour for background samples. At a material or texture-layer boundary
+    //! within the sample's 2x2 quad (where the G-buffer derivatives are meaningless) the
+    //! lookup falls back to the un-derived, finest-level bilinear one.
+    glm::vec3 shade(int sx, int sy, float footprint) const;
+    //! Whether the sample's albedo depends on the footprint (it is textured).
+    bool textured(int sx, int sy) const { return g_.layer[g_.index(sx, sy)] >= 0; }
+    //! Camera-space depth -z of a sample (metres; +infinity for background).
+    float linearDepth(int sx, int sy) const;
+
+private:
+    struct LightC {
+        bool point;
+        glm::vec3 vector, color;  // camera space: direction towards the light, or position
+    };
+    const render::Scene& scene_;
+    const render::GBuffer& g_;
+    ShadingParams p_;
+    ao::Projection proj_;
+    std::vector<LightC> lights_;
+};
+
+}  // namespace ssfx::deferred

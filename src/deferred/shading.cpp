@@ -1,0 +1,136 @@
+// Shading of one G-buffer sample (see shading.hpp).
+#include "ssfx/deferred/shading.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "ssfx/core/error.hpp"
+#include "ssfx/deferred/sampler.hpp"
+
+namespace ssfx::deferred {
+
+ImageRgba8 toRgba8(const ImageRgbF& image) {
+    ImageRgba8 out(image.width, image.height);
+    for (std::size_t i = 0; i < image.pixels.size(); ++i) {
+        const glm::vec3 c = glm::clamp(image.pixels[i], 0.0f, 1.0f) * 255.0f + 0.5f;
+        out.data()[i] = {std::uint8_t(c.r), std::uint8_t(c.g), std::uint8_t(c.b), 255};
+    }
+    return out;
+}
+
+double mse(const ImageRgbF& a, const ImageRgbF& b) {
+    if (a.width != b.width || a.height != b.height)
+        throw Error(fmt::format("mse: sizes {}x{} and {}x{} differ", a.width, a.height, b.width, b.height));
+    double sum = 0;
+    for (std::size_t i = 0; i < a.pixels.size(); ++i) {
+        const glm::dvec3 d = glm::dvec3(glm::clamp(a.pixels[i], 0.0f, 1.0f)) - glm::dvec3(glm::clamp(b.pixels[i], 0.0f, 1.0f));
+        sum += glm::dot(d, d);
+    }
+    return a.pixels.empty() ? 0.0 : sum / (3.0 * double(a.pixels.size()));
+}
+
+void validate(const ShadingParams& p) {
+    if (!(p.specular >= 0.0f && p.specular <= 1.0f)) throw Error(fmt::format("shading: specular {} is not in [0, 1]", p.specular));
+    if (!(p.shininess >= 1.0f && p.shininess <= 10000.0f))
+        throw Error(fmt::format("shading: shininess {} is not in [1, 10000]", p.shininess));
+    if (p.maxAnisotropy < 1 || p.maxAnisotropy > 16)
+        throw Error(fmt::format("shading: maxAnisotropy {} is not in [1, 16]", p.maxAnisotropy));
+    if (p.stall < 0 || p.stall > 10'000'000) throw Error(fmt::format("shading: stall {} is not in [0, 10^7]", p.stall));
+}
+
+SampleShader::SampleShader(const render::Scene& scene, const render::GBuffer& g, const ShadingParams& params)
+    : scene_(scene), g_(g), p_(params) {
+    validate(params);
+    const std::size_t n = std::size_t(g.sampleWidth()) * std::size_t(g.sampleHeight());
+    if (g.width < 1 || g.height < 1 || g.m < 1 || g.depth.pixelCount() != std::int64_t(n) || g.normal.size() != n ||
+        g.uv.size() != n || g.uvGrad.size() != n || g.material.size() != n || g.layer.size() != n)
+        throw Error("deferred: the G-buffer's planes do not match its size");
+    for (std::size_t i = 0; i < n; ++i) {
+        if (g.material[i] != render::GBuffer::kNoMaterial && g.material[i] >= scene.materials.size())
+            throw Error(fmt::format("deferred: G-buffer sample {} names material {} of {}", i, g.material[i], scene.materials.size()));
+        if (g.layer[i] >= int(scene.textures.layers.size()))
+            throw Error(fmt::format("deferred: G-buffer sample {} names texture layer {} of {}", i, g.layer[i],
+                                    scene.textures.layers.size()));
+    }
+    proj_ = ao::projection(g.camera.camera, g.sampleWidth(), g.sampleHeight());
+    const glm::dmat4& v = g.camera.view;
+    for (const auto& l : scene.lights) {
+        if (l.type == render::Light::Type::Directional)
+            lights_.push_back({false, glm::normalize(-glm::vec3(glm::dmat3(v) * glm::dvec3(l.vector))), l.color});
+        else
+            lights_.push_back({true, glm::vec3(v * glm::dvec4(glm::dvec3(l.vector), 1.0)), l.color});
+    }
+}
+
+float SampleShader::linearDepth(int sx, int sy) const {
+    const float d = g_.depth(sx, sy);
+    if (g_.material[g_.index(sx, sy)] == render::GBuffer::kNoMaterial) return INFINITY;
+    return float(-proj_.c0 / (double(d) * proj_.c1 + proj_.c2));  // sao.md eq. 2
+}
+
+glm::vec3 SampleShader::shade(int sx, int sy, float footprint) const {
+    const std::size_t i = g_.index(sx, sy);
+    const std::uint16_t mat = g_.material[i];
+    glm::vec3 colour;
+    if (mat == render::GBuffer::kNoMaterial) {
+        colour = scene_.background;
+    } else {
+        const render::Material& m = scene_.materials[mat];
+        glm::vec3 albedo = m.diffuse;
+        const int layer = g_.layer[i];
+        if (layer >= 0) {
+            // The G-buffer's derivatives come from the 2x2 quad of samples around this one;
+            // across a material or layer change they mix two parameterisations.
+            const int qx = sx & ~1, qy = sy & ~1;
+            bool boundary = false;
+            for (int y = qy; y < std::min(qy + 2, g_.sampleHeight()); ++y)
+                for (int x = qx; x < std::min(qx + 2, g_.sampleWidth()); ++x) {
+                    const std::size_t j = g_.index(x, y);
+                    boundary = boundary || g_.material[j] != mat || g_.layer[j] != layer;
+                }
+            const glm::vec4 grad = g_.uvGrad[i] * footprint;
+            const glm::vec4 tex = boundary ? textureBilinear(scene_.textures, layer, 0, g_.uv[i])
+                                           : textureGrad(scene_.textures, layer, g_.uv[i], {grad.x, grad.y}, {grad.z, grad.w},
+                                                         p_.maxAnisotropy);
+            albedo *= glm::vec3(tex);
+        }
+        const float z = -linearDepth(sx, sy);
+        const ao::Vec3 c = ao::reconstructPosition(proj_, float(sx) + 0.5f, float(sy) + 0.5f, z);
+        const glm::vec3 pos(c.x, c.y, c.z);
+        const glm::vec3 n = glm::normalize(g_.normal[i]);
+        const glm::vec3 toEye = glm::normalize(-pos);
+        glm::vec3 diffuse = scene_.ambient, specular(0.0f);
+        for (const auto& l : lights_) {
+            glm::vec3 dir = l.vector, irradiance = l.color;
+            if (l.point) {
+                const glm::vec3 d = l.vector - pos;
+                const float d2 = std::max(glm::dot(d, d), 1e-4f);
+                dir = d / std::sqrt(d2);
+                irradiance /= d2;
+            }
+            const float nl = glm::dot(n, dir);
+            if (nl <= 0.0f) continue;
+            diffuse += irradiance * nl;
+            // Blinn-Phong, multiplied by n.l so it fades with the diffuse term at the terminator.
+            const float nh = std::max(glm::dot(n, glm::normalize(dir + toEye)), 0.0f);
+            specular += irradiance * (p_.specular * std::pow(nh, p_.shininess) * nl);
+        }
+        colour = albedo * diffuse + specular;
+    }
+    if (p_.stall > 0) {
+        // A chain of dependent integer operations (xorshift) that the compiler must keep:
+        // the empty asm statement "uses" the result. It does not change the colour.
+        std::uint32_t s = std::uint32_t(i) | 1u;
+        for (int k = 0; k < p_.stall; ++k) {
+            s ^= s << 13;
+            s ^= s >> 17;
+            s ^= s << 5;
+        }
+        asm volatile("" : : "r"(s));
+    }
+    return colour;
+}
+
+}  // namespace ssfx::deferred
