@@ -17,6 +17,7 @@
 #include "ssfx/eval/test_images.hpp"
 #include "ssfx/io/png.hpp"
 #ifdef SSFX_HAVE_RENDER
+#include "ssfx/eval/deferred_experiment.hpp"
 #include "ssfx/render/raytrace.hpp"
 #include "ssfx/render/renderer.hpp"
 #endif
@@ -275,6 +276,37 @@ void addReport(CLI::App& eval) {
     });
 }
 
+#ifdef SSFX_HAVE_RENDER
+void addDeferred(CLI::App& eval) {
+    auto o = std::make_shared<eval::DeferredExperimentOptions>();
+    auto threads = std::make_shared<int>(0);
+    auto size = std::make_shared<std::string>("1024x768");
+    auto* cmd = eval.add_subcommand("deferred", "The adaptive supersampling paper's Table 1: time, stalled time, "
+                                                "MSE/PSNR vs the reference and samples shaded for m = 1..4");
+    cmd->add_option("--out", o->outDir, "Output directory: images/, data/deferred.json, data/deferred.md")->required();
+    cmd->add_option("--scene", o->scene, "Scene (default atrium)");
+    cmd->add_option("--view", o->view, "View (default nave)");
+    cmd->add_option("--size", *size, "Final image size (default 1024x768, the paper's)");
+    cmd->add_option("--stall", o->stall, "Extra operations per sample in the stalled columns (default 400)")
+        ->check(CLI::Range(0, 10000000));
+    cmd->add_option("--reps", o->repetitions, "Timed runs per row, median (default 3)")->check(CLI::Range(1, 1000));
+    cmd->add_flag("--quick", o->quick, "256x192, one run (tests)");
+    cmd->add_option("--device", o->device, "Vulkan device for the G-buffer");
+    cmd->add_option("--threads", *threads, "Worker threads (0 = all)")->check(CLI::Range(0, 1024));
+    cmd->callback([o, threads, size] {
+        int w = 0, h = 0;
+        char x = 0;
+        if (std::sscanf(size->c_str(), "%d%c%d", &w, &x, &h) != 3 || x != 'x' || w < 1 || h < 1 || w > 8192 || h > 8192)
+            throw Error(fmt::format("--size '{}' is not WIDTHxHEIGHT", *size));
+        o->width = w;
+        o->height = h;
+        o->exec = Exec{*threads};
+        o->progress = progressLine;
+        fmt::print("{}", eval::runDeferredExperiment(*o));
+    });
+}
+#endif
+
 void addAo(CLI::App& eval) {
     auto o = std::make_shared<eval::AoExperimentOptions>();
     auto threads = std::make_shared<int>(0);
@@ -310,6 +342,9 @@ void addEvalCommand(CLI::App& app) {
     addSpeed(*eval);
     addReport(*eval);
     addAo(*eval);
+#ifdef SSFX_HAVE_RENDER
+    addDeferred(*eval);
+#endif
 }
 
 }  // namespace ssfx::cli
