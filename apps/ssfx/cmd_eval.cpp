@@ -251,7 +251,8 @@ void addReport(CLI::App& eval) {
                                            "scenes/bunny.json:front; 'none' for none)");
     cmd->add_option("--threads", *threads, "Worker threads (0 = all)")->check(CLI::Range(0, 1024));
     auto noRender = std::make_shared<bool>(false);
-    cmd->add_flag("--no-render", *noRender, "Leave out the Vulkan-rendered atrium from the quality table");
+    cmd->add_flag("--no-render", *noRender,
+                  "Leave out what needs the Vulkan renderer: the atrium in the quality table, adaptive supersampling");
     cmd->callback([o, threads, scenes, noRender] {
         if (!(scenes->size() == 1 && scenes->front() == "none")) o->renderedScenes = renderedAoScenes(*scenes);
 #ifdef SSFX_HAVE_RENDER
@@ -267,6 +268,21 @@ void addReport(CLI::App& eval) {
                     {"atrium", fmt::format("The procedural atrium (view nave), {}x{}, rasterised with Vulkan and "
                                            "forward-shaded without anti-aliasing: checker floor, brick walls, thin "
                                            "bars, curtain folds (ssfx render atrium --view nave --aa-set).", w, h)}};
+            };
+#endif
+#ifdef SSFX_HAVE_RENDER
+        // Adaptive supersampling's Table 1 at 512x384 (the paper's 1024x768: ssfx eval deferred).
+        if (!*noRender)
+            o->deferredExperiment = [quick = o->quick, threads = *threads](const std::string& dir) {
+                eval::DeferredExperimentOptions d;
+                d.outDir = dir;
+                d.quick = quick;
+                d.width = 512;
+                d.height = 384;
+                d.repetitions = 3;
+                d.exec = Exec{threads};
+                d.progress = progressLine;
+                return eval::runDeferredExperiment(d);
             };
 #endif
         o->exec = Exec{*threads};

@@ -471,9 +471,34 @@ void writeReport(const ReportOptions& o) {
             aoSection += fmt::format("<figure><img class=\"aoimg\" src=\"ao/images/ao_room_{0}.png\" alt=\"room "
                                      "{0}\"><figcaption>room: {0}</figcaption></figure>\n",
                                      name);
+        aoSection += "</div>\n<div class=\"anims\">\n";
+        if (fs::exists(out / "ao" / "images" / "ao_atrium_raytraced.png"))
+            for (const char* name : {"raytraced", "sao_rotated_grid", "alchemy"})
+                aoSection += fmt::format("<figure><img class=\"aoimg\" src=\"ao/images/ao_atrium_{0}.png\" alt=\"atrium "
+                                         "{0}\"><figcaption>atrium (Vulkan): {0}</figcaption></figure>\n",
+                                         name);
         aoSection += "</div>\n<img class=\"plot\" width=\"880\" height=\"420\" src=\"ao/plots/ao_radius_scaling.png\" "
                      "alt=\"AO time vs radius\">\n<img class=\"plot\" width=\"880\" height=\"420\" "
                      "src=\"ao/plots/ao_z_precision.png\" alt=\"z precision\">\n";
+    }
+
+    // 7c. Adaptive supersampling for deferred shading (the caller runs it: it needs the renderer).
+    std::string deferredSection;
+    if (o.deferredExperiment) {
+        const std::string md = o.deferredExperiment((out / "deferred").string());
+        deferredSection = "<h2>Adaptive supersampling for deferred shading (the paper's Table 1)</h2>\n<p class=\"note\">"
+                          "The method (<a href=\"methods/adaptive.html\">doc</a>) against brute-force supersampling "
+                          "on the atrium's G-buffer from the Vulkan renderer. Images at 4x4: the reference, ours, the "
+                          "per-pixel sample count (blue 1 .. red 16), the absolute error (0 .. 0.05) and each "
+                          "metric's k (paper Figure 8). Data: <a href=\"deferred/data/deferred.json\">"
+                          "deferred/data/deferred.json</a>.</p>\n";
+        deferredSection += markdownToHtml(md);
+        deferredSection += "<div class=\"anims\">\n";
+        for (const char* name : {"reference", "ours", "samples", "error", "k_depth", "k_normal", "k_shading"})
+            deferredSection += fmt::format("<figure><img class=\"aoimg\" src=\"deferred/images/deferred_m4_{0}.png\" "
+                                           "alt=\"4x4 {0}\"><figcaption>4x4: {0}</figcaption></figure>\n",
+                                           name);
+        deferredSection += "</div>\n";
     }
 
     // 8. Method docs.
@@ -596,6 +621,7 @@ void writeReport(const ReportOptions& o) {
     }
     h += "<img class=\"plot\" width=\"880\" height=\"400\" src=\"plots/kernels.png\" alt=\"angle error per kernel\">\n";
     h += aoSection;
+    h += deferredSection;
     h += fmt::format("<p class=\"note\">Written by ssfx 0.1.0. Tables as Markdown: <a href=\"data/quality.md\">quality"
                      "</a>, <a href=\"data/temporal.md\">temporal</a>, <a href=\"data/speed.md\">speed</a>.</p>\n");
     h += "<script>" + std::string(detail::kReportJs) + "</script>\n</body></html>\n";

@@ -35,6 +35,10 @@ struct ReportOptions {
     bool ambientObscurance = true;
     //! Rendered scenes for the AO accuracy table (optional; see ao_experiments.hpp).
     AoSceneSource renderedScenes;
+    //! Optional: runs the adaptive supersampling experiment into the given folder and returns
+    //! its Markdown (it needs the renderer; see ssfx/eval/deferred_experiment.hpp). Its images
+    //! are expected as images/deferred_m4_*.png there.
+    std::function<std::string(const std::string& dir)> deferredExperiment;
     //! Optional: writes more render sets (NAME.png, NAMEx2/x4/x8.png; e.g. 3-D scenes from the
     //! Vulkan renderer) into the given folder before the quality table is computed, and
     //! returns their names with a one-line description each.
