@@ -150,6 +150,10 @@ if "$SSFX" render --help >/dev/null 2>&1; then
   check render_device 2 $VK "$SSFX" render cornell --device no-such-gpu --out "$OUT/x"
   contains render_device "$OUT/render_device.err" "no Vulkan device"
   check render_far 2 $VK "$SSFX" render cornell --far 0.01 --out "$OUT/x"
+  # No Vulkan driver: the loader finds no ICD; a clear error, exit 2.
+  check render_nodriver 2 env VK_ICD_FILENAMES=/nonexistent/icd.json VK_DRIVER_FILES=/nonexistent/icd.json \
+    ASAN_OPTIONS=detect_leaks=0 "$SSFX" render cornell --out "$OUT/x"
+  contains render_nodriver "$OUT/render_nodriver.err" "Vulkan"
   [ ! -e "$OUT/x" ] || { echo "FAIL render: a failed run left $OUT/x"; fail=1; }
   # Adaptive supersampling on a rendered G-buffer, with its reference; the Table 1 experiment.
   check help_deferred 0 $VK "$SSFX" deferred --help
