@@ -137,7 +137,9 @@ TEST_F(RenderTest, SphereDepthAndNormalsMatchTheAnalyticSphere) {
     for (int f = 0; f < 3; ++f) {
         SCOPED_TRACE(kFormatNames[f]);
         const auto d = renderer().renderDepth(s, v, 96, 96, kFormats[f]);
-        if (kFormats[f] == ao::DepthFormat::D32F) ASSERT_EQ(d.depth, g.depth);  // same rasterisation, same depth
+        if (kFormats[f] == ao::DepthFormat::D32F) {
+            ASSERT_EQ(d.depth, g.depth);  // same rasterisation, same depth
+        }
         const auto p = ao::projection(d.camera.camera, 96, 96);
         const ImageF z = ao::depthToZ(d.depth.view(), d.camera.camera);
         // 128 segments: the chord lies at most 1 - cos(pi / 128) = 3e-4 inside the sphere; the
@@ -147,7 +149,9 @@ TEST_F(RenderTest, SphereDepthAndNormalsMatchTheAnalyticSphere) {
         for (int y = 0; y < 96; ++y)
             for (int x = 0; x < 96; ++x) {
                 if (d.depth(x, y) == 1.0f) {
-                    if (f == 2) EXPECT_EQ(g.material[g.index(x, y)], render::GBuffer::kNoMaterial);
+                    if (f == 2) {
+                        EXPECT_EQ(g.material[g.index(x, y)], render::GBuffer::kNoMaterial);
+                    }
                     continue;
                 }
                 ++inside;
