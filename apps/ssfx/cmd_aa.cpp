@@ -1,6 +1,8 @@
 // ssfx aa: apply an anti-aliasing method to a PNG (or every frame of an APNG).
 #include <fmt/format.h>
 
+#include <cstdio>
+
 #include <charconv>
 
 #include "commands.hpp"
@@ -9,6 +11,15 @@
 #include "ssfx/registry.hpp"
 
 namespace ssfx::cli {
+
+std::pair<int, int> parseSize(const std::string& text, const std::string& option, int maxSide) {
+    int w = 0, h = 0;
+    char x = 0, extra = 0;
+    if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || x != 'x' || w < 1 || h < 1 || w > maxSide ||
+        h > maxSide)
+        throw Error(fmt::format("{} '{}' is not WIDTHxHEIGHT (1..{} each)", option, text, maxSide));
+    return {w, h};
+}
 
 std::pair<std::string, double> parseParam(const std::string& text) {
     const auto eq = text.find('=');

@@ -29,14 +29,6 @@ struct AoOptions {
     int threads = 0, rays = 256;
 };
 
-std::pair<int, int> parseSize(const std::string& text) {
-    int w = 0, h = 0;
-    char x = 0;
-    if (std::sscanf(text.c_str(), "%d%c%d", &w, &x, &h) != 3 || x != 'x' || w < 1 || h < 1 || w > 16384 || h > 16384)
-        throw Error(fmt::format("--size '{}' is not WIDTHxHEIGHT (1..16384)", text));
-    return {w, h};
-}
-
 void writeAo(const std::string& path, const ImageF& a) {
     const std::string ext = std::filesystem::path(path).extension().string();
     if (ext == ".exr") {

@@ -38,22 +38,10 @@ void setParam(deferred::AdaptiveParams& p, const std::string& name, double v) {
                                 "shininess, maxAnisotropy)", name));
 }
 
-ImageF absError(const deferred::ImageRgbF& a, const deferred::ImageRgbF& b) {
-    ImageF e(a.width, a.height);
-    for (std::size_t i = 0; i < a.pixels.size(); ++i) {
-        const glm::vec3 d = glm::abs(glm::clamp(a.pixels[i], 0.0f, 1.0f) - glm::clamp(b.pixels[i], 0.0f, 1.0f));
-        e.data()[i] = (d.r + d.g + d.b) / 3.0f;
-    }
-    return e;
-}
-
 void run(const DeferredOptions& o) {
     if (o.scene.empty()) throw Error("no scene given (--scene atrium | cornell | FILE.json | MODEL)");
     if (o.out.empty()) throw Error("no output folder given (--out DIR)");
-    int w = 0, h = 0;
-    char x = 0, extra = 0;
-    if (std::sscanf(o.size.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || x != 'x' || w < 1 || h < 1 || w > 8192 || h > 8192)
-        throw Error(fmt::format("--size '{}' is not WIDTHxHEIGHT (1..8192 each)", o.size));
+    const auto [w, h] = parseSize(o.size, "--size", 8192);
     deferred::AdaptiveParams p;
     p.shading.stall = o.stall;
     for (const auto& text : o.params) {
@@ -88,7 +76,7 @@ void run(const DeferredOptions& o) {
                a.shadedPercent());
     if (ref) {
         io::writePng((dir / "reference.png").string(), deferred::toRgba8(ref->image).view());
-        io::writePng((dir / "error.png").string(), eval::heatMap(absError(a.image, ref->image).view(), 0.0f, 0.05f).view());
+        io::writePng((dir / "error.png").string(), eval::heatMap(deferred::absoluteError(a.image, ref->image).view(), 0.0f, 0.05f).view());
         const double mse = deferred::mse(a.image, ref->image);
         fmt::print("; reference {:.1f} ms; MSE {:.3g} (x1e-5: {:.2f}), PSNR {:.2f} dB", ref->restMs, mse, mse * 1e5,
                    10.0 * std::log10(1.0 / std::max(mse, 1e-20)));

@@ -310,12 +310,7 @@ void addDeferred(CLI::App& eval) {
     cmd->add_option("--device", o->device, "Vulkan device for the G-buffer");
     cmd->add_option("--threads", *threads, "Worker threads (0 = all)")->check(CLI::Range(0, 1024));
     cmd->callback([o, threads, size] {
-        int w = 0, h = 0;
-        char x = 0;
-        if (std::sscanf(size->c_str(), "%d%c%d", &w, &x, &h) != 3 || x != 'x' || w < 1 || h < 1 || w > 8192 || h > 8192)
-            throw Error(fmt::format("--size '{}' is not WIDTHxHEIGHT", *size));
-        o->width = w;
-        o->height = h;
+        std::tie(o->width, o->height) = parseSize(*size, "--size", 8192);
         o->exec = Exec{*threads};
         o->progress = progressLine;
         fmt::print("{}", eval::runDeferredExperiment(*o));

@@ -22,14 +22,6 @@ struct RenderOptions {
     bool listViews = false, listDevices = false, validation = false, aaSet = false;
 };
 
-std::pair<int, int> parseSize(const std::string& text) {
-    int w = 0, h = 0;
-    char x = 0, extra = 0;
-    if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || x != 'x' || w < 1 || h < 1 || w > 16384 || h > 16384)
-        throw Error(fmt::format("--size '{}' is not WIDTHxHEIGHT (1..16384 each)", text));
-    return {w, h};
-}
-
 ao::DepthFormat parseDepthFormat(const std::string& f) {
     if (f == "d16") return ao::DepthFormat::D16;
     if (f == "d24") return ao::DepthFormat::D24;

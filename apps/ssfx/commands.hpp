@@ -10,6 +10,8 @@ namespace ssfx::cli {
 
 //! Parses NAME=VALUE (VALUE a number, true or false) of -p options; throws ssfx::Error.
 std::pair<std::string, double> parseParam(const std::string& text);
+//! Parses WIDTHxHEIGHT with both in [1, maxSide]; throws ssfx::Error naming `option`.
+std::pair<int, int> parseSize(const std::string& text, const std::string& option = "--size", int maxSide = 16384);
 
 void addAaCommand(CLI::App& app);
 void addMethodsCommand(CLI::App& app);

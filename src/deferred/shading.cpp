@@ -31,6 +31,17 @@ double mse(const ImageRgbF& a, const ImageRgbF& b) {
     return a.pixels.empty() ? 0.0 : sum / (3.0 * double(a.pixels.size()));
 }
 
+ImageF absoluteError(const ImageRgbF& a, const ImageRgbF& b) {
+    if (a.width != b.width || a.height != b.height)
+        throw Error(fmt::format("absoluteError: sizes {}x{} and {}x{} differ", a.width, a.height, b.width, b.height));
+    ImageF e(a.width, a.height);
+    for (std::size_t i = 0; i < a.pixels.size(); ++i) {
+        const glm::vec3 d = glm::abs(glm::clamp(a.pixels[i], 0.0f, 1.0f) - glm::clamp(b.pixels[i], 0.0f, 1.0f));
+        e.data()[i] = (d.r + d.g + d.b) / 3.0f;
+    }
+    return e;
+}
+
 void validate(const ShadingParams& p) {
     if (!(p.specular >= 0.0f && p.specular <= 1.0f)) throw Error(fmt::format("shading: specular {} is not in [0, 1]", p.specular));
     if (!(p.shininess >= 1.0f && p.shininess <= 10000.0f))

@@ -33,15 +33,6 @@ ImageF toFloat(const Image<std::uint8_t>& k) {
     return f;
 }
 
-ImageF absError(const deferred::ImageRgbF& a, const deferred::ImageRgbF& b) {
-    ImageF e(a.width, a.height);
-    for (std::size_t i = 0; i < a.pixels.size(); ++i) {
-        const glm::vec3 d = glm::abs(glm::clamp(a.pixels[i], 0.0f, 1.0f) - glm::clamp(b.pixels[i], 0.0f, 1.0f));
-        e.data()[i] = (d.r + d.g + d.b) / 3.0f;
-    }
-    return e;
-}
-
 }  // namespace
 
 std::string runDeferredExperiment(const DeferredExperimentOptions& o) {
@@ -124,7 +115,7 @@ std::string runDeferredExperiment(const DeferredExperimentOptions& o) {
         const auto stem = [&](const char* what) { return (out / "images" / fmt::format("deferred_m{}_{}.png", m, what)).string(); };
         io::writePng(stem("ours"), deferred::toRgba8(ours.image).view());
         io::writePng(stem("samples"), heatMap(toFloat(ours.samples).view(), 1.0f, n).view());
-        io::writePng(stem("error"), heatMap(absError(ours.image, ref.image).view(), 0.0f, 0.05f).view());
+        io::writePng(stem("error"), heatMap(deferred::absoluteError(ours.image, ref.image).view(), 0.0f, 0.05f).view());
         io::writePng(stem("k_depth"), heatMap(ours.kDepth.view(), 0.0f, n).view());
         io::writePng(stem("k_normal"), heatMap(ours.kNormal.view(), 0.0f, n).view());
         io::writePng(stem("k_shading"), heatMap(ours.kShading.view(), 0.0f, n).view());

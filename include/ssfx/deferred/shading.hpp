@@ -29,6 +29,8 @@ struct ImageRgbF {
 ImageRgba8 toRgba8(const ImageRgbF& image);
 //! Mean over pixels and the three channels of the squared difference of values clamped to [0, 1].
 double mse(const ImageRgbF& a, const ImageRgbF& b);
+//! Per pixel, the mean over the three channels of |a - b| (values clamped to [0, 1]).
+ImageF absoluteError(const ImageRgbF& a, const ImageRgbF& b);
 
 struct ShadingParams {
     float specular = 0.25f;   //!< [0, 1]: Blinn-Phong specular colour (white, times the light)
