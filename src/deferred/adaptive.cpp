@@ -143,30 +143,59 @@ DeferredResult adaptiveSupersampling(const render::Scene& scene, const render::G
     r.evaluateMs = msSince(t0);
 
     // ShadeRestAdaptively: k - 1 more samples in dither order, each standing for 1/k of the pixel.
-    t0 = std::chrono::steady_clock::now();
-    parallelRows(h, exec, [&](int y0, int y1) {
-        for (int y = y0; y < y1; ++y) {
-            std::int64_t shaded = w;  // the first samples
-            for (int x = 0; x < w; ++x) {
-                const int k = r.samples(x, y);
-                if (k == 1) {
-                    r.image(x, y) = first(x, y);
-                    continue;
-                }
-                const float footprint = 1.0f / std::sqrt(float(k));
-                const int fx = m * x + order[0][0], fy = m * y + order[0][1];
-                glm::vec3 sum = first(x, y);
-                if (shader.textured(fx, fy)) {
-                    sum = shader.shade(fx, fy, footprint);  // its albedo depends on the footprint
-                    ++shaded;
-                }
-                for (int s = 1; s < k; ++s) sum += shader.shade(m * x + order[std::size_t(s)][0], m * y + order[std::size_t(s)][1], footprint);
-                shaded += k - 1;
-                r.image(x, y) = sum / float(k);
-            }
-            rowShaded[std::size_t(y)] = shaded;
+    // Returns the samples shaded beyond the first.
+    auto shadePixel = [&](int x, int y) -> std::int64_t {
+        const int k = r.samples(x, y);
+        if (k == 1) {
+            r.image(x, y) = first(x, y);
+            return 0;
         }
-    });
+        std::int64_t shaded = k - 1;
+        const float footprint = 1.0f / std::sqrt(float(k));
+        const int fx = m * x + order[0][0], fy = m * y + order[0][1];
+        glm::vec3 sum = first(x, y);
+        if (shader.textured(fx, fy)) {
+            sum = shader.shade(fx, fy, footprint);  // its albedo depends on the footprint
+            ++shaded;
+        }
+        for (int s = 1; s < k; ++s) sum += shader.shade(m * x + order[std::size_t(s)][0], m * y + order[std::size_t(s)][1], footprint);
+        r.image(x, y) = sum / float(k);
+        return shaded;
+    };
+    t0 = std::chrono::steady_clock::now();
+    if (!p.tiled) {
+        parallelRows(h, exec, [&](int y0, int y1) {
+            for (int y = y0; y < y1; ++y) {
+                std::int64_t shaded = w;  // the first samples
+                for (int x = 0; x < w; ++x) shaded += shadePixel(x, y);
+                rowShaded[std::size_t(y)] = shaded;
+            }
+        });
+    } else {
+        // The paper's future work: per tile, the pixels grouped by sample count (a counting
+        // sort), then shaded group by group. Same pixels, same samples, another order.
+        constexpr int kTile = 8;
+        const int tilesX = (w + kTile - 1) / kTile, tilesY = (h + kTile - 1) / kTile;
+        parallelRows(tilesY, exec, [&](int t0y, int t1y) {
+            std::vector<std::array<int, 2>> sorted(kTile * kTile);
+            std::vector<int> start(std::size_t(n) + 2);
+            for (int ty = t0y; ty < t1y; ++ty) {
+                const int y0 = ty * kTile, y1 = std::min(h, y0 + kTile);
+                std::int64_t shaded = std::int64_t(w) * (y1 - y0);
+                for (int tx = 0; tx < tilesX; ++tx) {
+                    const int x0 = tx * kTile, x1 = std::min(w, x0 + kTile);
+                    std::fill(start.begin(), start.end(), 0);
+                    for (int y = y0; y < y1; ++y)
+                        for (int x = x0; x < x1; ++x) ++start[std::size_t(r.samples(x, y)) + 1];
+                    for (std::size_t k = 1; k < start.size(); ++k) start[k] += start[k - 1];
+                    for (int y = y0; y < y1; ++y)
+                        for (int x = x0; x < x1; ++x) sorted[std::size_t(start[r.samples(x, y)]++)] = {x, y};
+                    for (int i = 0; i < (x1 - x0) * (y1 - y0); ++i) shaded += shadePixel(sorted[std::size_t(i)][0], sorted[std::size_t(i)][1]);
+                }
+                for (int y = y0; y < y1; ++y) rowShaded[std::size_t(y)] = y == y0 ? shaded : 0;
+            }
+        });
+    }
     r.restMs = msSince(t0);
     for (auto s : rowShaded) r.shaded += s;
     return r;

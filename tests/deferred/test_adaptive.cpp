@@ -183,6 +183,12 @@ TEST_F(RenderTest, AdaptiveOnARenderedGBufferIsCloseToTheReferenceWithFewerSampl
     EXPECT_GT(psnr, 35.0);
     EXPECT_LT(a1.shadedPercent(), 75.0);
     EXPECT_GT(a1.shadedPercent(), 100.0 / 16.0);
+    // The tile-grouped order gives the same image and count.
+    AdaptiveParams tiled = p;
+    tiled.tiled = true;
+    const auto t = adaptiveSupersampling(scene, g, tiled, Exec{2});
+    EXPECT_EQ(t.image, a1.image);
+    EXPECT_EQ(t.shaded, a1.shaded);
     // Stall changes the cost, not the result.
     AdaptiveParams stalled = p;
     stalled.shading.stall = 50;
