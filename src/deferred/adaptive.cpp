@@ -99,7 +99,6 @@ DeferredResult adaptiveSupersampling(const render::Scene& scene, const render::G
     r.kNormal = ImageF(w, h);
     r.kShading = ImageF(w, h);
     r.possible = std::int64_t(w) * h * n;
-    std::vector<std::int64_t> rowShaded(std::size_t(h), 0);
 
     // ShadeFirstSample: dither index 0 of every window, standing for the whole pixel.
     auto t0 = std::chrono::steady_clock::now();
@@ -164,6 +163,7 @@ DeferredResult adaptiveSupersampling(const render::Scene& scene, const render::G
     };
     t0 = std::chrono::steady_clock::now();
     if (!p.tiled) {
+        std::vector<std::int64_t> rowShaded(std::size_t(h), 0);
         parallelRows(h, exec, [&](int y0, int y1) {
             for (int y = y0; y < y1; ++y) {
                 std::int64_t shaded = w;  // the first samples
@@ -171,11 +171,13 @@ DeferredResult adaptiveSupersampling(const render::Scene& scene, const render::G
                 rowShaded[std::size_t(y)] = shaded;
             }
         });
+        for (auto s : rowShaded) r.shaded += s;
     } else {
         // The paper's future work: per tile, the pixels grouped by sample count (a counting
         // sort), then shaded group by group. Same pixels, same samples, another order.
         constexpr int kTile = 8;
         const int tilesX = (w + kTile - 1) / kTile, tilesY = (h + kTile - 1) / kTile;
+        std::vector<std::int64_t> bandShaded(std::size_t(tilesY), 0);
         parallelRows(tilesY, exec, [&](int t0y, int t1y) {
             std::vector<std::array<int, 2>> sorted(kTile * kTile);
             std::vector<int> start(std::size_t(n) + 2);
@@ -192,12 +194,12 @@ DeferredResult adaptiveSupersampling(const render::Scene& scene, const render::G
                         for (int x = x0; x < x1; ++x) sorted[std::size_t(start[r.samples(x, y)]++)] = {x, y};
                     for (int i = 0; i < (x1 - x0) * (y1 - y0); ++i) shaded += shadePixel(sorted[std::size_t(i)][0], sorted[std::size_t(i)][1]);
                 }
-                for (int y = y0; y < y1; ++y) rowShaded[std::size_t(y)] = y == y0 ? shaded : 0;
+                bandShaded[std::size_t(ty)] = shaded;
             }
         });
+        for (auto b : bandShaded) r.shaded += b;
     }
     r.restMs = msSince(t0);
-    for (auto s : rowShaded) r.shaded += s;
     return r;
 }
 

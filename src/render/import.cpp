@@ -79,9 +79,8 @@ Scene importModel(const std::string& path, double scale) {
         Material mat;
         aiString name;
         if (m->Get(AI_MATKEY_NAME, name) == AI_SUCCESS) mat.name = name.C_Str();
-        aiColor3D diffuse(0.8f, 0.8f, 0.8f);
-        m->Get(AI_MATKEY_COLOR_DIFFUSE, diffuse);
-        mat.diffuse = {diffuse.r, diffuse.g, diffuse.b};
+        aiColor3D diffuse;
+        const bool hasDiffuse = m->Get(AI_MATKEY_COLOR_DIFFUSE, diffuse) == AI_SUCCESS;
         aiString tex;
         if (m->GetTextureCount(aiTextureType_DIFFUSE) > 0 && m->GetTexture(aiTextureType_DIFFUSE, 0, &tex) == AI_SUCCESS) {
             const std::string texName = tex.C_Str();
@@ -106,9 +105,9 @@ Scene importModel(const std::string& path, double scale) {
                 found = layerOf.emplace(texName, addTextureLayer(s.textures, img)).first;
             }
             mat.textureLayer = found->second;
-            mat.diffuse = glm::vec3(1.0f);  // OBJ's Kd defaults multiply the texture; use the texture as is
-            if (m->Get(AI_MATKEY_COLOR_DIFFUSE, diffuse) == AI_SUCCESS) mat.diffuse = {diffuse.r, diffuse.g, diffuse.b};
         }
+        // The file's diffuse colour; without one 0.8, or 1 for a textured material (the texture as is).
+        mat.diffuse = hasDiffuse ? glm::vec3(diffuse.r, diffuse.g, diffuse.b) : glm::vec3(mat.textureLayer >= 0 ? 1.0f : 0.8f);
         s.materials.push_back(mat);
     }
     if (s.materials.empty()) s.materials.push_back({"default", glm::vec3(0.8f), -1});

@@ -157,8 +157,9 @@ struct Renderer::Impl {
     // Uploads the scene's texture array (a 1x1 white layer when it has none).
     vkx::Image uploadTextures(const TextureArray& t) {
         TextureArray white;
+        white.size = 1;
+        white.layers.push_back({ImageRgba8(1, 1, Rgba8{255, 255, 255, 255})});
         const TextureArray& tex = t.layers.empty() ? white : t;
-        if (t.layers.empty()) white.layers.push_back({ImageRgba8(1, 1, Rgba8{255, 255, 255, 255})}), white.size = 1;
         const auto layers = std::uint32_t(tex.layers.size()), levels = std::uint32_t(tex.levelCount());
         vk::DeviceSize total = 0;
         for (std::uint32_t l = 0; l < levels; ++l) total += vk::DeviceSize(tex.layers[0][l].pixelCount()) * 4 * layers;
@@ -344,16 +345,8 @@ auto guarded(const char* what, F&& f) {
 
 std::vector<DeviceInfo> listDevices() {
     return guarded("listing devices", [] {
-        vk::raii::Context context = [] {
-            try {
-                return vk::raii::Context();
-            } catch (const std::runtime_error& e) {
-                throw Error(fmt::format("no Vulkan loader ({}); install libvulkan1", e.what()));
-            }
-        }();
-        const vk::ApplicationInfo app("ssfx", 1, "ssfx", 1, VK_API_VERSION_1_3);
-        vk::raii::Instance instance(context, vk::InstanceCreateInfo({}, &app));
-        return vkx::enumerateDevices(instance);
+        const vk::raii::Context context = vkx::makeContext();
+        return vkx::enumerateDevices(vkx::makeInstance(context, false));
     });
 }
 

@@ -58,6 +58,8 @@ std::string lower(std::string s) {
     return s;
 }
 
+}  // namespace
+
 vk::raii::Context makeContext() {
     try {
         return vk::raii::Context();
@@ -89,8 +91,6 @@ vk::raii::Instance makeInstance(const vk::raii::Context& context, bool validatio
                                 "(mesa-vulkan-drivers)?", e.what()));
     }
 }
-
-}  // namespace
 
 std::vector<DeviceInfo> enumerateDevices(const vk::raii::Instance& instance) {
     std::vector<DeviceInfo> out;

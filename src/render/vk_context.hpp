@@ -69,6 +69,10 @@ void transition(const vk::raii::CommandBuffer& cmd, const Image& image, vk::Imag
                 vk::PipelineStageFlags srcStage, vk::AccessFlags srcAccess, vk::PipelineStageFlags dstStage,
                 vk::AccessFlags dstAccess);
 
+//! The loader (ssfx::Error naming what to install when there is none).
+vk::raii::Context makeContext();
+//! A Vulkan 1.3 instance, with the Khronos validation layer and debug utils when asked.
+vk::raii::Instance makeInstance(const vk::raii::Context& context, bool validation);
 std::vector<DeviceInfo> enumerateDevices(const vk::raii::Instance& instance);
 
 }  // namespace ssfx::render::vkx
