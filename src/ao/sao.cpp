@@ -146,26 +146,39 @@ std::vector<Vec3> faceNormals(ImageView<const float> z, const Projection& proj, 
     return out;
 }
 
-void quadBilateral(ImageF& a, ImageView<const float> z, Region region, float threshold) {
+void quadBilateral(ImageF& a, ImageView<const float> z, Region region, float threshold, const Exec& exec) {
     // A GPU does this with derivatives inside each 2x2 quad: A -= dFdx(A) * ((x & 1) - 0.5)
     // where |dFdx(z)| < threshold, then the same in y on the result: the average of the
-    // pair. Pairs with a partner outside the region are left alone.
-    thread_local ImageF in;  // the values before this step (reused across calls)
-    auto pass = [&](bool horizontal) {
-        if (in.width() != a.width() || in.height() != a.height()) in = ImageF(a.width(), a.height());
-        std::copy(a.pixels().begin(), a.pixels().end(), in.data());
-        for (int j = 0; j < region.height; ++j)
-            for (int i = 0; i < region.width; ++i) {
-                const int x = region.x0 + i, y = region.y0 + j;
-                const int px = horizontal ? x ^ 1 : x, py = horizontal ? y : y ^ 1;
-                const int pi = px - region.x0, pj = py - region.y0;
-                if (pi < 0 || pj < 0 || pi >= region.width || pj >= region.height) continue;
-                if (!(std::fabs(z(px, py) - z(x, y)) < threshold)) continue;  // also sky (NaN, inf)
-                a(i, j) = (in(i, j) + in(pi, pj)) * 0.5f;
+    // pair. Pairs with a partner outside the region are left alone. Both members of a pair
+    // get the same value (a + b == b + a), and pairs are disjoint, so it runs in place; a
+    // row pair depends on nothing outside it, so row pairs run in parallel.
+    if (region.width <= 0 || region.height <= 0) return;
+    const int yEnd = region.y0 + region.height, xEnd = region.x0 + region.width;
+    auto near = [&](float za, float zb) { return std::fabs(za - zb) < threshold; };  // false for sky (NaN, inf)
+    auto horizontalPass = [&](int y) {
+        float* row = &a(0, y - region.y0);
+        for (int x = std::max(region.x0, (region.x0 + 1) & ~1); x + 1 < xEnd; x += 2)
+            if (near(z(x, y), z(x + 1, y))) {
+                const int i = x - region.x0;
+                row[i] = row[i + 1] = (row[i] + row[i + 1]) * 0.5f;
             }
     };
-    pass(true);
-    pass(false);
+    const int firstPair = region.y0 >> 1, pairs = ((yEnd - 1) >> 1) - firstPair + 1;
+    parallelRows(pairs, exec, [&](int q0, int q1) {
+        for (int q = q0; q < q1; ++q) {
+            const int y0 = 2 * (firstPair + q), y1 = y0 + 1;
+            const bool has0 = y0 >= region.y0, has1 = y1 < yEnd;
+            if (has0) horizontalPass(y0);
+            if (has1) horizontalPass(y1);
+            if (!has0 || !has1) continue;  // the partner row is outside the region
+            float* __restrict r0 = &a(0, y0 - region.y0);
+            float* __restrict r1 = &a(0, y1 - region.y0);
+            const float* z0 = &z(region.x0, y0);
+            const float* z1 = &z(region.x0, y1);
+            for (int i = 0; i < region.width; ++i)
+                if (near(z0[i], z1[i])) r0[i] = r1[i] = (r0[i] + r1[i]) * 0.5f;
+        }
+    });
 }
 
 ImageF bilateralPass(const ImageF& a, ImageView<const float> z, Region region, const BlurParams& p, bool horizontal,
@@ -183,35 +196,27 @@ void bilateralPass(const ImageF& a, ImageView<const float> z, Region region, con
         gauss[std::size_t(t)] = std::exp(-float(t * t) / (2.0f * p.blurSigma * p.blurSigma));
     if (out.width() != region.width || out.height() != region.height) out = ImageF(region.width, region.height);
     const int W = region.width, R = p.blurRadius, S = p.blurStride;
-    // Taps of pixel i are i + t S for t = -R..R, clamped to the region. The loop runs tap by
-    // tap over a whole row (each pixel still sums its taps in t order, so the result is the
-    // per-pixel formula's), which the compiler vectorises; in the horizontal pass the
-    // pixels within R S of the row's ends clamp and take the per-pixel loop.
+    // Taps of pixel i are i + t S for t = -R..R, clamped to the region. A row goes to the
+    // vector kernel (bilateral_simd-inl.h: each pixel sums its taps in t order, the same
+    // float operations as the per-pixel loop below); in the horizontal pass the pixels
+    // within R S of the row's ends clamp and take the per-pixel loop.
     parallelRows(region.height, exec, [&](int r0, int r1) {
-        thread_local std::vector<float> sum, wsum;
-        sum.assign(std::size_t(W), 0.0f);
-        wsum.assign(std::size_t(W), 0.0f);
+        detail::BilateralRowInput row{};
+        row.taps = 2 * R + 1;
+        row.edgeSharpness = p.edgeSharpness;
+        for (int t = -R; t <= R; ++t) row.gauss[t + R] = gauss[std::size_t(std::abs(t))];
         for (int j = r0; j < r1; ++j) {
             const float* zc = &z(region.x0, region.y0 + j);
             const int lo = horizontal ? std::min(W, R * S) : 0, hi = horizontal ? std::max(lo, W - R * S) : W;
-            std::fill(sum.begin(), sum.end(), 0.0f);
-            std::fill(wsum.begin(), wsum.end(), 0.0f);
-            float* __restrict sp = sum.data();
-            float* __restrict wp = wsum.data();
+            row.zCentre = zc;
             for (int t = -R; t <= R; ++t) {
-                const float g = gauss[std::size_t(std::abs(t))];
                 const int tj = horizontal ? j : std::clamp(j + t * S, 0, region.height - 1);
                 const int shift = horizontal ? t * S : 0;
-                const float* zt = &z(region.x0, region.y0 + tj) + shift;
-                const float* at = &a(0, tj) + shift;
-                for (int i = lo; i < hi; ++i) {
-                    const float w = g * std::max(0.0f, 1.0f - p.edgeSharpness * std::fabs(zt[i] - zc[i]));
-                    sp[i] += w * at[i];
-                    wp[i] += w;
-                }
+                row.zTap[t + R] = &z(region.x0, region.y0 + tj) + shift;
+                row.aTap[t + R] = &a(0, tj) + shift;
             }
             float* o = &out(0, j);
-            for (int i = lo; i < hi; ++i) o[i] = std::isinf(zc[i]) ? 1.0f : sp[i] / wp[i];
+            detail::bilateralRowSimd(row, lo, hi, o);
             // The clamped ends of a horizontal row, pixel by pixel.
             for (int i = 0; i < W; ++i) {
                 if (i == lo) i = std::max(i, hi);
@@ -270,7 +275,7 @@ ImageF saoImpl(ImageView<const float> depth, const Camera& camera, const SaoPara
     const Region out{g, g, depth.width() - 2 * g, depth.height() - 2 * g};
     const Region work = detail::quadAligned(out, depth.width(), depth.height());
     samplePassImpl(ws.pyr, proj, work, p, exec, vector, ws.a);
-    quadBilateral(ws.a, z.view(), work, p.quadThreshold);
+    quadBilateral(ws.a, z.view(), work, p.quadThreshold, exec);
     const auto t3 = Clock::now();
     ImageView<const float> zBlur = z.view();
     if (p.packBlurInput) {

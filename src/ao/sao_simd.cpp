@@ -1,4 +1,5 @@
-// Runtime dispatch of the vector AO sample pass (see sao_simd-inl.h).
+// Runtime dispatch of the vector AO kernels: the sample pass (sao_simd-inl.h) and a row of
+// the bilateral blur (bilateral_simd-inl.h).
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "src/ao/sao_simd-inl.h"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
@@ -9,6 +10,10 @@
 #if HWY_ONCE
 namespace ssfx::ao::detail {
 HWY_EXPORT(SampleRowSimd);
+HWY_EXPORT(BilateralRowSimd);
+void bilateralRowSimd(const BilateralRowInput& in, int lo, int hi, float* out) {
+    HWY_DYNAMIC_DISPATCH(BilateralRowSimd)(in, lo, hi, out);
+}
 int sampleRowSimd(const SimdSampleInput& in, int y, int x0, int x1, float* out) {
     return HWY_DYNAMIC_DISPATCH(SampleRowSimd)(in, y, x0, x1, out);
 }

@@ -21,6 +21,21 @@ struct SimdSampleInput {
     float r2, bias, beta, epsilon, scale;
 };
 
+//! One output row of a bilateral blur pass (bilateral_simd-inl.h): tap t of pixel i reads
+//! zTap[t][i] and aTap[t][i] (row pointers already moved by the tap's offset).
+struct BilateralRowInput {
+    static constexpr int kMaxTaps = 17;  //!< 2 blurRadius + 1, blurRadius <= 8
+    int taps;
+    const float* zCentre;
+    const float* zTap[kMaxTaps];
+    const float* aTap[kMaxTaps];
+    float gauss[kMaxTaps];               //!< Gaussian weight of each tap
+    float edgeSharpness;                 //!< k of max(0, 1 - k |dz|)
+};
+
+//! out[i] for i in [lo, hi) of one bilateral row; 1 where zCentre[i] is infinite.
+void bilateralRowSimd(const BilateralRowInput& in, int lo, int hi, float* out);
+
 //! Pixels [x0, x1) of buffer row y into out[0 ..); A before the intensity exponent.
 //! Returns the first x it left to the scalar loop.
 int sampleRowSimd(const SimdSampleInput& in, int y, int x0, int x1, float* out);

@@ -338,3 +338,86 @@ TEST(Sao, PackedBlurInputByHandAndItsEffect) {
     EXPECT_GT(mx, 0.0);
     EXPECT_LT(mx, 0.02);
 }
+
+namespace {
+
+// A random AO image over `r` and a z buffer with a few depth steps and sky pixels.
+struct BlurInput {
+    ImageF a, z;
+};
+BlurInput blurInput(int w, int h, Region r, unsigned seed) {
+    BlurInput in{ImageF(r.width, r.height), ImageF(w, h)};
+    unsigned s = seed;
+    auto next = [&] { return (s = s * 1664525u + 1013904223u) >> 8; };
+    for (std::int64_t i = 0; i < in.a.pixelCount(); ++i) in.a.data()[i] = float(next() % 1000) / 999.0f;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const unsigned k = next() % 100;
+            in.z(x, y) = k < 5 ? -HUGE_VALF : (k < 30 ? -2.0f - float(x) * 1e-3f : -2.0004f - float(k) * 1e-4f);
+        }
+    return in;
+}
+
+}  // namespace
+
+TEST(Sao, BlurPassIsThePerPixelFormula) {
+    // The per-pixel definition of section 2.4 as the spec states it (taps i + t S clamped to
+    // the region, weights g_t max(0, 1 - k |dz|), sky = 1), written out here; the pass (a
+    // vector kernel plus a per-pixel loop at the clamped ends) must give the same bits: it
+    // does the same float operations in the same order.
+    const int w = 75, h = 41;
+    const Region r{3, 2, 67, 37};
+    const BlurInput in = blurInput(w, h, r, 7);
+    for (float k : {0.0f, 300.0f, 2048.0f})
+        for (int radius : {0, 1, 3, 8})
+            for (bool horizontal : {true, false}) {
+                BlurParams p;
+                p.blurRadius = radius;
+                p.blurStride = radius == 8 ? 5 : 3;
+                p.edgeSharpness = k;
+                const ImageF out = bilateralPass(in.a, in.z.view(), r, p, horizontal, Exec{2});
+                for (int j = 0; j < r.height; ++j)
+                    for (int i = 0; i < r.width; ++i) {
+                        const float zc = in.z(r.x0 + i, r.y0 + j);
+                        float s = 0.0f, ws = 0.0f;
+                        for (int t = -radius; t <= radius; ++t) {
+                            const int ti = horizontal ? std::clamp(i + t * p.blurStride, 0, r.width - 1) : i;
+                            const int tj = horizontal ? j : std::clamp(j + t * p.blurStride, 0, r.height - 1);
+                            const float g = std::exp(-float(t * t) / (2.0f * p.blurSigma * p.blurSigma));
+                            const float wt = g * std::max(0.0f, 1.0f - k * std::fabs(in.z(r.x0 + ti, r.y0 + tj) - zc));
+                            s += wt * in.a(ti, tj);
+                            ws += wt;
+                        }
+                        const float expect = std::isinf(zc) ? 1.0f : s / ws;
+                        ASSERT_EQ(out(i, j), expect) << "pixel " << i << "," << j << " radius " << radius << " k "
+                                                      << k << (horizontal ? " horizontal" : " vertical");
+                    }
+            }
+}
+
+TEST(Sao, QuadBilateralAveragesPairsOfTheBufferGrid) {
+    // The 2x2 quad step as written in the spec (pairs x ^ 1, then y ^ 1 on the result, each
+    // from a copy; partners outside the region left alone), against the in-place parallel
+    // pass, for regions starting on even and odd buffer coordinates and odd sizes.
+    const int w = 40, h = 31;
+    for (const Region r : {Region{0, 0, 40, 31}, Region{3, 1, 33, 27}, Region{2, 5, 36, 20}, Region{1, 0, 1, 1}}) {
+        BlurInput in = blurInput(w, h, r, 11);
+        ImageF expect = in.a;
+        for (bool horizontal : {true, false}) {
+            const ImageF before = expect;
+            for (int j = 0; j < r.height; ++j)
+                for (int i = 0; i < r.width; ++i) {
+                    const int x = r.x0 + i, y = r.y0 + j;
+                    const int px = horizontal ? x ^ 1 : x, py = horizontal ? y : y ^ 1;
+                    const int pi = px - r.x0, pj = py - r.y0;
+                    if (pi < 0 || pj < 0 || pi >= r.width || pj >= r.height) continue;
+                    if (std::fabs(in.z(px, py) - in.z(x, y)) < 0.01f)
+                        expect(i, j) = (before(i, j) + before(pi, pj)) * 0.5f;
+                }
+        }
+        quadBilateral(in.a, in.z.view(), r, 0.01f, Exec{3});
+        EXPECT_EQ(in.a, expect) << r.x0 << "," << r.y0 << " " << r.width << "x" << r.height;
+        if (r.width > 1) EXPECT_NE(in.a, blurInput(w, h, r, 11).a);  // it did average something
+        else EXPECT_EQ(in.a, blurInput(w, h, r, 11).a);              // a lone pixel has no partner
+    }
+}

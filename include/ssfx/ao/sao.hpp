@@ -89,8 +89,9 @@ ImageF saoSamplePass(const std::vector<ImageF>& pyramid, const Projection& proj,
 std::vector<Vec3> faceNormals(ImageView<const float> z, const Projection& proj, const Exec& exec = {});
 
 //! The 2x2 quad bilateral (end of section 2.3): within each 2x2 quad of the *buffer* grid,
-//! where |dz| < threshold, A is averaged over the pair in x, then in y. In place.
-void quadBilateral(ImageF& a, ImageView<const float> z, Region region, float threshold);
+//! where |dz| < threshold, A is averaged over the pair in x, then in y. In place; `a` covers
+//! the region, `z` the buffer.
+void quadBilateral(ImageF& a, ImageView<const float> z, Region region, float threshold, const Exec& exec = {});
 
 //! One separable bilateral pass (horizontal or vertical) over the region; taps are clamped
 //! to the region, sky pixels stay 1 and do not contribute.
