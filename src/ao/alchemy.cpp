@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <utility>
 
 #include "ao_sampling.hpp"
 #include "ssfx/core/error.hpp"
@@ -60,13 +61,16 @@ void setParam(AlchemyParams& p, const std::string& name, double v) {
 namespace {
 ImageF alchemyImpl(ImageView<const float> depth, const Camera& camera, const AlchemyParams& p, const Exec& exec,
                    bool vector);
-ImageF samplePassImpl(ImageView<const float> z, const Projection& proj, Region region, const AlchemyParams& p,
+ImageF samplePassImpl(const detail::FlatPyramid& z, const Projection& proj, Region region, const AlchemyParams& p,
                       const Exec& exec, bool vector);
 }  // namespace
 
 ImageF alchemySamplePass(ImageView<const float> z, const Projection& proj, Region region, const AlchemyParams& p,
                          const Exec& exec) {
-    return samplePassImpl(z, proj, region, p, exec, true);
+    thread_local detail::FlatPyramid level0;
+    level0.shape(z.width(), z.height(), 0);
+    for (int y = 0; y < z.height(); ++y) std::copy(z.row(y), z.row(y) + z.width(), level0.level(0).row(y));
+    return samplePassImpl(level0, proj, region, p, exec, true);
 }
 
 ImageF alchemyReference(ImageView<const float> depth, const Camera& camera, const AlchemyParams& p) {
@@ -78,11 +82,9 @@ ImageF alchemy(ImageView<const float> depth, const Camera& camera, const Alchemy
 }
 
 namespace {
-ImageF samplePassImpl(ImageView<const float> z, const Projection& proj, Region region, const AlchemyParams& p,
+ImageF samplePassImpl(const detail::FlatPyramid& level0, const Projection& proj, Region region, const AlchemyParams& p,
                       const Exec& exec, bool vector) {
     validate(p);
-    std::vector<ImageF> level0;
-    level0.push_back(ImageF::copyOf(z));
     const AlchemyEstimator est{p.beta, p.epsilon, 2.0f * p.sigma / float(p.numSamples), p.k};
     const detail::SampleSetup setup{p.numSamples, p.numSpiralTurns, 0, 0, p.radius, false, vector};
     ImageF out;
@@ -98,11 +100,15 @@ ImageF alchemyImpl(ImageView<const float> depth, const Camera& camera, const Alc
         throw Error(fmt::format("alchemy: a {}x{} depth buffer has no pixels inside a guard band of {}", depth.width(),
                                 depth.height(), g));
     const Projection proj = projection(camera, depth.width(), depth.height());
-    const ImageF z = depthToZ(depth, camera, exec);
+    // z written straight into the buffer the sample pass gathers from (kept per thread).
+    thread_local detail::FlatPyramid level0;
+    level0.shape(depth.width(), depth.height(), 0);
+    depthToZ(depth, camera, level0.level(0), exec);
+    const ImageView<const float> z = std::as_const(level0).level(0);
     const Region out{g, g, depth.width() - 2 * g, depth.height() - 2 * g};
-    const ImageF a = samplePassImpl(z.view(), proj, out, p, exec, vector);
-    const ImageF h = bilateralPass(a, z.view(), out, p.blur, true, exec);
-    return bilateralPass(h, z.view(), out, p.blur, false, exec);
+    const ImageF a = samplePassImpl(level0, proj, out, p, exec, vector);
+    const ImageF h = bilateralPass(a, z, out, p.blur, true, exec);
+    return bilateralPass(h, z, out, p.blur, false, exec);
 }
 }  // namespace
 

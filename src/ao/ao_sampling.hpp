@@ -55,25 +55,26 @@ struct SampleSetup {
 inline int findMsb(int n) { return n <= 0 ? -1 : int(std::bit_width(unsigned(n))) - 1; }
 
 // Per-column and per-row factors of the position reconstruction (paper eq. 3):
-// C = (z * fx[x], z * fy[y], z) at pixel centres, so a tap costs two multiplications.
+// C = (z * fx(x), z * fy(y), z) at pixel centres, with fx and fy affine in the pixel index
+// (fx(x) = (1 - 2 (x + 0.5) / w) / P00 = ax + bx x, likewise fy), evaluated in float as
+// ax + bx * x everywhere: the tables, taps beyond the buffer and the vector kernel's taps
+// (two operations instead of a division) all give the same bits.
 struct PositionTables {
+    float ax, bx, ay, by;
     std::vector<float> fx, fy;
-    const Projection* proj;
-    PositionTables(const Projection& p) : fx(std::size_t(p.width)), fy(std::size_t(p.height)), proj(&p) {
-        for (int x = 0; x < p.width; ++x)
-            fx[std::size_t(x)] = 1.0f / p.p00 * (1.0f - 2.0f * (float(x) + 0.5f) / float(p.width));
-        for (int y = 0; y < p.height; ++y)
-            fy[std::size_t(y)] = 1.0f / p.p11 * (2.0f * (float(y) + 0.5f) / float(p.height) - 1.0f);
+    PositionTables(const Projection& p)
+        : ax(float((1.0 - 1.0 / p.width) / p.p00)),
+          bx(float(-2.0 / (double(p.width) * p.p00))),
+          ay(float((1.0 / p.height - 1.0) / p.p11)),
+          by(float(2.0 / (double(p.height) * p.p11))),
+          fx(std::size_t(p.width)),
+          fy(std::size_t(p.height)) {
+        for (int x = 0; x < p.width; ++x) fx[std::size_t(x)] = fxAt(x);
+        for (int y = 0; y < p.height; ++y) fy[std::size_t(y)] = fyAt(y);
     }
-    Vec3 at(int x, int y, float z) const {
-        if (x >= 0 && y >= 0 && x < proj->width && y < proj->height)
-            return {z * fx[std::size_t(x)], z * fy[std::size_t(y)], z};
-        // Taps beyond the buffer: the tables' formula, evaluated on the spot (as the vector
-        // kernel does for every tap).
-        const float px = float(x) + 0.5f, py = float(y) + 0.5f;
-        return {z * (1.0f / proj->p00 * (1.0f - 2.0f * px / float(proj->width))),
-                z * (1.0f / proj->p11 * (2.0f * py / float(proj->height) - 1.0f)), z};
-    }
+    float fxAt(int x) const { return ax + bx * float(x); }
+    float fyAt(int y) const { return ay + by * float(y); }
+    Vec3 at(int x, int y, float z) const { return {z * fxAt(x), z * fyAt(y), z}; }
 };
 
 //! Face normal at (x, y) from the quad-pair differences a GPU's fine derivatives take
@@ -95,6 +96,43 @@ inline bool faceNormal(ImageView<const float> z0, const PositionTables& pos, int
     return true;
 }
 
+//! The z pyramid as the sample pass reads it: every level in one buffer, level 0 first, so
+//! the vector kernel gathers any tap with one base pointer. SAO and AlchemyAO write z and
+//! the levels straight into it (no copy per frame); the buffer is kept while sizes stay.
+struct FlatPyramid {
+    std::vector<float> data;
+    std::vector<std::int32_t> offset, width, height;
+    int levels() const { return int(offset.size()); }
+    //! Levels 0..maxMip for a w x h level 0 (each next one half, rounding down, at least 1).
+    void shape(int w, int h, int maxMip) {
+        offset.clear(), width.clear(), height.clear();
+        std::size_t total = 0;
+        for (int m = 0; m <= maxMip; ++m) {
+            offset.push_back(std::int32_t(total)), width.push_back(w), height.push_back(h);
+            total += std::size_t(w) * std::size_t(h);
+            w = std::max(1, w / 2), h = std::max(1, h / 2);
+        }
+        if (data.size() != total) data.resize(total);
+    }
+    ImageView<float> level(int m) {
+        return {data.data() + offset[std::size_t(m)], width[std::size_t(m)], height[std::size_t(m)]};
+    }
+    ImageView<const float> level(int m) const {
+        return {data.data() + offset[std::size_t(m)], width[std::size_t(m)], height[std::size_t(m)]};
+    }
+    //! Copies a pyramid made elsewhere (the public sample-pass entry points).
+    void copyFrom(const std::vector<ImageF>& pyr) {
+        shape(pyr[0].width(), pyr[0].height(), int(pyr.size()) - 1);
+        for (int m = 0; m < levels(); ++m) {
+            if (pyr[std::size_t(m)].width() != width[std::size_t(m)] || pyr[std::size_t(m)].height() != height[std::size_t(m)])
+                throw Error(fmt::format("z pyramid: level {} is {}x{}, expected {}x{}", m, pyr[std::size_t(m)].width(),
+                                        pyr[std::size_t(m)].height(), width[std::size_t(m)], height[std::size_t(m)]));
+            std::copy(pyr[std::size_t(m)].pixels().begin(), pyr[std::size_t(m)].pixels().end(),
+                      data.begin() + offset[std::size_t(m)]);
+        }
+    }
+};
+
 //! Runs the sample loop for every pixel of `region`; est.term(vv, vn, zC) accumulates one
 //! tap, est.finish(sum) gives A.
 //!
@@ -103,12 +141,12 @@ inline bool faceNormal(ImageView<const float> z0, const PositionTables& pos, int
 //! hash angle phi (eq. 8) with one sine and cosine. This is cos/sin(alpha 2 pi tau + phi)
 //! evaluated as a rotation: the same directions up to rounding, at a ninth of the cost.
 template <class Estimator>
-void samplePass(const std::vector<ImageF>& pyr, const Projection& proj, Region region, const SampleSetup& s,
+void samplePass(const FlatPyramid& pyr, const Projection& proj, Region region, const SampleSetup& s,
                 const Estimator& est, const Exec& exec, ImageF& out) {
-    const ImageView<const float> z0 = pyr[0].view();
+    const ImageView<const float> z0 = pyr.level(0);
     const int w = z0.width(), h = z0.height();
     if (out.width() != region.width || out.height() != region.height) out = ImageF(region.width, region.height);
-    const int levels = s.usePyramid ? std::min<int>(s.maxMip, int(pyr.size()) - 1) : 0;
+    const int levels = s.usePyramid ? std::min<int>(s.maxMip, pyr.levels() - 1) : 0;
     std::vector<float> alpha(std::size_t(s.numSamples)), dirX(alpha.size()), dirY(alpha.size());
     for (int k = 0; k < s.numSamples; ++k) {
         const double a = (k + 0.5) / s.numSamples, theta = a * 2.0 * std::numbers::pi * s.spiralTurns;
@@ -116,25 +154,12 @@ void samplePass(const std::vector<ImageF>& pyr, const Projection& proj, Region r
                            dirY[std::size_t(k)] = float(std::sin(theta));
     }
     const PositionTables pos(proj);
-    // The vector kernel's view: every level the taps may read in one buffer.
     const bool vector = s.vector && w >= 2 && h >= 2;
-    // Kept per calling thread: a frame loop reuses the buffer (fresh pages cost more than
-    // the copy on the machines here).
-    thread_local std::vector<float> flat;
-    flat.clear();
-    std::vector<std::int32_t> lOff, lW, lH;
     SimdSampleInput vin{};
     if (vector) {
-        for (int m = 0; m <= levels; ++m) {
-            const ImageF& l = pyr[std::size_t(m)];
-            lOff.push_back(std::int32_t(flat.size()));
-            lW.push_back(l.width());
-            lH.push_back(l.height());
-            flat.insert(flat.end(), l.pixels().begin(), l.pixels().end());
-        }
-        vin = {flat.data(), lOff.data(), lW.data(), lH.data(), levels, w, h, pos.fx.data(), pos.fy.data(), proj.p00,
-               proj.p11, proj.pixelsPerMeter, s.radius, s.numSamples, s.logQ, alpha.data(), dirX.data(), dirY.data(),
-               0, 0, 0, 0, 0, 0};
+        vin = {pyr.data.data(), pyr.offset.data(), pyr.width.data(), pyr.height.data(), levels, w, h,
+               pos.fx.data(), pos.fy.data(), pos.ax, pos.bx, pos.ay, pos.by, proj.pixelsPerMeter, s.radius,
+               s.numSamples, s.logQ, alpha.data(), dirX.data(), dirY.data(), 0, 0, 0, 0, 0, 0};
         est.fill(vin);
     }
     parallelRows(region.height, exec, [&](int r0, int r1) {
@@ -172,7 +197,7 @@ void samplePass(const std::vector<ImageF>& pyr, const Projection& proj, Region r
                     const int sx = x + int(hk * ux), sy = y + int(hk * uy);
                     // Level (eqs. 9-10): m = clamp(findMSB(int(h)) - log2 q', 0, MAX_MIP).
                     const int m = std::clamp(findMsb(int(hk)) - s.logQ, 0, levels);
-                    const ImageView<const float> zm = pyr[std::size_t(m)].view();
+                    const ImageView<const float> zm = pyr.level(m);
                     const float zq = zm.clamped(sx >> m, sy >> m);
                     if (std::isinf(zq)) continue;  // sky occludes nothing
                     const Vec3 v = sub(pos.at(sx, sy, zq), c);

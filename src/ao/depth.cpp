@@ -106,32 +106,34 @@ void zPyramid(ImageView<const float> z, int maxMip, PyramidFilter filter, std::v
     for (int y = 0; y < z.height(); ++y) std::copy(z.row(y), z.row(y) + z.width(), levels[0].view().row(y));
     for (int m = 1; m <= maxMip; ++m) {
         const ImageF& prev = levels[std::size_t(m) - 1];
-        const int w = std::max(1, prev.width() / 2), h = std::max(1, prev.height() / 2);
-        ImageF& next = levels[std::size_t(m)];
-        ensure(next, w, h);
-        const ImageView<const float> pv = prev.view();
-        parallelRows(h, exec, [&](int y0, int y1) {
-            for (int y = y0; y < y1; ++y)
-                for (int x = 0; x < w; ++x) {
-                    float v;
-                    if (filter == PyramidFilter::RotatedGrid) {
-                        v = pv.clamped(2 * x + (y & 1), 2 * y + (x & 1));
-                    } else {
-                        const float a = pv.clamped(2 * x, 2 * y), b = pv.clamped(2 * x + 1, 2 * y);
-                        const float c = pv.clamped(2 * x, 2 * y + 1), d = pv.clamped(2 * x + 1, 2 * y + 1);
-                        switch (filter) {
-                            case PyramidFilter::Mean: v = (a + b + c + d) * 0.25f; break;
-                            case PyramidFilter::HarmonicMean:
-                                v = 4.0f / (1.0f / a + 1.0f / b + 1.0f / c + 1.0f / d);
-                                break;
-                            case PyramidFilter::Min: v = std::min(std::min(a, b), std::min(c, d)); break;
-                            default: v = std::max(std::max(a, b), std::max(c, d)); break;
-                        }
-                    }
-                    next(x, y) = v;
-                }
-        });
+        ensure(levels[std::size_t(m)], std::max(1, prev.width() / 2), std::max(1, prev.height() / 2));
+        zPyramidLevel(prev.view(), levels[std::size_t(m)].view(), filter, exec);
     }
+}
+
+void zPyramidLevel(ImageView<const float> pv, ImageView<float> next, PyramidFilter filter, const Exec& exec) {
+    const int w = next.width(), h = next.height();
+    if (w != std::max(1, pv.width() / 2) || h != std::max(1, pv.height() / 2))
+        throw Error(fmt::format("z pyramid: a {}x{} level cannot follow a {}x{} one", w, h, pv.width(), pv.height()));
+    parallelRows(h, exec, [&](int y0, int y1) {
+        for (int y = y0; y < y1; ++y)
+            for (int x = 0; x < w; ++x) {
+                float v;
+                if (filter == PyramidFilter::RotatedGrid) {
+                    v = pv.clamped(2 * x + (y & 1), 2 * y + (x & 1));
+                } else {
+                    const float a = pv.clamped(2 * x, 2 * y), b = pv.clamped(2 * x + 1, 2 * y);
+                    const float c = pv.clamped(2 * x, 2 * y + 1), d = pv.clamped(2 * x + 1, 2 * y + 1);
+                    switch (filter) {
+                        case PyramidFilter::Mean: v = (a + b + c + d) * 0.25f; break;
+                        case PyramidFilter::HarmonicMean: v = 4.0f / (1.0f / a + 1.0f / b + 1.0f / c + 1.0f / d); break;
+                        case PyramidFilter::Min: v = std::min(std::min(a, b), std::min(c, d)); break;
+                        default: v = std::max(std::max(a, b), std::max(c, d)); break;
+                    }
+                }
+                next(x, y) = v;
+            }
+    });
 }
 
 }  // namespace ssfx::ao

@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <utility>
 
 #include "ao_sampling.hpp"
 #include "ssfx/core/error.hpp"
@@ -100,7 +101,7 @@ void setParam(SaoParams& p, const std::string& name, double v) {
 }
 
 namespace {
-void samplePassImpl(const std::vector<ImageF>& pyramid, const Projection& proj, Region region, const SaoParams& p,
+void samplePassImpl(const detail::FlatPyramid& pyramid, const Projection& proj, Region region, const SaoParams& p,
                     const Exec& exec, bool vector, ImageF& out);
 ImageF saoImpl(ImageView<const float> depth, const Camera& camera, const SaoParams& p, const Exec& exec,
                SaoTimings* timings, bool vector);
@@ -108,8 +109,11 @@ ImageF saoImpl(ImageView<const float> depth, const Camera& camera, const SaoPara
 
 ImageF saoSamplePass(const std::vector<ImageF>& pyramid, const Projection& proj, Region region, const SaoParams& p,
                      const Exec& exec) {
+    if (pyramid.empty()) throw Error("sao: empty z pyramid");
+    thread_local detail::FlatPyramid flat;
+    flat.copyFrom(pyramid);
     ImageF out;
-    samplePassImpl(pyramid, proj, region, p, exec, true, out);
+    samplePassImpl(flat, proj, region, p, exec, true, out);
     return out;
 }
 
@@ -118,10 +122,9 @@ ImageF saoReference(ImageView<const float> depth, const Camera& camera, const Sa
 }
 
 namespace {
-void samplePassImpl(const std::vector<ImageF>& pyramid, const Projection& proj, Region region, const SaoParams& p,
+void samplePassImpl(const detail::FlatPyramid& pyramid, const Projection& proj, Region region, const SaoParams& p,
                     const Exec& exec, bool vector, ImageF& out) {
     validate(p);
-    if (pyramid.empty()) throw Error("sao: empty z pyramid");
     const float r2 = p.radius * p.radius;
     const SaoEstimator est{r2, p.bias, p.epsilon, 5.0f / (r2 * r2 * r2 * float(p.numSamples)), p.intensity};
     const detail::SampleSetup setup{p.numSamples, p.numSpiralTurns, p.logQ, p.maxMip, p.radius, p.usePyramid, vector};
@@ -263,21 +266,22 @@ ImageF saoImpl(ImageView<const float> depth, const Camera& camera, const SaoPara
     // Buffers kept per calling thread and reused while the sizes stay (a frame loop then
     // allocates only its output).
     thread_local struct Workspace {
-        ImageF z, a, h, v, zp;
-        std::vector<ImageF> pyr;
+        detail::FlatPyramid pyr;  // z is its level 0
+        ImageF a, h, v, zp;
     } ws;
-    if (ws.z.width() != depth.width() || ws.z.height() != depth.height()) ws.z = ImageF(depth.width(), depth.height());
-    depthToZ(depth, camera, ws.z.view(), exec);
-    const ImageF& z = ws.z;
+    const int levels = p.usePyramid ? p.maxMip : 0;
+    ws.pyr.shape(depth.width(), depth.height(), levels);
+    depthToZ(depth, camera, ws.pyr.level(0), exec);
+    const ImageView<const float> z = std::as_const(ws.pyr).level(0);
     const auto t1 = Clock::now();
-    zPyramid(z.view(), p.usePyramid ? p.maxMip : 0, p.pyramidFilter, ws.pyr, exec);
+    for (int m = 1; m <= levels; ++m) zPyramidLevel(std::as_const(ws.pyr).level(m - 1), ws.pyr.level(m), p.pyramidFilter, exec);
     const auto t2 = Clock::now();
     const Region out{g, g, depth.width() - 2 * g, depth.height() - 2 * g};
     const Region work = detail::quadAligned(out, depth.width(), depth.height());
     samplePassImpl(ws.pyr, proj, work, p, exec, vector, ws.a);
-    quadBilateral(ws.a, z.view(), work, p.quadThreshold, exec);
+    quadBilateral(ws.a, z, work, p.quadThreshold, exec);
     const auto t3 = Clock::now();
-    ImageView<const float> zBlur = z.view();
+    ImageView<const float> zBlur = z;
     if (p.packBlurInput) {
         // What the blur would read from the packed buffer (the bandwidth option).
         if (ws.zp.width() != z.width() || ws.zp.height() != z.height()) ws.zp = ImageF(z.width(), z.height());

@@ -1,11 +1,10 @@
 // Highway body of the AO sample pass (SAO and AlchemyAO; see ao_sampling.hpp for the
 // scalar loop it follows): one lane per pixel along a row, taps gathered from all pyramid
-// levels stored in one buffer. The lanes follow the scalar operations except two: the hash
+// levels stored in one buffer. The lanes follow the scalar operations except one: the hash
 // angle's sine and cosine come from Highway's float approximations after a double-precision
-// range reduction (the scalar loop uses std::cos/sin in double), and taps outside the buffer
-// reconstruct their position with the table formula. Both move a tap's position by a few
-// ulps, which can move a truncated tap offset by one pixel in rare pixels; the test holds
-// the vector path to the scalar one within a stated tolerance.
+// range reduction (the scalar loop uses std::cos/sin in double). That moves a tap's position
+// by a few ulps, which can move a truncated tap offset by one pixel in rare pixels; the test
+// holds the vector path to the scalar one within a stated tolerance.
 #if defined(SSFX_AO_SAO_SIMD_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef SSFX_AO_SAO_SIMD_INL_H_
 #undef SSFX_AO_SAO_SIMD_INL_H_
@@ -42,15 +41,19 @@ inline int SampleRowSimd(const SimdSampleInput& in, int y, int x0, int x1, float
     const auto negInf = hn::Set(df, -HUGE_VALF);
     const auto iota = hn::Iota(di, 0);
     const auto radiusS = hn::Set(df, -in.radius * in.pixelsPerMeter);
-    const auto widthF = hn::Set(df, float(w)), heightF = hn::Set(df, float(h));
-    const auto invP00 = hn::Set(df, 1.0f / in.p00), invP11 = hn::Set(df, 1.0f / in.p11);
-    const auto two = hn::Set(df, 2.0f), half = hn::Set(df, 0.5f);
-    // Level starts as a vector when they fit in one (maxMip < lanes): a lane permutation
-    // instead of a gather per tap.
-    const bool offsetsInVector = in.maxLevel < n;
-    HWY_ALIGN std::int32_t offs[hn::MaxLanes(di)] = {};
-    for (int l = 0; l <= in.maxLevel && l < n; ++l) offs[l] = in.levelOffset[l];
-    const auto offVec = hn::Load(di, offs);
+    const auto ax = hn::Set(df, in.ax), bx = hn::Set(df, in.bx), ay = hn::Set(df, in.ay), by = hn::Set(df, in.by);
+    // Per-level geometry as vectors when the levels fit in one (maxMip < lanes): a lane
+    // permutation per tap instead of gathers. Sizes halve, rounding down, at least 1.
+    const bool levelsInVector = in.maxLevel < n;
+    HWY_ALIGN std::int32_t offs[hn::MaxLanes(di)] = {}, lastX[hn::MaxLanes(di)] = {},
+                           lastY[hn::MaxLanes(di)] = {}, widths[hn::MaxLanes(di)] = {};
+    for (int l = 0; l <= in.maxLevel && l < n; ++l)
+        offs[l] = in.levelOffset[l], widths[l] = in.levelW[l], lastX[l] = in.levelW[l] - 1,
+        lastY[l] = in.levelH[l] - 1;
+    const auto offVec = hn::Load(di, offs), wVec = hn::Load(di, widths), lastXVec = hn::Load(di, lastX),
+               lastYVec = hn::Load(di, lastY);
+    const auto expBias = hn::Set(di, 127 + in.logQ), maxLevel = hn::Set(di, in.maxLevel);
+    const auto hugeTap = hn::Set(df, 2147483648.0f);
     int x = x0;
     // Every lane's partner xb = (x | 1) must be < w.
     for (; x + n <= x1 && ((x + n - 1) | 1) < w; x += n) {
@@ -99,26 +102,27 @@ inline int SampleRowSimd(const SimdSampleInput& in, int y, int x0, int x1, float
             const auto uy = hn::Add(hn::Mul(dX, sphi), hn::Mul(dY, cphi));
             const auto sx = hn::Add(xi, hn::ConvertTo(di, hn::Mul(hk, ux)));  // truncation toward 0
             const auto sy = hn::Add(hn::Set(di, y), hn::ConvertTo(di, hn::Mul(hk, uy)));
-            // m = clamp(findMSB(int(h)) - logQ, 0, maxLevel): the float exponent of int(h).
-            const auto hi = hn::ConvertTo(di, hk);
-            const auto hif = hn::ConvertTo(df, hn::Max(hi, hn::Set(di, 1)));
-            const auto msb = hn::Sub(hn::ShiftRight<23>(hn::BitCast(di, hif)), hn::Set(di, 127));
-            const auto msbOr = hn::IfThenElse(hn::Lt(hi, hn::Set(di, 1)), hn::Set(di, -1), msb);
-            const auto m = hn::Min(hn::Max(hn::Sub(msbOr, hn::Set(di, in.logQ)), hn::Zero(di)),
-                                   hn::Set(di, in.maxLevel));
-            // Level geometry per lane: sizes are max(1, size >> m) (each level halves, rounding
-            // down, at least 1); the level's start comes from a small table.
-            const auto lw = hn::Max(hn::Shr(hn::Set(di, w), m), hn::Set(di, 1));
-            const auto lh = hn::Max(hn::Shr(hn::Set(di, h), m), hn::Set(di, 1));
-            const auto lo = offsetsInVector ? hn::TableLookupLanes(offVec, hn::IndicesFromVec(di, m))
-                                            : hn::GatherIndex(di, in.levelOffset, m);
-            const auto ix = hn::Min(hn::Max(hn::Shr(sx, m), hn::Zero(di)), hn::Sub(lw, hn::Set(di, 1)));
-            const auto iy = hn::Min(hn::Max(hn::Shr(sy, m), hn::Zero(di)), hn::Sub(lh, hn::Set(di, 1)));
+            // m = clamp(findMSB(int(h)) - logQ, 0, maxLevel). For 1 <= h < 2^31, findMSB(int(h))
+            // is h's binary exponent; below 1 the exponent is negative and m clamps to 0, as
+            // findMSB's -1 does; from 2^31 int(h) overflows to INT_MIN (x86), findMSB gives -1.
+            const auto expo = hn::Sub(hn::ShiftRight<23>(hn::BitCast(di, hk)), expBias);
+            const auto m = hn::IfThenElseZero(hn::RebindMask(di, hn::Lt(hk, hugeTap)),
+                                              hn::Min(hn::Max(expo, hn::Zero(di)), maxLevel));
+            hn::Vec<decltype(di)> lo, lw, lastx, lasty;
+            if (levelsInVector) {
+                const auto idx = hn::IndicesFromVec(di, m);
+                lo = hn::TableLookupLanes(offVec, idx), lw = hn::TableLookupLanes(wVec, idx);
+                lastx = hn::TableLookupLanes(lastXVec, idx), lasty = hn::TableLookupLanes(lastYVec, idx);
+            } else {
+                lo = hn::GatherIndex(di, in.levelOffset, m), lw = hn::GatherIndex(di, in.levelW, m);
+                lastx = hn::Sub(lw, hn::Set(di, 1)), lasty = hn::Sub(hn::GatherIndex(di, in.levelH, m), hn::Set(di, 1));
+            }
+            const auto ix = hn::Min(hn::Max(hn::Shr(sx, m), hn::Zero(di)), lastx);
+            const auto iy = hn::Min(hn::Max(hn::Shr(sy, m), hn::Zero(di)), lasty);
             const auto zq = hn::GatherIndex(df, in.levels, hn::Add(lo, hn::Add(hn::Mul(iy, lw), ix)));
-            // Position at the tap's centre: z * (1/P00 * (1 - 2 (sx + 0.5) / w)), as the tables.
-            const auto px = hn::Add(hn::ConvertTo(df, sx), half), py = hn::Add(hn::ConvertTo(df, sy), half);
-            const auto fxq = hn::Mul(invP00, hn::Sub(one, hn::Div(hn::Mul(two, px), widthF)));
-            const auto fyq = hn::Mul(invP11, hn::Sub(hn::Div(hn::Mul(two, py), heightF), one));
+            // Position at the tap's centre: z * fx(sx), fx(sx) = ax + bx * sx (PositionTables).
+            const auto fxq = hn::Add(ax, hn::Mul(bx, hn::ConvertTo(df, sx)));
+            const auto fyq = hn::Add(ay, hn::Mul(by, hn::ConvertTo(df, sy)));
             const auto vx = hn::Sub(hn::Mul(zq, fxq), cx), vy = hn::Sub(hn::Mul(zq, fyq), cy);
             const auto vz = hn::Sub(zq, zc);
             const auto vv = hn::Add(hn::Add(hn::Mul(vx, vx), hn::Mul(vy, vy)), hn::Mul(vz, vz));

@@ -14,7 +14,8 @@ struct SimdSampleInput {
     int width, height;                   //!< level 0
     const float* fx;                     //!< position tables (ao_sampling.hpp PositionTables)
     const float* fy;
-    float p00, p11, pixelsPerMeter, radius;
+    float ax, bx, ay, by;                //!< fx(x) = ax + bx * x, fy(y) = ay + by * y (PositionTables)
+    float pixelsPerMeter, radius;
     int numSamples, logQ;
     const float *alpha, *dirX, *dirY;    //!< the spiral, [numSamples]
     int estimator;                       //!< 0: SAO's falloff, 1: AlchemyAO (eq. 1)

@@ -81,5 +81,8 @@ std::vector<ImageF> zPyramid(ImageView<const float> z, int maxMip, PyramidFilter
 //! Into `levels`, whose images are reused where their sizes already match.
 void zPyramid(ImageView<const float> z, int maxMip, PyramidFilter filter, std::vector<ImageF>& levels,
               const Exec& exec = {});
+//! One step of the pyramid: `coarser` (max(1, w / 2) x max(1, h / 2) of `finer`) from `finer`.
+void zPyramidLevel(ImageView<const float> finer, ImageView<float> coarser, PyramidFilter filter,
+                   const Exec& exec = {});
 
 }  // namespace ssfx::ao
