@@ -8,6 +8,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "src/ao/sao_simd.hpp"
 #include "ssfx/core/error.hpp"
 
 namespace ssfx::ao {
@@ -68,6 +69,8 @@ void depthToZ(ImageView<const float> depth, const Camera& camera, ImageView<floa
         for (int y = y0; y < y1; ++y) {
             const float* d = depth.row(y);
             float* out = z.row(y);
+            // The vector row (same bits); a row with a bad value takes the loop below.
+            if (detail::depthToZRowSimd(d, out, depth.width(), p.c0, p.c1, p.c2)) continue;
             for (int x = 0; x < depth.width(); ++x) {
                 const float v = d[x];
                 if (!(v >= 0.0f && v <= 1.0f)) {  // also NaN

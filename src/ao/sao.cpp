@@ -292,11 +292,15 @@ ImageF saoImpl(ImageView<const float> depth, const Camera& camera, const SaoPara
         zBlur = ws.zp.view();
     }
     bilateralPass(ws.a, zBlur, work, p.blur, true, ws.h, exec);
-    bilateralPass(ws.h, zBlur, work, p.blur, false, ws.v, exec);
-    const ImageF& v = ws.v;
     ImageF result(out.width, out.height);
-    for (int y = 0; y < out.height; ++y)
-        for (int x = 0; x < out.width; ++x) result(x, y) = v(x + out.x0 - work.x0, y + out.y0 - work.y0);
+    if (work.x0 == out.x0 && work.y0 == out.y0 && work.width == out.width && work.height == out.height) {
+        bilateralPass(ws.h, zBlur, work, p.blur, false, result, exec);  // the usual case: even sizes
+    } else {  // the work region has an extra row or column (odd sizes): crop it
+        bilateralPass(ws.h, zBlur, work, p.blur, false, ws.v, exec);
+        const ImageF& v = ws.v;
+        for (int y = 0; y < out.height; ++y)
+            for (int x = 0; x < out.width; ++x) result(x, y) = v(x + out.x0 - work.x0, y + out.y0 - work.y0);
+    }
     const auto t4 = Clock::now();
     if (timings) *timings = {ms(t0, t1), ms(t1, t2), ms(t2, t3), ms(t3, t4), ms(t0, t4)};
     return result;

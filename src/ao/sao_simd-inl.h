@@ -16,6 +16,7 @@
 #include <hwy/highway.h>
 
 #include "src/ao/bilateral_simd-inl.h"
+#include "src/ao/depth_simd-inl.h"
 #include "src/ao/sao_simd.hpp"
 
 HWY_BEFORE_NAMESPACE();

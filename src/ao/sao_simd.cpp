@@ -1,5 +1,5 @@
-// Runtime dispatch of the vector AO kernels: the sample pass (sao_simd-inl.h) and a row of
-// the bilateral blur (bilateral_simd-inl.h).
+// Runtime dispatch of the vector AO kernels: the sample pass (sao_simd-inl.h), a row of the
+// bilateral blur (bilateral_simd-inl.h) and a row of depth -> z (depth_simd-inl.h).
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "src/ao/sao_simd-inl.h"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
@@ -11,6 +11,10 @@
 namespace ssfx::ao::detail {
 HWY_EXPORT(SampleRowSimd);
 HWY_EXPORT(BilateralRowSimd);
+HWY_EXPORT(DepthToZRowSimd);
+bool depthToZRowSimd(const float* d, float* z, int n, double c0, double c1, double c2) {
+    return HWY_DYNAMIC_DISPATCH(DepthToZRowSimd)(d, z, n, c0, c1, c2);
+}
 void bilateralRowSimd(const BilateralRowInput& in, int lo, int hi, float* out) {
     HWY_DYNAMIC_DISPATCH(BilateralRowSimd)(in, lo, hi, out);
 }

@@ -22,6 +22,10 @@ struct SimdSampleInput {
     float r2, bias, beta, epsilon, scale;
 };
 
+//! z = c0 / (d c1 + c2) for one row (depth_simd-inl.h); false, with `z` unspecified, when some
+//! d is outside [0, 1] or NaN (the caller's per-pixel loop then reports it).
+bool depthToZRowSimd(const float* d, float* z, int n, double c0, double c1, double c2);
+
 //! One output row of a bilateral blur pass (bilateral_simd-inl.h): tap t of pixel i reads
 //! zTap[t][i] and aTap[t][i] (row pointers already moved by the tap's offset).
 struct BilateralRowInput {

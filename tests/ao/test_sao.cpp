@@ -1,4 +1,5 @@
 // SAO and the AlchemyAO baseline on analytic depth buffers (planes computed in the test).
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -66,6 +67,38 @@ TEST(Depth, ZReconstructionIsExactForAnalyticDepths) {
     Camera finite;
     finite.zFar = -50;
     EXPECT_FLOAT_EQ(depthToZ(sky.view(), finite)(0, 0), -50.0f);
+}
+
+TEST(Depth, ZIsEquationTwoInDoubleForEveryPixel) {
+    // The vector rows and the per-pixel tail give eq. 2 in double rounded to float, bit for
+    // bit, for row lengths around the vector widths; a bad value anywhere in a row (vector
+    // part or tail) is reported with its pixel, the first one in row-major order.
+    Camera cam;
+    cam.zNear = -0.05;
+    for (int w : {1, 7, 8, 9, 16, 17, 33, 67}) {
+        const Projection p = projection(cam, w, 3);
+        ImageF d(w, 3);
+        unsigned s = unsigned(w);
+        for (int y = 0; y < 3; ++y)
+            for (int x = 0; x < w; ++x) d(x, y) = float((s = s * 1664525u + 1013904223u) >> 8) / float(1 << 24);
+        d(w - 1, 2) = 1.0f;  // sky
+        const ImageF z = depthToZ(d.view(), cam, Exec{2});
+        for (int y = 0; y < 3; ++y)
+            for (int x = 0; x < w; ++x)
+                ASSERT_EQ(z(x, y), float(p.c0 / (double(d(x, y)) * p.c1 + p.c2))) << w << ": " << x << "," << y;
+        EXPECT_TRUE(std::isinf(z(w - 1, 2)));
+        for (int bx : {0, w / 2, w - 1}) {
+            ImageF bad = d;
+            bad(bx, 1) = -1e-7f;
+            bad(w - 1, 2) = NAN;
+            try {
+                depthToZ(bad.view(), cam, Exec{2});
+                ADD_FAILURE() << "no error";
+            } catch (const Error& e) {
+                EXPECT_NE(std::string(e.what()).find(fmt::format("pixel ({}, 1)", bx)), std::string::npos) << e.what();
+            }
+        }
+    }
 }
 
 TEST(Depth, PositionsReprojectToTheirPixels) {
