@@ -156,7 +156,9 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Ddaa2Params& p, 
     const ImageF& L = methodLumaPlane(in, scalar, exec, fresh, p.chromaWeight);
     // The vector kernel across pixels: GPU filtering model, and search reads provably equal
     // to pair-plane lookups for this size (else everything takes the scalar kernel).
-    const bool vector = !scalar && p.filtering == Filtering::Gpu && searchReadsArePairReads(tex, p.searchRounds) &&
+    const bool vector = !scalar && p.filtering == Filtering::Gpu &&
+                        oncePerSize(in.width(), in.height(), p.searchRounds,
+                                    [&] { return searchReadsArePairReads(tex, p.searchRounds); }) &&
                         planesFitGatherIndices(in.width(), in.height());
     const LumaPlanes planes = vector ? scratchLumaPlanes(in, false, exec) : LumaPlanes{};
     auto rows = [&](int y, std::uint8_t* mask, const Rgba8* src, Rgba8* dst) {

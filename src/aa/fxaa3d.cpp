@@ -150,7 +150,9 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Fxaa3dParams& p,
     const ImageF& L = methodLumaPlane(in, scalar, exec, fresh, p.chromaWeight);
     // The vector kernel across pixels: GPU filtering model, and walk reads provably equal to
     // plane lookups for this size (else everything takes the scalar kernel).
-    const bool vector = !scalar && p.filtering == Filtering::Gpu && walkReadsArePlaneReads(tex, p.paperSearchQuirk) &&
+    const bool vector = !scalar && p.filtering == Filtering::Gpu &&
+                        oncePerSize(in.width(), in.height(), p.paperSearchQuirk,
+                                    [&] { return walkReadsArePlaneReads(tex, p.paperSearchQuirk); }) &&
                         planesFitGatherIndices(in.width(), in.height());
     const LumaPlanes planes = vector ? scratchLumaPlanes(in, true, exec) : LumaPlanes{};
     auto rows = [&](int y, std::uint8_t* mask, const Rgba8* src, Rgba8* dst) {

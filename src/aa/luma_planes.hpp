@@ -74,6 +74,19 @@ bool acrossIsHalfWay(int n, float inv, float c, int i, const Split& split) {
     return true;
 }
 
+//! check() for an image size and a method option, remembered per calling thread for the
+//! last size: the per-size exactness checks are O(W + H) but run once per frame otherwise
+//! (a frame loop at one size then pays for them once).
+template <class Check>
+bool oncePerSize(int width, int height, int option, const Check& check) {
+    thread_local struct {
+        int w = -1, h = -1, option = 0;
+        bool result = false;
+    } last;
+    if (last.w != width || last.h != height || last.option != option) last = {width, height, option, check()};
+    return last.result;
+}
+
 //! True when every read of fxaa3d's walk on an image of this size equals a plane value
 //! (then its vector kernel runs; otherwise the scalar one). In fxaa3d.cpp.
 bool walkReadsArePlaneReads(const Texture& tex, bool paperSearchQuirk);
