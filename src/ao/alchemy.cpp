@@ -61,16 +61,21 @@ void setParam(AlchemyParams& p, const std::string& name, double v) {
 namespace {
 ImageF alchemyImpl(ImageView<const float> depth, const Camera& camera, const AlchemyParams& p, const Exec& exec,
                    bool vector);
-ImageF samplePassImpl(const detail::FlatPyramid& z, const Projection& proj, Region region, const AlchemyParams& p,
+ImageF samplePassImpl(const ZPyramid& z, const Projection& proj, Region region, const AlchemyParams& p,
                       const Exec& exec, bool vector);
 }  // namespace
 
 ImageF alchemySamplePass(ImageView<const float> z, const Projection& proj, Region region, const AlchemyParams& p,
                          const Exec& exec) {
-    thread_local detail::FlatPyramid level0;
-    level0.shape(z.width(), z.height(), 0);
-    for (int y = 0; y < z.height(); ++y) std::copy(z.row(y), z.row(y) + z.width(), level0.level(0).row(y));
+    thread_local ZPyramid level0;
+    zPyramid(z, 0, PyramidFilter::RotatedGrid, level0, exec);
     return samplePassImpl(level0, proj, region, p, exec, true);
+}
+
+ImageF alchemySamplePass(const ZPyramid& z, const Projection& proj, Region region, const AlchemyParams& p,
+                         const Exec& exec) {
+    if (z.levels() == 0) throw Error("alchemy: empty z buffer");
+    return samplePassImpl(z, proj, region, p, exec, true);
 }
 
 ImageF alchemyReference(ImageView<const float> depth, const Camera& camera, const AlchemyParams& p) {
@@ -82,7 +87,7 @@ ImageF alchemy(ImageView<const float> depth, const Camera& camera, const Alchemy
 }
 
 namespace {
-ImageF samplePassImpl(const detail::FlatPyramid& level0, const Projection& proj, Region region, const AlchemyParams& p,
+ImageF samplePassImpl(const ZPyramid& level0, const Projection& proj, Region region, const AlchemyParams& p,
                       const Exec& exec, bool vector) {
     validate(p);
     const AlchemyEstimator est{p.beta, p.epsilon, 2.0f * p.sigma / float(p.numSamples), p.k};
@@ -101,7 +106,7 @@ ImageF alchemyImpl(ImageView<const float> depth, const Camera& camera, const Alc
                                 depth.height(), g));
     const Projection proj = projection(camera, depth.width(), depth.height());
     // z written straight into the buffer the sample pass gathers from (kept per thread).
-    thread_local detail::FlatPyramid level0;
+    thread_local ZPyramid level0;
     level0.shape(depth.width(), depth.height(), 0);
     depthToZ(depth, camera, level0.level(0), exec);
     const ImageView<const float> z = std::as_const(level0).level(0);

@@ -96,42 +96,17 @@ inline bool faceNormal(ImageView<const float> z0, const PositionTables& pos, int
     return true;
 }
 
-//! The z pyramid as the sample pass reads it: every level in one buffer, level 0 first, so
-//! the vector kernel gathers any tap with one base pointer. SAO and AlchemyAO write z and
-//! the levels straight into it (no copy per frame); the buffer is kept while sizes stay.
-struct FlatPyramid {
-    std::vector<float> data;
-    std::vector<std::int32_t> offset, width, height;
-    int levels() const { return int(offset.size()); }
-    //! Levels 0..maxMip for a w x h level 0 (each next one half, rounding down, at least 1).
-    void shape(int w, int h, int maxMip) {
-        offset.clear(), width.clear(), height.clear();
-        std::size_t total = 0;
-        for (int m = 0; m <= maxMip; ++m) {
-            offset.push_back(std::int32_t(total)), width.push_back(w), height.push_back(h);
-            total += std::size_t(w) * std::size_t(h);
-            w = std::max(1, w / 2), h = std::max(1, h / 2);
-        }
-        if (data.size() != total) data.resize(total);
+//! Copies a pyramid made level by level (the std::vector<ImageF> entry points) into `out`.
+inline void copyPyramid(const std::vector<ImageF>& pyr, ZPyramid& out) {
+    out.shape(pyr[0].width(), pyr[0].height(), int(pyr.size()) - 1);
+    for (int m = 0; m < out.levels(); ++m) {
+        const ImageF& l = pyr[std::size_t(m)];
+        if (l.width() != out.width[std::size_t(m)] || l.height() != out.height[std::size_t(m)])
+            throw Error(fmt::format("z pyramid: level {} is {}x{}, expected {}x{}", m, l.width(), l.height(),
+                                    out.width[std::size_t(m)], out.height[std::size_t(m)]));
+        std::copy(l.pixels().begin(), l.pixels().end(), out.data.begin() + out.offset[std::size_t(m)]);
     }
-    ImageView<float> level(int m) {
-        return {data.data() + offset[std::size_t(m)], width[std::size_t(m)], height[std::size_t(m)]};
-    }
-    ImageView<const float> level(int m) const {
-        return {data.data() + offset[std::size_t(m)], width[std::size_t(m)], height[std::size_t(m)]};
-    }
-    //! Copies a pyramid made elsewhere (the public sample-pass entry points).
-    void copyFrom(const std::vector<ImageF>& pyr) {
-        shape(pyr[0].width(), pyr[0].height(), int(pyr.size()) - 1);
-        for (int m = 0; m < levels(); ++m) {
-            if (pyr[std::size_t(m)].width() != width[std::size_t(m)] || pyr[std::size_t(m)].height() != height[std::size_t(m)])
-                throw Error(fmt::format("z pyramid: level {} is {}x{}, expected {}x{}", m, pyr[std::size_t(m)].width(),
-                                        pyr[std::size_t(m)].height(), width[std::size_t(m)], height[std::size_t(m)]));
-            std::copy(pyr[std::size_t(m)].pixels().begin(), pyr[std::size_t(m)].pixels().end(),
-                      data.begin() + offset[std::size_t(m)]);
-        }
-    }
-};
+}
 
 //! Runs the sample loop for every pixel of `region`; est.term(vv, vn, zC) accumulates one
 //! tap, est.finish(sum) gives A.
@@ -141,7 +116,7 @@ struct FlatPyramid {
 //! hash angle phi (eq. 8) with one sine and cosine. This is cos/sin(alpha 2 pi tau + phi)
 //! evaluated as a rotation: the same directions up to rounding, at a ninth of the cost.
 template <class Estimator>
-void samplePass(const FlatPyramid& pyr, const Projection& proj, Region region, const SampleSetup& s,
+void samplePass(const ZPyramid& pyr, const Projection& proj, Region region, const SampleSetup& s,
                 const Estimator& est, const Exec& exec, ImageF& out) {
     const ImageView<const float> z0 = pyr.level(0);
     const int w = z0.width(), h = z0.height();

@@ -7,6 +7,7 @@
 #include <atomic>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 #include "src/ao/sao_simd.hpp"
 #include "ssfx/core/error.hpp"
@@ -112,6 +113,17 @@ void zPyramid(ImageView<const float> z, int maxMip, PyramidFilter filter, std::v
         ensure(levels[std::size_t(m)], std::max(1, prev.width() / 2), std::max(1, prev.height() / 2));
         zPyramidLevel(prev.view(), levels[std::size_t(m)].view(), filter, exec);
     }
+}
+
+void zPyramid(ImageView<const float> z, int maxMip, PyramidFilter filter, ZPyramid& out, const Exec& exec) {
+    if (maxMip < 0 || maxMip > 16) throw Error(fmt::format("z pyramid: maxMip {} is not in [0, 16]", maxMip));
+    checkDimensions(z.width(), z.height(), "z buffer");
+    out.shape(z.width(), z.height(), maxMip);
+    const ImageView<float> l0 = out.level(0);
+    parallelRows(z.height(), exec, [&](int y0, int y1) {
+        for (int y = y0; y < y1; ++y) std::copy(z.row(y), z.row(y) + z.width(), l0.row(y));
+    });
+    for (int m = 1; m <= maxMip; ++m) zPyramidLevel(std::as_const(out).level(m - 1), out.level(m), filter, exec);
 }
 
 void zPyramidLevel(ImageView<const float> pv, ImageView<float> next, PyramidFilter filter, const Exec& exec) {

@@ -101,7 +101,7 @@ void setParam(SaoParams& p, const std::string& name, double v) {
 }
 
 namespace {
-void samplePassImpl(const detail::FlatPyramid& pyramid, const Projection& proj, Region region, const SaoParams& p,
+void samplePassImpl(const ZPyramid& pyramid, const Projection& proj, Region region, const SaoParams& p,
                     const Exec& exec, bool vector, ImageF& out);
 ImageF saoImpl(ImageView<const float> depth, const Camera& camera, const SaoParams& p, const Exec& exec,
                SaoTimings* timings, bool vector);
@@ -110,10 +110,16 @@ ImageF saoImpl(ImageView<const float> depth, const Camera& camera, const SaoPara
 ImageF saoSamplePass(const std::vector<ImageF>& pyramid, const Projection& proj, Region region, const SaoParams& p,
                      const Exec& exec) {
     if (pyramid.empty()) throw Error("sao: empty z pyramid");
-    thread_local detail::FlatPyramid flat;
-    flat.copyFrom(pyramid);
+    thread_local ZPyramid flat;
+    detail::copyPyramid(pyramid, flat);
+    return saoSamplePass(flat, proj, region, p, exec);
+}
+
+ImageF saoSamplePass(const ZPyramid& pyramid, const Projection& proj, Region region, const SaoParams& p,
+                     const Exec& exec) {
+    if (pyramid.levels() == 0) throw Error("sao: empty z pyramid");
     ImageF out;
-    samplePassImpl(flat, proj, region, p, exec, true, out);
+    samplePassImpl(pyramid, proj, region, p, exec, true, out);
     return out;
 }
 
@@ -122,7 +128,7 @@ ImageF saoReference(ImageView<const float> depth, const Camera& camera, const Sa
 }
 
 namespace {
-void samplePassImpl(const detail::FlatPyramid& pyramid, const Projection& proj, Region region, const SaoParams& p,
+void samplePassImpl(const ZPyramid& pyramid, const Projection& proj, Region region, const SaoParams& p,
                     const Exec& exec, bool vector, ImageF& out) {
     validate(p);
     const float r2 = p.radius * p.radius;
@@ -266,7 +272,7 @@ ImageF saoImpl(ImageView<const float> depth, const Camera& camera, const SaoPara
     // Buffers kept per calling thread and reused while the sizes stay (a frame loop then
     // allocates only its output).
     thread_local struct Workspace {
-        detail::FlatPyramid pyr;  // z is its level 0
+        ZPyramid pyr;  // z is its level 0
         ImageF a, h, v, zp;
     } ws;
     const int levels = p.usePyramid ? p.maxMip : 0;

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <functional>
+#include <utility>
 
 #include "ssfx/ao/alchemy.hpp"
 #include "ssfx/ao/depth.hpp"
@@ -453,4 +454,27 @@ TEST(Sao, QuadBilateralAveragesPairsOfTheBufferGrid) {
         if (r.width > 1) EXPECT_NE(in.a, blurInput(w, h, r, 11).a);  // it did average something
         else EXPECT_EQ(in.a, blurInput(w, h, r, 11).a);              // a lone pixel has no partner
     }
+}
+
+TEST(Sao, OneBufferPyramidGivesTheSameLevelsAndPasses) {
+    // zPyramid into one buffer (the layout sao() uses) holds the same levels as the
+    // level-by-level form, and the sample passes on either input give the same bits.
+    Camera cam;
+    const auto geo = eval::castGeometry(eval::roomScene(), cam, 161, 97);
+    const ImageF z = depthToZ(geo.depth.view(), cam);
+    const Projection proj = projection(cam, 161, 97);
+    const auto levels = zPyramid(z.view(), 4);
+    ZPyramid flat;
+    zPyramid(z.view(), 4, PyramidFilter::RotatedGrid, flat, Exec{2});
+    ASSERT_EQ(flat.levels(), 5);
+    for (int m = 0; m < 5; ++m) {
+        ASSERT_EQ(flat.level(m).width(), levels[std::size_t(m)].width());
+        ASSERT_EQ(flat.level(m).height(), levels[std::size_t(m)].height());
+        EXPECT_EQ(ImageF::copyOf(std::as_const(flat).level(m)), levels[std::size_t(m)]) << "level " << m;
+    }
+    const Region r{5, 4, 150, 88};
+    EXPECT_EQ(saoSamplePass(flat, proj, r, {}), saoSamplePass(levels, proj, r, {}));
+    EXPECT_EQ(alchemySamplePass(flat, proj, r, {}), alchemySamplePass(z.view(), proj, r, {}));
+    EXPECT_THROW(zPyramid(z.view(), 17, PyramidFilter::Mean, flat), Error);
+    EXPECT_THROW(saoSamplePass(ZPyramid{}, proj, r, {}), Error);
 }

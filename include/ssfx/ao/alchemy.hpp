@@ -33,6 +33,9 @@ void setParam(AlchemyParams& p, const std::string& name, double value);
 //! The raw sample pass over `region` of the z buffer (before the blur).
 ImageF alchemySamplePass(ImageView<const float> z, const Projection& proj, Region region, const AlchemyParams& p,
                          const Exec& exec = {});
+//! The same reading level 0 of `z` (no copy), e.g. the pyramid built for SAO.
+ImageF alchemySamplePass(const ZPyramid& z, const Projection& proj, Region region, const AlchemyParams& p,
+                         const Exec& exec = {});
 
 //! The scalar oracle of alchemy() (sample pass without the vector kernel, one thread).
 ImageF alchemyReference(ImageView<const float> depth, const Camera& camera, const AlchemyParams& params = {});

@@ -9,7 +9,9 @@
 // and every later pass treats it as "nothing there".
 #pragma once
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 #include "ssfx/core/image.hpp"
@@ -81,6 +83,35 @@ std::vector<ImageF> zPyramid(ImageView<const float> z, int maxMip, PyramidFilter
 //! Into `levels`, whose images are reused where their sizes already match.
 void zPyramid(ImageView<const float> z, int maxMip, PyramidFilter filter, std::vector<ImageF>& levels,
               const Exec& exec = {});
+//! The z pyramid in one buffer, level 0 first: the layout the sample passes read (one base
+//! pointer for every tap, so the vector kernel gathers any level). SAO writes z and the
+//! levels straight into it; a caller running several sample passes on one z buffer builds
+//! it once. Shaping to the same sizes keeps the buffer.
+struct ZPyramid {
+    std::vector<float> data;
+    std::vector<std::int32_t> offset, width, height;  //!< per level
+    int levels() const { return int(offset.size()); }
+    //! Levels 0..maxMip for a w x h level 0 (each next one half, rounding down, at least 1).
+    void shape(int w, int h, int maxMip) {
+        offset.clear(), width.clear(), height.clear();
+        std::size_t total = 0;
+        for (int m = 0; m <= maxMip; ++m) {
+            offset.push_back(std::int32_t(total)), width.push_back(w), height.push_back(h);
+            total += std::size_t(w) * std::size_t(h);
+            w = std::max(1, w / 2), h = std::max(1, h / 2);
+        }
+        if (data.size() != total) data.resize(total);
+    }
+    ImageView<float> level(int m) {
+        return {data.data() + offset[std::size_t(m)], width[std::size_t(m)], height[std::size_t(m)]};
+    }
+    ImageView<const float> level(int m) const {
+        return {data.data() + offset[std::size_t(m)], width[std::size_t(m)], height[std::size_t(m)]};
+    }
+};
+//! Into one buffer (`out` reshaped, its memory kept while the sizes stay).
+void zPyramid(ImageView<const float> z, int maxMip, PyramidFilter filter, ZPyramid& out, const Exec& exec = {});
+
 //! One step of the pyramid: `coarser` (max(1, w / 2) x max(1, h / 2) of `finer`) from `finer`.
 void zPyramidLevel(ImageView<const float> finer, ImageView<float> coarser, PyramidFilter filter,
                    const Exec& exec = {});

@@ -83,6 +83,9 @@ void setParam(SaoParams& p, const std::string& name, double value);
 //! sky neighbour in their quad) and sky pixels get A = 1.
 ImageF saoSamplePass(const std::vector<ImageF>& pyramid, const Projection& proj, Region region, const SaoParams& p,
                      const Exec& exec = {});
+//! The same on a pyramid already in one buffer (no copy: what sao() itself runs).
+ImageF saoSamplePass(const ZPyramid& pyramid, const Projection& proj, Region region, const SaoParams& p,
+                     const Exec& exec = {});
 
 //! The face normals the sample pass uses (paper eq. 4, quad-pair differences), for every
 //! pixel of the z buffer; (0, 0, 0) where none can be formed. Row-major.
