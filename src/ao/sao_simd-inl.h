@@ -86,6 +86,7 @@ inline int SampleRowSimd(const SimdSampleInput& in, int y, int x0, int x1, float
         const auto ssRadius = hn::Div(radiusS, zc);
         // Hash angle phi = 10 * ((3x) ^ (y + xy)) (eq. 8), reduced to [-pi, pi] in double.
         const auto k = hn::Xor(hn::Mul(xi, hn::Set(di, 3)), hn::Add(hn::Set(di, y), hn::Mul(xi, hn::Set(di, y))));
+#if HWY_TARGET == HWY_SCALAR
         HWY_ALIGN float phiRed[hn::MaxLanes(df)];
         HWY_ALIGN std::int32_t kk[hn::MaxLanes(di)];
         hn::Store(k, di, kk);
@@ -94,6 +95,19 @@ inline int SampleRowSimd(const SimdSampleInput& in, int y, int x0, int x1, float
             phiRed[l] = float(phi - 6.283185307179586 * std::nearbyint(phi / 6.283185307179586));
         }
         const auto pr = hn::Load(df, phiRed);
+#else
+        // hashAngle() (float), widened; phi - 2 pi nearbyint(phi / 2 pi) in double, half a
+        // vector at a time: the scalar reduction's operations, so the same bits.
+        const hn::Half<decltype(df)> dh;
+        const hn::Repartition<double, decltype(df)> dd;
+        const auto twoPi = hn::Set(dd, 6.283185307179586);
+        auto reduce = [&](hn::Vec<decltype(dh)> v) {
+            const auto phi = hn::PromoteTo(dd, v);
+            return hn::DemoteTo(dh, hn::Sub(phi, hn::Mul(twoPi, hn::Round(hn::Div(phi, twoPi)))));
+        };
+        const auto phiF = hn::Mul(hn::Set(df, 10.0f), hn::ConvertTo(df, k));
+        const auto pr = hn::Combine(df, reduce(hn::UpperHalf(dh, phiF)), reduce(hn::LowerHalf(dh, phiF)));
+#endif
         const auto cphi = hn::Cos(df, pr), sphi = hn::Sin(df, pr);
         auto sum = zero;
         for (int s = 0; s < in.numSamples; ++s) {
