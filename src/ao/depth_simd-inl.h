@@ -16,30 +16,29 @@ namespace ssfx::ao::detail {
 namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
-// z for d[0 .. n); false (and nothing written for sure) when some d is outside [0, 1] or
-// NaN: the caller then takes the per-pixel loop, which names the first bad pixel.
+// z for d[0 .. n); false (z partly written) when some d is outside [0, 1] or NaN: the
+// caller then redoes the row with the per-pixel loop, which names the first bad pixel.
 inline bool DepthToZRowSimd(const float* HWY_RESTRICT d, float* HWY_RESTRICT z, int n, double c0, double c1,
                             double c2) {
     const hn::ScalableTag<double> dd;
     const hn::Rebind<float, decltype(dd)> df;  // as many floats as doubles
     const int lanes = int(hn::Lanes(dd));
     const auto zero = hn::Zero(df), one = hn::Set(df, 1.0f);
-    auto inRange = hn::FirstN(df, std::size_t(lanes));  // all true
-    for (int x = 0; x + lanes <= n; x += lanes) {
-        const auto v = hn::LoadU(df, d + x);
-        inRange = hn::And(inRange, hn::And(hn::Ge(v, zero), hn::Le(v, one)));  // false for NaN
-    }
-    for (int x = n - n % lanes; x < n; ++x)
-        if (!(d[x] >= 0.0f && d[x] <= 1.0f)) return false;
-    if (!hn::AllTrue(df, inRange)) return false;
     const auto k0 = hn::Set(dd, c0), k1 = hn::Set(dd, c1), k2 = hn::Set(dd, c2);
+    // One pass: convert and check together; on a bad value the caller redoes the row.
+    auto inRange = hn::FirstN(df, std::size_t(lanes));  // all true
     int x = 0;
     for (; x + lanes <= n; x += lanes) {
-        const auto v = hn::PromoteTo(dd, hn::LoadU(df, d + x));
+        const auto f = hn::LoadU(df, d + x);
+        inRange = hn::And(inRange, hn::And(hn::Ge(f, zero), hn::Le(f, one)));  // false for NaN
+        const auto v = hn::PromoteTo(dd, f);
         hn::StoreU(hn::DemoteTo(df, hn::Div(k0, hn::Add(hn::Mul(v, k1), k2))), df, z + x);
     }
-    for (; x < n; ++x) z[x] = float(c0 / (double(d[x]) * c1 + c2));
-    return true;
+    for (; x < n; ++x) {
+        if (!(d[x] >= 0.0f && d[x] <= 1.0f)) return false;
+        z[x] = float(c0 / (double(d[x]) * c1 + c2));
+    }
+    return hn::AllTrue(df, inRange);
 }
 
 }  // namespace HWY_NAMESPACE
