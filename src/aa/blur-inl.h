@@ -1,6 +1,6 @@
 // Highway body of blur (compiled once per SIMD target; see blur.cpp).
 //
-// Rows are converted once to float (v / 255, exact division) with one pixel of clamped
+// Rows are converted once to float (v / 255, the IEEE quotient by DivExact) with one pixel of clamped
 // padding at both ends, so the vector loop also covers the borders. Each lane is one
 // channel of one pixel; the sums run in blurChannel()'s order (no FMA), so every lane
 // equals the scalar reference; each vector is quantised as soon as it is computed.
@@ -15,6 +15,7 @@
 #include <hwy/highway.h>
 
 #include "src/aa/blur_kernel.hpp"
+#include "src/core/exact_div-inl.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace ssfx::aa::detail {
@@ -29,10 +30,11 @@ inline void ToFloatRow(const Rgba8* HWY_RESTRICT in, int w, float* HWY_RESTRICT 
     const int n = int(hn::Lanes(df));
     const auto* bytes = reinterpret_cast<const std::uint8_t*>(in);
     const int count = 4 * w;
-    const auto k255 = hn::Set(df, 255.0f);
+    const ssfx::HWY_NAMESPACE::ExactDivisor<decltype(df)> k255(df, 255.0f);
     int i = 0;
     for (; i + n <= count; i += n)
-        hn::StoreU(hn::Div(hn::ConvertTo(df, hn::PromoteTo(di, hn::LoadU(d8, bytes + i))), k255), df, out + 4 + i);
+        hn::StoreU(ssfx::HWY_NAMESPACE::DivExact(hn::ConvertTo(df, hn::PromoteTo(di, hn::LoadU(d8, bytes + i))), k255),
+                   df, out + 4 + i);
     for (; i < count; ++i) out[4 + i] = kUnorm8[bytes[i]];
     for (int c = 0; c < 4; ++c) out[c] = out[4 + c], out[4 + count + c] = out[count + c];
 }

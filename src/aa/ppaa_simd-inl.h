@@ -3,7 +3,8 @@
 //
 // Exactness: every float operation mirrors the scalar code (sample.cpp, ppaa_common.hpp)
 // in the same order and without FMA; GPU-model bilinear reads are integer work on gathered
-// texels, divided by 4080 exactly (IEEE division = the kSixteenthLevels table).
+// texels, divided by 4080 exactly (the IEEE quotient = the kSixteenthLevels table, by
+// DivExact: src/core/exact_div-inl.h).
 #if defined(SSFX_AA_PPAA_SIMD_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef SSFX_AA_PPAA_SIMD_INL_H_
 #undef SSFX_AA_PPAA_SIMD_INL_H_
@@ -14,6 +15,7 @@
 #include <hwy/highway.h>
 
 #include "src/aa/luma_driver.hpp"
+#include "src/core/exact_div-inl.h"
 #include "src/aa/luma_planes.hpp"
 #include "src/aa/ppaa_common.hpp"
 
@@ -28,6 +30,8 @@ using DU = hn::RebindToUnsigned<DF>;
 using VF = hn::Vec<DF>;
 using VI = hn::Vec<DI>;
 using VU = hn::Vec<DU>;
+using ssfx::HWY_NAMESPACE::DivExact;
+using ssfx::HWY_NAMESPACE::ExactDivisor;
 
 struct RgbV {
     VF r, g, b;
@@ -60,9 +64,9 @@ HWY_INLINE VF Channel(VU t00, VU t10, VU t01, VU t11, VI w00, VI w10, VI w01, VI
     const VI sum = hn::Add(hn::Add(hn::Add(hn::Mul(w00, byte(t00)), hn::Mul(w10, byte(t10))), hn::Mul(w01, byte(t01))),
                            hn::Mul(w11, byte(t11)));
     const VI k = hn::ShiftRight<12>(hn::Add(sum, hn::Set(di, 2048)));
-    // Tried: float(double(k) * (1 / 4080.0)), exact for every k <= 4080 but slower than
-    // vdivps on Zen 4 (blur 1.8 -> 2.2 ms, ddaa2 9.1 -> 10.4 ms), so kept the division.
-    return hn::Div(hn::ConvertTo(df, k), hn::Set(df, 4080.0f));
+    // (Tried before DivExact: float(double(k) * (1 / 4080.0)), exact too but slower than
+    // vdivps on Zen 4.)
+    return DivExact(hn::ConvertTo(df, k), ExactDivisor<DF>(df, 4080.0f));
 }
 
 // Bilinear GPU-model read at (u, v) per lane (Texture::sampleGpu).
@@ -206,23 +210,23 @@ inline void LumaPlaneRows(ImageView<const Rgba8> in, int y0, int y1, const LumaP
     const VU mask = hn::Set(du, 0xFFu);
     const VF wr = hn::Set(df, 0.299f), wg = hn::Set(df, 0.587f), wb = hn::Set(df, 0.114f);
     auto ch = [&](VU p, int shift) { return hn::And(hn::ShiftRightSame(p, shift), mask); };
-    auto lumaOf = [&](VU sr, VU sg, VU sb, float divisor) {
-        const VF k = hn::Set(df, divisor);
-        const VF r = hn::Div(hn::ConvertTo(df, hn::BitCast(di, sr)), k);
-        const VF g = hn::Div(hn::ConvertTo(df, hn::BitCast(di, sg)), k);
-        const VF b = hn::Div(hn::ConvertTo(df, hn::BitCast(di, sb)), k);
+    const ExactDivisor<DF> k510(df, 510.0f), k1020(df, 1020.0f);
+    auto lumaOf = [&](VU sr, VU sg, VU sb, const ExactDivisor<DF>& k) {
+        const VF r = DivExact(hn::ConvertTo(df, hn::BitCast(di, sr)), k);
+        const VF g = DivExact(hn::ConvertTo(df, hn::BitCast(di, sg)), k);
+        const VF b = DivExact(hn::ConvertTo(df, hn::BitCast(di, sb)), k);
         return hn::Sqrt(hn::Add(hn::Add(hn::Mul(wr, r), hn::Mul(wg, g)), hn::Mul(wb, b)));
     };
     auto load = [&](const Rgba8* p) { return hn::LoadU(du, reinterpret_cast<const std::uint32_t*>(p)); };
     auto pairV = [&](const Rgba8* a, const Rgba8* b) {
         const VU pa = load(a), pb = load(b);
         return lumaOf(hn::Add(ch(pa, 0), ch(pb, 0)), hn::Add(ch(pa, 8), ch(pb, 8)), hn::Add(ch(pa, 16), ch(pb, 16)),
-                      510.0f);
+                      k510);
     };
     auto quadV = [&](const Rgba8* a, const Rgba8* b) {  // columns c - 1, c of rows a and b
         const VU p0 = load(a), p1 = load(a + 1), p2 = load(b), p3 = load(b + 1);
         auto sum = [&](int s) { return hn::Add(hn::Add(ch(p0, s), ch(p1, s)), hn::Add(ch(p2, s), ch(p3, s))); };
-        return lumaOf(sum(0), sum(8), sum(16), 1020.0f);
+        return lumaOf(sum(0), sum(8), sum(16), k1020);
     };
     auto clampRow = [h](int y) { return y < 0 ? 0 : (y >= h ? h - 1 : y); };
     for (int y = y0; y < y1; ++y) {

@@ -1,5 +1,6 @@
 // Luma plane, vectorised with Highway (runtime dispatch to the best SIMD target).
-// Per lane the same float32 operations as ssfx::luma(): v / 255 (exact IEEE division),
+// Per lane the same float32 operations as ssfx::luma(): v / 255 (the IEEE quotient, by
+// DivExact: exact_div-inl.h),
 // then ((0.299 r + 0.587 g) + 0.114 b) without fused multiply-add, then sqrt; so the
 // plane equals the scalar reference bit for bit (tests/core/test_color.cpp).
 #undef HWY_TARGET_INCLUDE
@@ -7,6 +8,11 @@
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+#include "src/core/exact_div-inl.h"
 #include "ssfx/core/color.hpp"
 #include "ssfx/core/parallel.hpp"
 
@@ -21,19 +27,37 @@ void LumaRow(const Rgba8* HWY_RESTRICT in, float* HWY_RESTRICT out, int w) {
     const hn::RebindToSigned<decltype(df)> di;
     const int n = int(hn::Lanes(df));
     const auto mask = hn::Set(du, 0xFFu);
-    const auto k255 = hn::Set(df, 255.0f);
+    const ExactDivisor<decltype(df)> k255(df, 255.0f);
     const auto wr = hn::Set(df, 0.299f), wg = hn::Set(df, 0.587f), wb = hn::Set(df, 0.114f);
     int x = 0;
     for (; x + n <= w; x += n) {
         // One pixel per 32-bit lane, little-endian: r in the low byte.
         const auto v = hn::LoadU(du, reinterpret_cast<const std::uint32_t*>(in + x));
-        const auto r = hn::Div(hn::ConvertTo(df, hn::BitCast(di, hn::And(v, mask))), k255);
-        const auto g = hn::Div(hn::ConvertTo(df, hn::BitCast(di, hn::And(hn::ShiftRight<8>(v), mask))), k255);
-        const auto b = hn::Div(hn::ConvertTo(df, hn::BitCast(di, hn::And(hn::ShiftRight<16>(v), mask))), k255);
+        const auto r = DivExact(hn::ConvertTo(df, hn::BitCast(di, hn::And(v, mask))), k255);
+        const auto g = DivExact(hn::ConvertTo(df, hn::BitCast(di, hn::And(hn::ShiftRight<8>(v), mask))), k255);
+        const auto b = DivExact(hn::ConvertTo(df, hn::BitCast(di, hn::And(hn::ShiftRight<16>(v), mask))), k255);
         const auto y = hn::Add(hn::Add(hn::Mul(wr, r), hn::Mul(wg, g)), hn::Mul(wb, b));
         hn::StoreU(hn::Sqrt(y), df, out + x);
     }
     for (; x < w; ++x) out[x] = luma(kUnorm8[in[x].r], kUnorm8[in[x].g], kUnorm8[in[x].b]);
+}
+
+// Number of k in [0, kMax] where DivExact(k, divisor) differs from the IEEE quotient.
+std::int64_t DivExactMismatches(float divisor, int kMax) {
+    const hn::ScalableTag<float> df;
+    const hn::RebindToSigned<decltype(df)> di;
+    const int n = int(hn::Lanes(df));
+    const ExactDivisor<decltype(df)> div(df, divisor);
+    std::vector<float> got(static_cast<std::size_t>(n));
+    std::int64_t mismatches = 0;
+    for (int k0 = 0; k0 <= kMax; k0 += n) {
+        hn::StoreU(DivExact(hn::ConvertTo(df, hn::Iota(di, k0)), div), df, got.data());
+        for (int i = 0; i < n && k0 + i <= kMax; ++i) {
+            const float want = float(k0 + i) / divisor;
+            if (std::memcmp(&got[std::size_t(i)], &want, sizeof want) != 0) ++mismatches;
+        }
+    }
+    return mismatches;
 }
 
 }  // namespace HWY_NAMESPACE
@@ -41,10 +65,19 @@ void LumaRow(const Rgba8* HWY_RESTRICT in, float* HWY_RESTRICT out, int w) {
 HWY_AFTER_NAMESPACE();
 
 #if HWY_ONCE
+#include "src/core/exact_div.hpp"
+
 namespace ssfx {
 
 static_assert(std::endian::native == std::endian::little, "LumaRow assumes little-endian pixels");
 HWY_EXPORT(LumaRow);
+HWY_EXPORT(DivExactMismatches);
+
+namespace detail {
+std::int64_t divExactMismatches(float divisor, int kMax) {
+    return HWY_DYNAMIC_DISPATCH(DivExactMismatches)(divisor, kMax);
+}
+}  // namespace detail
 
 void lumaPlane(ImageView<const Rgba8> in, ImageView<float> out, const Exec& exec) {
     SSFX_ASSERT(out.width() == in.width() && out.height() == in.height());

@@ -2,6 +2,9 @@
 
 #include <cmath>
 
+#include <hwy/targets.h>
+
+#include "src/core/exact_div.hpp"
 #include "ssfx/core/color.hpp"
 #include "support/test_support.hpp"
 
@@ -35,4 +38,27 @@ TEST(Color, LumaPlaneMatchesPerPixelLuma) {
             const Rgba8 p = img(x, y);
             ASSERT_EQ(L(x, y), luma(kUnorm8[p.r], kUnorm8[p.g], kUnorm8[p.b])) << x << "," << y;
         }
+}
+
+// The kernels' reciprocal-and-correction division (src/core/exact_div-inl.h) is only
+// claimed exact for the integer ranges they divide; check every integer of each range, on
+// every SIMD target this binary has and this machine runs (the FMA targets take the fast
+// form, the others divide).
+TEST(Color, ExactDivisionIsIeeeDivisionForEveryInteger) {
+    struct Range {
+        float divisor;
+        int kMax;
+    };
+    // 255: a channel byte; 4080 = 255 x 16: a GPU-model bilinear sum (sample.cpp); 510 and
+    // 1020: sums of two and four bytes (the half-way luma planes of the PPAA searches).
+    const Range ranges[] = {{255.0f, 255}, {4080.0f, 4080}, {510.0f, 510}, {1020.0f, 1020}};
+    const auto targets = hwy::SupportedAndGeneratedTargets();
+    ASSERT_FALSE(targets.empty());
+    for (const std::int64_t target : targets) {
+        hwy::SetSupportedTargetsForTest(target);
+        for (const Range& r : ranges)
+            EXPECT_EQ(detail::divExactMismatches(r.divisor, r.kMax), 0)
+                << hwy::TargetName(target) << ": k / " << r.divisor << " for k <= " << r.kMax;
+    }
+    hwy::SetSupportedTargetsForTest(0);
 }
