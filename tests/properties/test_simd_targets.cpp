@@ -59,3 +59,21 @@ TEST(SimdTargets, Fxaa3cZeroDirectionComponentMatchesTheReference) {
         EXPECT_EQ(m.run(img.view(), {}, {}), expected) << hwy::TargetName(target);
     }
 }
+
+// The chunked kernels (fxaa3d, ddaa1, ddaa2) tile a row's interior with vectors; the last
+// chunk of a row overlaps the one before it and writes through a buffer. Every width from
+// 1 to 3 vectors + 2 puts the row's end at every position within a chunk, on every target.
+TEST(SimdTargets, EveryRowEndWithinAChunkEqualsTheReference) {
+    const ResetTargets reset;
+    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+        hwy::SetSupportedTargetsForTest(target);
+        for (const char* id : {"fxaa3d", "ddaa1", "ddaa2"}) {
+            const MethodInfo& m = methodById(id);
+            for (int w = 1; w <= 50; ++w) {
+                const auto in = test::noise(w, 4, unsigned(w));
+                ASSERT_EQ(m.run(in.view(), {}, {}), m.reference(in.view(), {}, {}))
+                    << hwy::TargetName(target) << " " << id << " width " << w;
+            }
+        }
+    }
+}
