@@ -51,8 +51,50 @@ HWY_INLINE VI WalkIndex(const LumaPlanes& planes, const hn::Mask<DI>& horizontal
     return hn::IfThenElse(horizontal, hn::IfThenElse(even, hEven, hOdd), hn::IfThenElse(even, vEven, vOdd));
 }
 
+// fxaa3d's final read, at the pixel's centre along the edge and `across` (a texture
+// coordinate) across it, when pixel centres are texels (centresAreTexels): the GPU model's
+// lerp between the two texels across the edge around the read, from contiguous loads of
+// rows y - 1, y, y + 1 (clamped) and columns x - 1, x, x + 1 instead of four gathers.
+// The bilinear sum with along-weight 0 is 256 ((256 - w) a + w b), so the read's k is
+// ((256 - w) a + w b + 8) >> 4. Returns false, writing nothing, when a lane that counts
+// reads further than one texel before its own (then the caller gathers).
+HWY_INLINE bool AcrossLerp(const Texture& tex, const hn::Mask<DF>& horizontal, VF across, int x, int y,
+                           const hn::Mask<DF>& skip, RgbV* c) {
+    const DF df;
+    const DI di;
+    const DU du;
+    const VF size = hn::IfThenElse(horizontal, hn::Set(df, float(tex.height())), hn::Set(df, float(tex.width())));
+    const VF t = hn::Sub(hn::Mul(across, size), hn::Set(df, 0.5f));  // SplitAxis' arithmetic
+    const VF fl = hn::Floor(t);
+    const VF own = hn::IfThenElse(horizontal, hn::Set(df, float(y)), hn::ConvertTo(df, hn::Iota(di, x)));
+    const VF rel = hn::Sub(fl, own);  // integers: exact
+    const auto before = hn::Eq(rel, hn::Set(df, -1.0f));
+    if (!hn::AllTrue(df, hn::Or(hn::Or(before, hn::Eq(rel, hn::Zero(df))), skip))) return false;
+    const VI w = hn::ConvertTo(di, hn::Add(hn::Mul(hn::Sub(t, fl), hn::Set(df, 256.0f)), hn::Set(df, 0.5f)));
+
+    const auto image = tex.image();
+    const int h = tex.height();
+    auto row = [&](int r) { return reinterpret_cast<const std::uint32_t*>(image.row(r < 0 ? 0 : (r >= h ? h - 1 : r))); };
+    const std::uint32_t* rc = row(y) + x;
+    const VU above = hn::LoadU(du, row(y - 1) + x), below = hn::LoadU(du, row(y + 1) + x);
+    const VU centre = hn::LoadU(du, rc), left = hn::LoadU(du, rc - 1), right = hn::LoadU(du, rc + 1);
+    const auto hor = hn::RebindMask(du, horizontal), lo = hn::RebindMask(du, before);
+    const VU a = hn::IfThenElse(lo, hn::IfThenElse(hor, above, left), centre);
+    const VU b = hn::IfThenElse(lo, centre, hn::IfThenElse(hor, below, right));
+    const VU mask = hn::Set(du, 0xFFu);
+    const ExactDivisor<DF> k4080(df, 4080.0f);
+    auto channel = [&](int shift) {
+        const VI ca = hn::BitCast(di, hn::And(hn::ShiftRightSame(a, shift), mask));
+        const VI cb = hn::BitCast(di, hn::And(hn::ShiftRightSame(b, shift), mask));
+        const VI sum = hn::Add(hn::ShiftLeft<8>(ca), hn::Mul(w, hn::Sub(cb, ca)));  // (256 - w) a + w b
+        return DivExact(hn::ConvertTo(df, hn::ShiftRight<4>(hn::Add(sum, hn::Set(di, 8)))), k4080);
+    };
+    *c = {channel(0), channel(8), channel(16)};
+    return true;
+}
+
 // fxaa3d for pixels [x, x + N) of row y, 1 <= x, x + N <= W - 1.
-HWY_INLINE void Fxaa3dChunk(const Texture& tex, const ImageF& L, const LumaPlanes& planes, int x, int y,
+HWY_INLINE void Fxaa3dChunk(const Texture& tex, const ImageF& L, const LumaPlanes& planes, bool lerp, int x, int y,
                             const std::uint8_t* exitMask, const Fxaa3dParams& p, const Rgba8* src, Rgba8* dst) {
     const DF df;
     const DI di;
@@ -147,15 +189,19 @@ HWY_INLINE void Fxaa3dChunk(const Texture& tex, const ImageF& L, const LumaPlane
     const VF offset = hn::Max(hn::IfThenElseZero(goodSpan, pixelOffset), sub);
 
     const VF shift = hn::Mul(offset, lengthSign);
-    const RgbV c = SampleGpu(tex, hn::IfThenElse(s.horizontal, u, hn::Add(u, shift)),
-                             hn::IfThenElse(s.horizontal, hn::Add(v, shift), v));
+    const VF su = hn::IfThenElse(s.horizontal, u, hn::Add(u, shift));
+    const VF sv = hn::IfThenElse(s.horizontal, hn::Add(v, shift), v);
+    RgbV c;
+    if (!lerp || !AcrossLerp(tex, s.horizontal, hn::IfThenElse(s.horizontal, sv, su), x, y, skip, &c))
+        c = SampleGpu(tex, su, sv);
     StoreRgb(c, x, exitMask, src, dst);
 }
 
-inline void Fxaa3dRowSimd(const Texture& tex, const ImageF& L, const LumaPlanes& planes, int y,
+// lerp: centresAreTexels(tex), so the final reads may take AcrossLerp.
+inline void Fxaa3dRowSimd(const Texture& tex, const ImageF& L, const LumaPlanes& planes, bool lerp, int y,
                           std::uint8_t* exitMask, const Fxaa3dParams& p, const Rgba8* src, Rgba8* dst) {
     RowChunks(L.width(), exitMask,
-              [&](int x) { Fxaa3dChunk(tex, L, planes, x, y, exitMask, p, src, dst); });
+              [&](int x) { Fxaa3dChunk(tex, L, planes, lerp, x, y, exitMask, p, src, dst); });
 }
 
 }  // namespace HWY_NAMESPACE

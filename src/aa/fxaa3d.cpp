@@ -155,8 +155,9 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Fxaa3dParams& p,
                                     [&] { return walkReadsArePlaneReads(tex, p.paperSearchQuirk); }) &&
                         planesFitGatherIndices(in.width(), in.height());
     const LumaPlanes planes = vector ? scratchLumaPlanes(in, true, exec) : LumaPlanes{};
+    const bool lerp = vector && oncePerSize(in.width(), in.height(), -1, [&] { return centresAreTexels(tex); });
     auto rows = [&](int y, std::uint8_t* mask, const Rgba8* src, Rgba8* dst) {
-        if (vector) HWY_DYNAMIC_DISPATCH(Fxaa3dRowSimd)(tex, L, planes, y, mask, p, src, dst);
+        if (vector) HWY_DYNAMIC_DISPATCH(Fxaa3dRowSimd)(tex, L, planes, lerp, y, mask, p, src, dst);
     };
     runLumaMethod(
         in, out, L, p.edgeThresholdMin, p.edgeThreshold, exec, scalar,

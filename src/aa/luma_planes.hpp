@@ -74,6 +74,22 @@ bool acrossIsHalfWay(int n, float inv, float c, int i, const Split& split) {
     return true;
 }
 
+//! A pixel centre, split on its axis, is that texel alone: index i with weight 0 or index
+//! i - 1 with weight 256 (clamped). Then a read at a pixel's centre on one axis and
+//! anywhere on the other is a lerp between two texels of the pixel's row or column: this
+//! is how fxaa3d's final read avoids gathers. True for every realistic size; O(W + H).
+inline bool centresAreTexels(const Texture& tex) {
+    return forBothAxes(tex, [](int n, float, auto centre, auto split) {
+        for (int i = 0; i < n; ++i) {
+            const Texture::AxisPos a = split(centre(i));
+            const int lo = a.index < 0 ? 0 : (a.index >= n ? n - 1 : a.index);
+            const int hi = a.index + 1 < 0 ? 0 : (a.index + 1 >= n ? n - 1 : a.index + 1);
+            if (!((a.w == 0 && lo == i) || (a.w == 256 && hi == i))) return false;
+        }
+        return true;
+    });
+}
+
 //! check() for an image size and a method option, remembered per calling thread for the
 //! last size: the per-size exactness checks are O(W + H) but run once per frame otherwise
 //! (a frame loop at one size then pays for them once).

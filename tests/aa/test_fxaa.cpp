@@ -40,6 +40,7 @@ TEST(Fxaa3d, WalkReadsArePlaneReadsForRealisticSizes) {
         const Texture tex(img.view(), Filtering::Gpu);
         EXPECT_TRUE(aa::detail::walkReadsArePlaneReads(tex, true)) << w << "x" << h;
         EXPECT_TRUE(aa::detail::walkReadsArePlaneReads(tex, false)) << w << "x" << h;
+        EXPECT_TRUE(aa::detail::centresAreTexels(tex)) << w << "x" << h;  // the final read's lerp
     }
 }
 
@@ -50,6 +51,27 @@ TEST(Fxaa3d, FastPathMatchesTheReference) {
         lottes.paperSearchQuirk = false;
         EXPECT_EQ(aa::fxaa3d(img.view(), lottes), aa::fxaa3dReference(img.view(), lottes));
     }
+}
+
+// With subpix = 1, a bright pixel whose cross neighbours are mid-grey (the side ahead a
+// little darker) and whose corners are black reads a whole pixel across, towards the side
+// ahead: past the lerp between the two texels around the pixel, so its vector chunk takes
+// the gathered read. Both must give the reference's bytes.
+TEST(Fxaa3d, FinalReadAWholePixelAcrossMatchesTheReference) {
+    ImageRgba8 img(40, 12, Rgba8{0, 0, 0, 255});
+    auto grey = [](int g) { return Rgba8{std::uint8_t(g), std::uint8_t(g), std::uint8_t(g), 255}; };
+    for (int x : {10, 25}) {  // two orientations: the darker side below, or to the right
+        const bool vertical = x == 25;
+        img(x, 5) = grey(255);
+        img(x, 4) = grey(110), img(x - 1, 5) = grey(105), img(x + 1, 5) = grey(vertical ? 100 : 105);
+        img(x, 6) = grey(vertical ? 105 : 100);
+        if (vertical) img(x, 4) = grey(105), img(x - 1, 5) = grey(110);
+    }
+    aa::Fxaa3dParams full;
+    full.subpix = 1.0f;
+    const ImageRgba8 expected = aa::fxaa3dReference(img.view(), full);
+    EXPECT_NE(expected(10, 5), img(10, 5));
+    EXPECT_EQ(aa::fxaa3d(img.view(), full), expected);
 }
 
 TEST(Fxaa3d, EarlyExitLeavesLowContrastUntouched) {
