@@ -67,8 +67,15 @@ HWY_INLINE void DiffuseAndStore(const Texture& tex, const DiffusionV& d, float m
     const VF u = CentreU(tex, x);
     const VF v = hn::Set(df, tex.centreV(y));
     const VF dU = hn::Mul(sx, hn::Set(df, tex.invW())), dV = hn::Mul(sy, hn::Set(df, tex.invH()));
-    const RgbV a = SampleGpu(tex, hn::Add(hn::Sub(u, dU), offU), hn::Add(hn::Sub(v, dV), offV));
-    const RgbV b = SampleGpu(tex, hn::Add(hn::Add(u, dU), offU), hn::Add(hn::Add(v, dV), offV));
+    const VF au = hn::Add(hn::Sub(u, dU), offU), av = hn::Add(hn::Sub(v, dV), offV);
+    const VF bu = hn::Add(hn::Add(u, dU), offU), bv = hn::Add(hn::Add(v, dV), offV);
+    // The reads stay within a texel of the pixel (maxDiffusion <= 1 and, in ddaa2, the
+    // diffusion shrinking as the edge offset grows), so they nearly always come from the
+    // pixel's 3 x 3 texels; the rest are gathered.
+    const auto skip = ExitLanes(exitMask, x);
+    RgbV a, b;
+    if (!NearSample(tex, au, av, x, y, skip, &a)) a = SampleGpu(tex, au, av);
+    if (!NearSample(tex, bu, bv, x, y, skip, &b)) b = SampleGpu(tex, bu, bv);
     const VF half = hn::Set(df, 0.5f);
     StoreRgb({hn::Mul(hn::Add(a.r, b.r), half), hn::Mul(hn::Add(a.g, b.g), half), hn::Mul(hn::Add(a.b, b.b), half)},
              x, exitMask, src, dst);

@@ -89,6 +89,48 @@ HWY_INLINE RgbV SampleGpu(const Texture& tex, VF u, VF v) {
             Channel(t00, t10, t01, t11, w00, w10, w01, w11, 16)};
 }
 
+// The GPU-model read at (u, v) per lane, from the 3 x 3 texels around each lane's pixel
+// (row y, pixels x .. x + N - 1 with 1 <= x, x + N <= W - 1), loaded contiguously rather
+// than gathered. Valid when every lane that counts (not in `skip`) reads within a texel of
+// its pixel: floor(u W - 0.5) and floor(v H - 0.5) are its own column and row or the ones
+// before. Otherwise returns false and writes nothing (the caller gathers). Same indices,
+// clamping (rows only: columns stay inside) and weights as SampleGpu, so the same result.
+HWY_INLINE bool NearSample(const Texture& tex, VF u, VF v, int x, int y, const hn::Mask<DF>& skip, RgbV* c) {
+    const DF df;
+    const DI di;
+    const DU du;
+    const VF half = hn::Set(df, 0.5f), k256 = hn::Set(df, 256.0f), minusOne = hn::Set(df, -1.0f);
+    const VF tx = hn::Sub(hn::Mul(u, hn::Set(df, float(tex.width()))), half);
+    const VF ty = hn::Sub(hn::Mul(v, hn::Set(df, float(tex.height()))), half);
+    const VF fx = hn::Floor(tx), fy = hn::Floor(ty);
+    const VF relX = hn::Sub(fx, hn::ConvertTo(df, hn::Iota(di, x))), relY = hn::Sub(fy, hn::Set(df, float(y)));
+    const auto loX = hn::Eq(relX, minusOne), loY = hn::Eq(relY, minusOne);
+    const auto inX = hn::Or(loX, hn::Eq(relX, hn::Zero(df))), inY = hn::Or(loY, hn::Eq(relY, hn::Zero(df)));
+    if (!hn::AllTrue(df, hn::Or(hn::And(inX, inY), skip))) return false;
+    const VI wx = hn::ConvertTo(di, hn::Add(hn::Mul(hn::Sub(tx, fx), k256), half));
+    const VI wy = hn::ConvertTo(di, hn::Add(hn::Mul(hn::Sub(ty, fy), k256), half));
+
+    const auto image = tex.image();
+    const int h = tex.height();
+    const auto lx = hn::RebindMask(du, loX), ly = hn::RebindMask(du, loY);
+    VU left[3], right[3];  // per row y - 1, y, y + 1: the texel pair (x0, x1) of each lane
+    for (int r = 0; r < 3; ++r) {
+        const int row = std::clamp(y - 1 + r, 0, h - 1);
+        const auto* p = reinterpret_cast<const std::uint32_t*>(image.row(row)) + x;
+        const VU a = hn::LoadU(du, p - 1), b = hn::LoadU(du, p), d = hn::LoadU(du, p + 1);
+        left[r] = hn::IfThenElse(lx, a, b);
+        right[r] = hn::IfThenElse(lx, b, d);
+    }
+    const VU t00 = hn::IfThenElse(ly, left[0], left[1]), t10 = hn::IfThenElse(ly, right[0], right[1]);
+    const VU t01 = hn::IfThenElse(ly, left[1], left[2]), t11 = hn::IfThenElse(ly, right[1], right[2]);
+    const VI k = hn::Set(di, 256);
+    const VI nx = hn::Sub(k, wx), ny = hn::Sub(k, wy);
+    const VI w00 = hn::Mul(nx, ny), w10 = hn::Mul(wx, ny), w01 = hn::Mul(nx, wy), w11 = hn::Mul(wx, wy);
+    *c = {Channel(t00, t10, t01, t11, w00, w10, w01, w11, 0), Channel(t00, t10, t01, t11, w00, w10, w01, w11, 8),
+          Channel(t00, t10, t01, t11, w00, w10, w01, w11, 16)};
+    return true;
+}
+
 // toUnorm8 per lane: floor(v * 255 + 0.5) of the *exact* product, in float32 only.
 // v * 255 = v * 256 - v with v * 256 exact; Fast2Sum and TwoSum recover the rounding
 // errors of the subtraction and of the + 0.5, and their sum E decides the two cases where

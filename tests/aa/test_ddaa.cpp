@@ -81,3 +81,20 @@ TEST(Ddaa, FastPathMatchesTheReference) {
     EXPECT_EQ(aa::ddaa1(img.view()), aa::ddaa1Reference(img.view()));
     EXPECT_EQ(aa::ddaa2(img.view()), aa::ddaa2Reference(img.view()));
 }
+
+// At maxDiffusion = 1, a vertical step edge diffuses a whole pixel along it (direction
+// (0, +-1) at full strength): one of the two reads lands a texel further than the pixel's
+// 3 x 3 texels, and the vector path gathers it. Same bytes as the reference either way.
+TEST(Ddaa, DiffusionReadsAWholePixelAwayMatchTheReference) {
+    ImageRgba8 img(40, 9, Rgba8{20, 20, 20, 255});
+    for (int y = 0; y < 9; ++y)
+        for (int x = 21; x < 40; ++x) img(x, y) = {230, 230, 230, 255};
+    aa::Ddaa1Params far1;
+    far1.maxDiffusion = 1.0f;
+    aa::Ddaa2Params far2;
+    far2.maxDiffusion = 1.0f;
+    for (const auto& in : {img, test::noise(61, 29, 8)}) {
+        EXPECT_EQ(aa::ddaa1(in.view(), far1), aa::ddaa1Reference(in.view(), far1));
+        EXPECT_EQ(aa::ddaa2(in.view(), far2), aa::ddaa2Reference(in.view(), far2));
+    }
+}
