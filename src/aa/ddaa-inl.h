@@ -82,7 +82,7 @@ HWY_INLINE void DiffuseAndStore(const Texture& tex, const DiffusionV& d, float m
 }
 
 // ddaa1 for pixels [x, x + N) of row y, 1 <= x, x + N <= W - 1.
-HWY_INLINE void Ddaa1Chunk(const Texture& tex, const ImageF& L, int x, int y, const std::uint8_t* exitMask,
+HWY_INLINE void Ddaa1Chunk(const Texture& tex, const LumaRows& L, int x, int y, const std::uint8_t* exitMask,
                            const Ddaa1Params& p, const Rgba8* src, Rgba8* dst) {
     const DF df;
     const DiffusionV d = Diffusion(LoadNeighbourhood(L, x, y), p);
@@ -160,7 +160,7 @@ HWY_INLINE void SearchBothSides(const LumaPlanes& planes, const hn::Mask<DF>& ho
 }
 
 // ddaa2 for pixels [x, x + N) of row y, 1 <= x, x + N <= W - 1.
-HWY_INLINE void Ddaa2Chunk(const Texture& tex, const ImageF& L, const LumaPlanes& planes, int x, int y,
+HWY_INLINE void Ddaa2Chunk(const Texture& tex, const LumaRows& L, const LumaPlanes& planes, int x, int y,
                            const std::uint8_t* exitMask, const Ddaa2Params& p, const Rgba8* src, Rgba8* dst) {
     const DF df;
     const NeighbourhoodV n = LoadNeighbourhood(L, x, y);
@@ -196,14 +196,14 @@ HWY_INLINE void Ddaa2Chunk(const Texture& tex, const ImageF& L, const LumaPlanes
     DiffuseAndStore(tex, d, p.maxDiffusion, offU, offV, x, y, exitMask, src, dst);
 }
 
-inline void Ddaa1RowSimd(const Texture& tex, const ImageF& L, int y, std::uint8_t* exitMask, const Ddaa1Params& p,
+inline void Ddaa1RowSimd(const Texture& tex, const LumaRows& L, int y, std::uint8_t* exitMask, const Ddaa1Params& p,
                          const Rgba8* src, Rgba8* dst) {
-    RowChunks(L.width(), exitMask, [&](int x) { Ddaa1Chunk(tex, L, x, y, exitMask, p, src, dst); });
+    RowChunks(L.width, exitMask, [&](int x) { Ddaa1Chunk(tex, L, x, y, exitMask, p, src, dst); });
 }
 
-inline void Ddaa2RowSimd(const Texture& tex, const ImageF& L, const LumaPlanes& planes, int y,
+inline void Ddaa2RowSimd(const Texture& tex, const LumaRows& L, const LumaPlanes& planes, int y,
                          std::uint8_t* exitMask, const Ddaa2Params& p, const Rgba8* src, Rgba8* dst) {
-    RowChunks(L.width(), exitMask,
+    RowChunks(L.width, exitMask,
               [&](int x) { Ddaa2Chunk(tex, L, planes, x, y, exitMask, p, src, dst); });
 }
 

@@ -35,20 +35,21 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Ddaa1Params& p, 
     checkOutput("ddaa1", in, out);
     validateDdaa1("ddaa1", p);
     const Texture tex(in, p.filtering);
-    ImageF fresh;
     // The colour-aware measure (chromaWeight > 0) runs the scalar kernel, on all threads.
     const bool scalar = reference || p.chromaWeight != 0.0f;
-    const ImageF& L = methodLumaPlane(in, scalar, exec, fresh, p.chromaWeight);
+    const ImageF L = scalar ? lumaPlaneReference(in, p.chromaWeight) : ImageF{};
     auto pixel = [&](int x, int y, const Luma3x3& n, float) {
         const Diffusion d = diffusion(n, edgeSides(n), p);
         return diffuse(tex, x, y, d, p.maxDiffusion, 0.0f, 0.0f);
     };
     // The vector kernel across pixels covers the GPU filtering model (the default).
-    auto rows = [&](int y, std::uint8_t* mask, const Rgba8* src, Rgba8* dst) {
+    auto rows = [&](int y, const LumaRows& band, const LumaPlanes&, std::uint8_t* mask, const Rgba8* src,
+                    Rgba8* dst) {
         if (!scalar && p.filtering == Filtering::Gpu)
-            HWY_DYNAMIC_DISPATCH(Ddaa1RowSimd)(tex, L, y, mask, p, src, dst);
+            HWY_DYNAMIC_DISPATCH(Ddaa1RowSimd)(tex, band, y, mask, p, src, dst);
     };
-    runLumaMethod(in, out, L, p.edgeThresholdMin, p.edgeThreshold, exec, scalar, pixel, rows);
+    runLumaMethod(in, out, scalar ? &L : nullptr, p.edgeThresholdMin, p.edgeThreshold, exec, PlaneNeeds{}, pixel,
+                  rows);
 }
 }  // namespace
 }  // namespace detail

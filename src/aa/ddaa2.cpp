@@ -150,21 +150,24 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Ddaa2Params& p, 
     checkOutput("ddaa2", in, out);
     validate(p);
     const Texture tex(in, p.filtering);
-    ImageF fresh;
     // The colour-aware measure (chromaWeight > 0) runs the scalar kernel, on all threads.
     const bool scalar = reference || p.chromaWeight != 0.0f;
-    const ImageF& L = methodLumaPlane(in, scalar, exec, fresh, p.chromaWeight);
+    const ImageF L = scalar ? lumaPlaneReference(in, p.chromaWeight) : ImageF{};
     // The vector kernel across pixels: GPU filtering model, and search reads provably equal
     // to pair-plane lookups for this size (else everything takes the scalar kernel).
     const bool vector = !scalar && p.filtering == Filtering::Gpu &&
                         oncePerSize(in.width(), in.height(), p.searchRounds,
                                     [&] { return searchReadsArePairReads(tex, p.searchRounds); }) &&
                         planesFitGatherIndices(in.width(), in.height());
-    const LumaPlanes planes = vector ? scratchLumaPlanes(in, false, exec) : LumaPlanes{};
-    auto rows = [&](int y, std::uint8_t* mask, const Rgba8* src, Rgba8* dst) {
-        if (vector) HWY_DYNAMIC_DISPATCH(Ddaa2RowSimd)(tex, L, planes, y, mask, p, src, dst);
+    // The search reads up to 3 searchRounds texels along the edge: plane rows y - 3 r .. y + 3 r.
+    PlaneNeeds needs;
+    needs.planes = vector;
+    needs.reach = 3 * p.searchRounds + 1;
+    auto rows = [&](int y, const LumaRows& band, const LumaPlanes& planes, std::uint8_t* mask, const Rgba8* src,
+                    Rgba8* dst) {
+        if (vector) HWY_DYNAMIC_DISPATCH(Ddaa2RowSimd)(tex, band, planes, y, mask, p, src, dst);
     };
-    runLumaMethod(in, out, L, p.edgeThresholdMin, p.edgeThreshold, exec, scalar,
+    runLumaMethod(in, out, scalar ? &L : nullptr, p.edgeThresholdMin, p.edgeThreshold, exec, needs,
                   [&](int x, int y, const Luma3x3& n, float) {
                       const EdgeSides s = edgeSides(n);
                       Diffusion d = diffusion(n, s, p);

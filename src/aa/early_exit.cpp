@@ -45,6 +45,9 @@ void ExitRow(const float* HWY_RESTRICT above, const float* HWY_RESTRICT row, con
 HWY_AFTER_NAMESPACE();
 
 #if HWY_ONCE
+#include <algorithm>
+#include <vector>
+
 namespace ssfx::aa::detail {
 
 HWY_EXPORT(ExitRow);
@@ -56,12 +59,17 @@ const ImageF& scratchLumaPlane(ImageView<const Rgba8> in, const Exec& exec) {
     return plane;
 }
 
-void earlyExitRow(const ImageF& L, int y, float thresholdMin, float threshold, std::uint8_t* exitMask) {
-    const int h = L.height(), w = L.width();
-    const float* above = L.data() + std::size_t(y > 0 ? y - 1 : 0) * std::size_t(w);
-    const float* row = L.data() + std::size_t(y) * std::size_t(w);
-    const float* below = L.data() + std::size_t(y + 1 < h ? y + 1 : h - 1) * std::size_t(w);
-    HWY_DYNAMIC_DISPATCH(ExitRow)(above, row, below, w, thresholdMin, threshold, exitMask);
+LumaRows bandLumaRows(ImageView<const Rgba8> in, int y0, int y1) {
+    thread_local std::vector<float> buffer;
+    const int first = std::max(0, y0 - 1), last = std::min(in.height(), y1 + 1);
+    buffer.resize(std::size_t(last - first) * std::size_t(in.width()));
+    const ImageView<const Rgba8> rows(in.row(first), in.width(), last - first, in.stride());
+    lumaPlane(rows, ImageView<float>(buffer.data(), in.width(), last - first), Exec{1});
+    return {buffer.data(), in.width(), in.height(), first};
+}
+
+void earlyExitRow(const LumaRows& L, int y, float thresholdMin, float threshold, std::uint8_t* exitMask) {
+    HWY_DYNAMIC_DISPATCH(ExitRow)(L.row(y - 1), L.row(y), L.row(y + 1), L.width, thresholdMin, threshold, exitMask);
 }
 
 }  // namespace ssfx::aa::detail

@@ -35,19 +35,25 @@ HWY_INLINE VI WalkIndex(const LumaPlanes& planes, const hn::Mask<DI>& horizontal
     const auto even = hn::Eq(hn::And(hs, one), zero);
     const VI whole = hn::ShiftRight<1>(hs);             // hs / 2 for even hs
     const VI upper = hn::ShiftRight<1>(hn::Add(hs, one));  // (hs + 1) / 2 for odd hs
-    const VI baseV = hn::Set(di, int(planes.rowV(0))), baseQ = hn::Set(di, int(planes.rowQ(0)));
+    // Plane rows relative to the band's first row.
+    const VI baseV = hn::Set(di, int(planes.rowV(planes.first))), baseQ = hn::Set(di, int(planes.rowQ(planes.first)));
+    const VI first = hn::Set(di, planes.first);
+    const VI rowH = hn::Sub(acrossH, first);
     // Horizontal edges: along x.
-    const VI hEven = hn::Add(hn::Mul(acrossH, hn::Set(di, planes.width)),
+    const VI hEven = hn::Add(hn::Mul(rowH, hn::Set(di, planes.width)),
                              hn::Min(hn::Max(hn::Add(xv, whole), zero), hn::Set(di, planes.width - 1)));
-    const VI hOdd = hn::Add(hn::Add(baseQ, hn::Mul(acrossH, wq)),
+    const VI hOdd = hn::Add(hn::Add(baseQ, hn::Mul(rowH, wq)),
                             hn::Min(hn::Max(hn::Add(xv, upper), zero), hn::Set(di, planes.width)));
     // Vertical edges: along y.
     const VI yv = hn::Set(di, y);
     const VI vEven = hn::Add(
-        hn::Add(baseV, hn::Mul(hn::Min(hn::Max(hn::Add(yv, whole), zero), hn::Set(di, planes.height - 1)), wq)),
+        hn::Add(baseV,
+                hn::Mul(hn::Sub(hn::Min(hn::Max(hn::Add(yv, whole), zero), hn::Set(di, planes.height - 1)), first), wq)),
         acrossV);
     const VI vOdd = hn::Add(
-        hn::Add(baseQ, hn::Mul(hn::Min(hn::Max(hn::Add(yv, upper), zero), hn::Set(di, planes.height)), wq)), acrossV);
+        hn::Add(baseQ,
+                hn::Mul(hn::Sub(hn::Min(hn::Max(hn::Add(yv, upper), zero), hn::Set(di, planes.height)), first), wq)),
+        acrossV);
     return hn::IfThenElse(horizontal, hn::IfThenElse(even, hEven, hOdd), hn::IfThenElse(even, vEven, vOdd));
 }
 
@@ -94,7 +100,7 @@ HWY_INLINE bool AcrossLerp(const Texture& tex, const hn::Mask<DF>& horizontal, V
 }
 
 // fxaa3d for pixels [x, x + N) of row y, 1 <= x, x + N <= W - 1.
-HWY_INLINE void Fxaa3dChunk(const Texture& tex, const ImageF& L, const LumaPlanes& planes, bool lerp, int x, int y,
+HWY_INLINE void Fxaa3dChunk(const Texture& tex, const LumaRows& L, const LumaPlanes& planes, bool lerp, int x, int y,
                             const std::uint8_t* exitMask, const Fxaa3dParams& p, const Rgba8* src, Rgba8* dst) {
     const DF df;
     const DI di;
@@ -198,9 +204,9 @@ HWY_INLINE void Fxaa3dChunk(const Texture& tex, const ImageF& L, const LumaPlane
 }
 
 // lerp: centresAreTexels(tex), so the final reads may take AcrossLerp.
-inline void Fxaa3dRowSimd(const Texture& tex, const ImageF& L, const LumaPlanes& planes, bool lerp, int y,
+inline void Fxaa3dRowSimd(const Texture& tex, const LumaRows& L, const LumaPlanes& planes, bool lerp, int y,
                           std::uint8_t* exitMask, const Fxaa3dParams& p, const Rgba8* src, Rgba8* dst) {
-    RowChunks(L.width(), exitMask,
+    RowChunks(L.width, exitMask,
               [&](int x) { Fxaa3dChunk(tex, L, planes, lerp, x, y, exitMask, p, src, dst); });
 }
 

@@ -61,6 +61,11 @@ bool walkReadsArePlaneReads(const Texture& tex, bool quirk) {
 
 namespace {
 
+// The walk reads at most 37 half pixels along its edge (the steps before its last read:
+// 2 x (1 + 1 + 1 + 1 + 1 + 1.5 + 2 + 2 + 2 + 2 + 4)), so vertical edges read plane rows
+// y - 18 .. y + 19: a band's planes hold 19 rows either side.
+constexpr int kWalkReachRows = 19;
+
 // Step after each unsuccessful read, in pixels: 1 for the first five, then skipping.
 // Skipping is what gives FXAA its stipple artifacts (DDAA paper Fig. 7); kept: baseline.
 constexpr float kSteps[12] = {1.0f, 1.0f, 1.0f, 1.0f, 1.0f, 1.5f, 2.0f, 2.0f, 2.0f, 2.0f, 4.0f, 8.0f};
@@ -144,23 +149,25 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Fxaa3dParams& p,
     checkOutput("fxaa3d", in, out);
     validate(p);
     const Texture tex(in, p.filtering);
-    ImageF fresh;
     // The colour-aware measure (chromaWeight > 0) runs the scalar kernel, on all threads.
     const bool scalar = reference || p.chromaWeight != 0.0f;
-    const ImageF& L = methodLumaPlane(in, scalar, exec, fresh, p.chromaWeight);
+    const ImageF L = scalar ? lumaPlaneReference(in, p.chromaWeight) : ImageF{};
     // The vector kernel across pixels: GPU filtering model, and walk reads provably equal to
     // plane lookups for this size (else everything takes the scalar kernel).
     const bool vector = !scalar && p.filtering == Filtering::Gpu &&
                         oncePerSize(in.width(), in.height(), p.paperSearchQuirk,
                                     [&] { return walkReadsArePlaneReads(tex, p.paperSearchQuirk); }) &&
                         planesFitGatherIndices(in.width(), in.height());
-    const LumaPlanes planes = vector ? scratchLumaPlanes(in, true, exec) : LumaPlanes{};
     const bool lerp = vector && oncePerSize(in.width(), in.height(), -1, [&] { return centresAreTexels(tex); });
-    auto rows = [&](int y, std::uint8_t* mask, const Rgba8* src, Rgba8* dst) {
-        if (vector) HWY_DYNAMIC_DISPATCH(Fxaa3dRowSimd)(tex, L, planes, lerp, y, mask, p, src, dst);
+    PlaneNeeds needs;
+    needs.planes = needs.quad = vector;
+    needs.reach = kWalkReachRows;
+    auto rows = [&](int y, const LumaRows& band, const LumaPlanes& planes, std::uint8_t* mask, const Rgba8* src,
+                    Rgba8* dst) {
+        if (vector) HWY_DYNAMIC_DISPATCH(Fxaa3dRowSimd)(tex, band, planes, lerp, y, mask, p, src, dst);
     };
     runLumaMethod(
-        in, out, L, p.edgeThresholdMin, p.edgeThreshold, exec, scalar,
+        in, out, scalar ? &L : nullptr, p.edgeThresholdMin, p.edgeThreshold, exec, needs,
         [&](int x, int y, const Luma3x3& n, float range) { return fxaa3dPixel(tex, x, y, n, range, p); }, rows);
 }
 

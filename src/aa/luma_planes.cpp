@@ -7,6 +7,7 @@
 #include "src/aa/ppaa_simd-inl.h"
 
 #if HWY_ONCE
+#include <algorithm>
 #include <vector>
 
 #include "src/aa/luma_planes.hpp"
@@ -15,14 +16,14 @@ namespace ssfx::aa::detail {
 
 HWY_EXPORT(LumaPlaneRows);
 
-LumaPlanes scratchLumaPlanes(ImageView<const Rgba8> in, bool withQuad, const Exec& exec) {
+LumaPlanes bandLumaPlanes(ImageView<const Rgba8> in, int y0, int y1, int reach, bool withQuad) {
     thread_local std::vector<float> buffer;
     LumaPlanes planes{nullptr, in.width(), in.height(), withQuad};
-    const std::size_t quadSize = withQuad ? std::size_t(in.height() + 1) * std::size_t(in.width() + 1) : 0;
-    buffer.resize(planes.sizeH() + planes.sizeV() + quadSize);
+    planes.first = std::max(0, y0 - reach);
+    planes.rows = std::min(in.height(), y1 + reach) - planes.first + 1;
+    buffer.resize(planes.size());
     planes.data = buffer.data();
-    parallelRows(in.height(), exec,
-                 [&](int y0, int y1) { HWY_DYNAMIC_DISPATCH(LumaPlaneRows)(in, y0, y1, planes); });
+    HWY_DYNAMIC_DISPATCH(LumaPlaneRows)(in, planes);
     return planes;
 }
 

@@ -18,18 +18,23 @@
 namespace ssfx::aa::detail {
 
 //! Layout, with clamp-to-edge folded in (index -1 and W/H stand for the edge texel twice):
-//!  H: (H + 1) rows x W: row r, column x = half-way between pixels (x, r - 1) and (x, r);
-//!  V: H rows x (W + 1): row y, column c = half-way between pixels (c - 1, y) and (c, y);
-//!  Q (optional): (H + 1) x (W + 1): half-way between the four pixels around corner (c, r).
+//!  H: row r (0 <= r <= H), column x = half-way between pixels (x, r - 1) and (x, r);
+//!  V: row y (0 <= y < H), column c (0 <= c <= W) = half-way between pixels (c - 1, y), (c, y);
+//!  Q (optional): row r, column c = half-way between the four pixels around corner (c, r).
+//! A band holds plane rows [first, first + rows) of each (V: those below H), one plane
+//! after the other; the methods compute a band per row block, so the rows they read come
+//! from cache rather than from frame-sized planes.
 struct LumaPlanes {
     const float* data = nullptr;
-    int width = 0, height = 0;
+    int width = 0, height = 0;  //!< of the image
     bool quad = false;
-    std::size_t sizeH() const { return std::size_t(height + 1) * std::size_t(width); }
-    std::size_t sizeV() const { return std::size_t(height) * std::size_t(width + 1); }
-    std::size_t rowH(int r) const { return std::size_t(r) * std::size_t(width); }
-    std::size_t rowV(int y) const { return sizeH() + std::size_t(y) * std::size_t(width + 1); }
-    std::size_t rowQ(int r) const { return sizeH() + sizeV() + std::size_t(r) * std::size_t(width + 1); }
+    int first = 0, rows = 0;
+    std::size_t sizeH() const { return std::size_t(rows) * std::size_t(width); }
+    std::size_t sizeV() const { return std::size_t(rows) * std::size_t(width + 1); }
+    std::size_t rowH(int r) const { return std::size_t(r - first) * std::size_t(width); }
+    std::size_t rowV(int y) const { return sizeH() + std::size_t(y - first) * std::size_t(width + 1); }
+    std::size_t rowQ(int r) const { return sizeH() + sizeV() + std::size_t(r - first) * std::size_t(width + 1); }
+    std::size_t size() const { return sizeH() + sizeV() + (quad ? sizeV() : 0); }
     bool hasQuad() const { return quad; }
 };
 
@@ -45,7 +50,8 @@ inline float quadLuma(const Rgba8& a, const Rgba8& b, const Rgba8& c, const Rgba
                 kSixteenthLevels[std::size_t(4 * (a.b + b.b + c.b + d.b))]);
 }
 
-//! The vector kernels index the planes with int32 gather indices.
+//! The vector kernels index the planes with int32 gather indices (a band holds at most all
+//! rows).
 inline bool planesFitGatherIndices(int width, int height) {
     return std::int64_t(width + 1) * std::int64_t(height + 1) * 3 < std::int64_t(INT32_MAX);
 }
@@ -107,8 +113,9 @@ bool oncePerSize(int width, int height, int option, const Check& check) {
 //! (then its vector kernel runs; otherwise the scalar one). In fxaa3d.cpp.
 bool walkReadsArePlaneReads(const Texture& tex, bool paperSearchQuirk);
 
-//! The planes of `in` (SIMD, threaded) in a buffer kept per calling thread and reused
-//! while the size stays the same. Valid until the next call on the same thread.
-LumaPlanes scratchLumaPlanes(ImageView<const Rgba8> in, bool withQuad, const Exec& exec);
+//! The plane rows that pixel rows [y0, y1) read when their searches go at most `reach`
+//! rows away (clamped to the planes), computed (SIMD) into a buffer kept per calling
+//! thread. Valid until the next call on the same thread.
+LumaPlanes bandLumaPlanes(ImageView<const Rgba8> in, int y0, int y1, int reach, bool withQuad);
 
 }  // namespace ssfx::aa::detail

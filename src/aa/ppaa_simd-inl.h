@@ -161,15 +161,20 @@ HWY_INLINE VI Quantize(VF v) {
 struct NeighbourhoodV {
     VF C, W, E, S, N, SW, NW, SE, NE;
 };
-HWY_INLINE NeighbourhoodV LoadNeighbourhood(const ImageF& L, int x, int y) {
+HWY_INLINE NeighbourhoodV LoadNeighbourhood(const float* ra, const float* rc, const float* rb, int x) {
     const DF df;
-    const int w = L.width(), h = L.height();
-    const float* ra = L.data() + std::size_t(y > 0 ? y - 1 : 0) * std::size_t(w);
-    const float* rc = L.data() + std::size_t(y) * std::size_t(w);
-    const float* rb = L.data() + std::size_t(y + 1 < h ? y + 1 : h - 1) * std::size_t(w);
     return {hn::LoadU(df, rc + x),     hn::LoadU(df, rc + x - 1), hn::LoadU(df, rc + x + 1),
             hn::LoadU(df, ra + x),     hn::LoadU(df, rb + x),     hn::LoadU(df, ra + x - 1),
             hn::LoadU(df, rb + x - 1), hn::LoadU(df, ra + x + 1), hn::LoadU(df, rb + x + 1)};
+}
+HWY_INLINE NeighbourhoodV LoadNeighbourhood(const ImageF& L, int x, int y) {
+    const int w = L.width(), h = L.height();
+    return LoadNeighbourhood(L.data() + std::size_t(y > 0 ? y - 1 : 0) * std::size_t(w),
+                             L.data() + std::size_t(y) * std::size_t(w),
+                             L.data() + std::size_t(y + 1 < h ? y + 1 : h - 1) * std::size_t(w), x);
+}
+HWY_INLINE NeighbourhoodV LoadNeighbourhood(const LumaRows& L, int x, int y) {
+    return LoadNeighbourhood(L.row(y - 1), L.row(y), L.row(y + 1), x);
 }
 
 // edgeSides() per lane.
@@ -240,10 +245,10 @@ HWY_INLINE void RowChunks(int w, std::uint8_t* mask, const Chunk& chunk) {
     }
 }
 
-// Luma planes for rows [y0, y1) (layout in luma_planes.hpp). Half-way reads between two
-// texels are 8 (a + b) / 4080 = (a + b) / 510 per channel, between four texels
-// 4 (a + b + c + d) / 4080 = (a + b + c + d) / 1020, both exactly (same real number).
-inline void LumaPlaneRows(ImageView<const Rgba8> in, int y0, int y1, const LumaPlanes& planes) {
+// The rows [first, first + rows) of each luma plane (layout in luma_planes.hpp). Half-way
+// reads between two texels are 8 (a + b) / 4080 = (a + b) / 510 per channel, between four
+// texels 4 (a + b + c + d) / 4080 = (a + b + c + d) / 1020, both exactly (same real number).
+inline void LumaPlaneRows(ImageView<const Rgba8> in, const LumaPlanes& planes) {
     const DF df;
     const DI di;
     const DU du;
@@ -271,38 +276,31 @@ inline void LumaPlaneRows(ImageView<const Rgba8> in, int y0, int y1, const LumaP
         return lumaOf(sum(0), sum(8), sum(16), k1020);
     };
     auto clampRow = [h](int y) { return y < 0 ? 0 : (y >= h ? h - 1 : y); };
-    for (int y = y0; y < y1; ++y) {
-        const Rgba8* r = in.row(y);
-        // Plane H: rows y + 1 (pair y, y + 1) and, for the first row, row 0 (pair 0, 0).
-        for (int row : {y + 1, y == 0 ? 0 : -1}) {
-            if (row < 0) continue;
-            const Rgba8* a = in.row(clampRow(row - 1));
-            const Rgba8* b = in.row(clampRow(row));
-            float* out = data + planes.rowH(row);
-            int x = 0;
-            for (; x + n <= w; x += n) hn::StoreU(pairV(a + x, b + x), df, out + x);
-            for (; x < w; ++x) out[x] = pairLuma(a[x], b[x]);
-        }
-        // Plane V, row y: column c between image columns c - 1 and c (clamped).
-        float* v = data + planes.rowV(y);
-        v[0] = pairLuma(r[0], r[0]);
-        v[w] = pairLuma(r[w - 1], r[w - 1]);
+    for (int r = planes.first; r < planes.first + planes.rows; ++r) {
+        // Plane H, row r: between image rows r - 1 and r (clamped).
+        const Rgba8* a = in.row(clampRow(r - 1));
+        const Rgba8* b = in.row(clampRow(r));
+        float* out = data + planes.rowH(r);
         int x = 0;
-        for (; x + n <= w - 1; x += n) hn::StoreU(pairV(r + x, r + x + 1), df, v + 1 + x);
-        for (; x < w - 1; ++x) v[1 + x] = pairLuma(r[x], r[x + 1]);
-        if (!planes.hasQuad()) continue;
-        // Plane Q: rows y + 1 (and 0), column c between columns c - 1 and c.
-        for (int row : {y + 1, y == 0 ? 0 : -1}) {
-            if (row < 0) continue;
-            const Rgba8* a = in.row(clampRow(row - 1));
-            const Rgba8* b = in.row(clampRow(row));
-            float* q = data + planes.rowQ(row);
-            q[0] = quadLuma(a[0], a[0], b[0], b[0]);
-            q[w] = quadLuma(a[w - 1], a[w - 1], b[w - 1], b[w - 1]);
-            int c = 1;
-            for (; c - 1 + n + 1 <= w; c += n) hn::StoreU(quadV(a + c - 1, b + c - 1), df, q + c);
-            for (; c < w; ++c) q[c] = quadLuma(a[c - 1], a[c], b[c - 1], b[c]);
+        for (; x + n <= w; x += n) hn::StoreU(pairV(a + x, b + x), df, out + x);
+        for (; x < w; ++x) out[x] = pairLuma(a[x], b[x]);
+        // Plane V, row r < H: column c between image columns c - 1 and c (clamped).
+        if (r < h) {
+            float* v = data + planes.rowV(r);
+            v[0] = pairLuma(b[0], b[0]);
+            v[w] = pairLuma(b[w - 1], b[w - 1]);
+            x = 0;
+            for (; x + n <= w - 1; x += n) hn::StoreU(pairV(b + x, b + x + 1), df, v + 1 + x);
+            for (; x < w - 1; ++x) v[1 + x] = pairLuma(b[x], b[x + 1]);
         }
+        if (!planes.hasQuad()) continue;
+        // Plane Q, row r: column c between columns c - 1 and c of rows r - 1 and r.
+        float* q = data + planes.rowQ(r);
+        q[0] = quadLuma(a[0], a[0], b[0], b[0]);
+        q[w] = quadLuma(a[w - 1], a[w - 1], b[w - 1], b[w - 1]);
+        int c = 1;
+        for (; c - 1 + n + 1 <= w; c += n) hn::StoreU(quadV(a + c - 1, b + c - 1), df, q + c);
+        for (; c < w; ++c) q[c] = quadLuma(a[c - 1], a[c], b[c - 1], b[c]);
     }
 }
 

@@ -31,11 +31,12 @@ tbb::task_arena& arenaFor(int threads) {
 }
 }  // namespace
 
-void parallelRows(int height, const Exec& exec, const std::function<void(int, int)>& fn) {
+void parallelRows(int height, const Exec& exec, const std::function<void(int, int)>& fn, int rowsPerBlock) {
     if (height <= 0) return;
-    const int blocks = (height + kRowBlock - 1) / kRowBlock;
+    const int block = std::max(1, rowsPerBlock);
+    const int blocks = (height + block - 1) / block;
     const int threads = resolvedThreads(exec);
-    auto runBlock = [&](int b) { fn(b * kRowBlock, std::min(height, (b + 1) * kRowBlock)); };
+    auto runBlock = [&](int b) { fn(b * block, std::min(height, (b + 1) * block)); };
     if (threads == 1 || blocks == 1) {
         for (int b = 0; b < blocks; ++b) runBlock(b);
         return;

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <vector>
 
@@ -19,6 +20,23 @@ TEST(Parallel, CoversEveryRowExactlyOnceInFixedBlocks) {
             for (auto& c : hits) EXPECT_EQ(c.load(), 1);
         }
     }
+}
+
+TEST(Parallel, BlocksOfAGivenHeightCoverEveryRowOnce) {
+    for (int threads : {1, 2, 7})
+        for (int block : {1, 5, 96})
+            for (int h : {1, 95, 96, 97, 400}) {
+                std::vector<std::atomic<int>> hits(static_cast<std::size_t>(h));
+                parallelRows(
+                    h, Exec{threads},
+                    [&](int y0, int y1) {
+                        EXPECT_EQ(y0 % block, 0);
+                        EXPECT_EQ(y1, std::min(h, y0 + block));
+                        for (int y = y0; y < y1; ++y) hits[std::size_t(y)]++;
+                    },
+                    block);
+                for (auto& c : hits) EXPECT_EQ(c.load(), 1);
+            }
 }
 
 TEST(Parallel, ZeroMeansAllHardwareThreads) {

@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 #include <hwy/targets.h>
 
+#include "ssfx/aa/ddaa.hpp"
+#include "ssfx/aa/fxaa.hpp"
 #include "ssfx/eval/synthetic.hpp"
 #include "ssfx/registry.hpp"
 #include "support/test_support.hpp"
@@ -74,6 +76,42 @@ TEST(SimdTargets, EveryRowEndWithinAChunkEqualsTheReference) {
                 ASSERT_EQ(m.run(in.view(), {}, {}), m.reference(in.view(), {}, {}))
                     << hwy::TargetName(target) << " " << id << " width " << w;
             }
+        }
+    }
+}
+
+// The fast paths work in bands of rows, each with the luma planes of the rows its vertical
+// searches reach. Near-vertical edges (one pixel across per 40 rows) make long vertical
+// walks; a 60 x 400 image crosses several band boundaries.
+TEST(SimdTargets, LongVerticalSearchesAcrossBandsEqualTheReference) {
+    ImageRgba8 img(60, 400);
+    for (int y = 0; y < 400; ++y)
+        for (int x = 0; x < 60; ++x) {
+            const int edge = 20 + y / 40, edge2 = 45 - y / 37;
+            const std::uint8_t v = x < edge ? 30 : (x < edge2 ? 220 : 120);
+            img(x, y) = {v, v, std::uint8_t(v / 2), 255};
+        }
+    const ImageRgba8 processed = aa::fxaa3dReference(img.view());
+    int changed = 0;
+    for (int y = 0; y < img.height(); ++y)
+        for (int x = 0; x < img.width(); ++x) changed += processed(x, y) != img(x, y);
+    EXPECT_GT(changed, 1000);  // the edges are processed, not early-exited
+    const ResetTargets reset;
+    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+        hwy::SetSupportedTargetsForTest(target);
+        for (const MethodInfo& m : methods()) {
+            if (m.inputScale != 1) continue;
+            EXPECT_EQ(m.run(img.view(), {}, {}), m.reference(img.view(), {}, {}))
+                << hwy::TargetName(target) << " " << m.id;
+        }
+        aa::Fxaa3dParams lottes;
+        lottes.paperSearchQuirk = false;
+        EXPECT_EQ(aa::fxaa3d(img.view(), lottes), aa::fxaa3dReference(img.view(), lottes)) << hwy::TargetName(target);
+        for (int rounds = 1; rounds <= 5; ++rounds) {
+            aa::Ddaa2Params p;
+            p.searchRounds = rounds;
+            EXPECT_EQ(aa::ddaa2(img.view(), p), aa::ddaa2Reference(img.view(), p))
+                << hwy::TargetName(target) << " searchRounds " << rounds;
         }
     }
 }
