@@ -55,6 +55,8 @@ inline int SampleRowSimd(const SimdSampleInput& in, int y, int x0, int x1, float
                lastYVec = hn::Load(di, lastY);
     const auto expBias = hn::Set(di, 127 + in.logQ), maxLevel = hn::Set(di, in.maxLevel);
     const auto hugeTap = hn::Set(df, 2147483648.0f);
+    // Vectors that start on an even column hold whole quad pairs (x & ~1, x | 1).
+    [[maybe_unused]] const bool pairsInVector = x0 % 2 == 0;
     int x = x0;
     // Every lane's partner xb = (x | 1) must be < w.
     for (; x + n <= x1 && ((x + n - 1) | 1) < w; x += n) {
@@ -63,9 +65,17 @@ inline int SampleRowSimd(const SimdSampleInput& in, int y, int x0, int x1, float
         const auto fxC = hn::LoadU(df, in.fx + x);
         const auto cx = hn::Mul(zc, fxC), cy = hn::Mul(zc, fyY);
         // Quad-pair normal (eq. 4): lanes x&~1 and x|1 of this row; rows ya, yb of this column.
-        const auto xa = hn::And(xi, hn::Set(di, ~1)), xb = hn::Or(xi, hn::Set(di, 1));
-        const auto zxa = hn::GatherIndex(df, rowY, xa), zxb = hn::GatherIndex(df, rowY, xb);
-        const auto fxa = hn::GatherIndex(df, in.fx, xa), fxb = hn::GatherIndex(df, in.fx, xb);
+        hn::Vec<decltype(df)> zxa, zxb, fxa, fxb;
+#if HWY_TARGET != HWY_SCALAR
+        if (pairsInVector) {  // the pair of lanes 2i, 2i + 1 is the quad pair: same values, no gathers
+            zxa = hn::DupEven(zc), zxb = hn::DupOdd(zc), fxa = hn::DupEven(fxC), fxb = hn::DupOdd(fxC);
+        } else
+#endif
+        {
+            const auto xa = hn::And(xi, hn::Set(di, ~1)), xb = hn::Or(xi, hn::Set(di, 1));
+            zxa = hn::GatherIndex(df, rowY, xa), zxb = hn::GatherIndex(df, rowY, xb);
+            fxa = hn::GatherIndex(df, in.fx, xa), fxb = hn::GatherIndex(df, in.fx, xb);
+        }
         const auto zya = hn::LoadU(df, rowA + x), zyb = hn::LoadU(df, rowB + x);
         const auto ddxX = hn::Sub(hn::Mul(zxb, fxb), hn::Mul(zxa, fxa));
         const auto ddxY = hn::Sub(hn::Mul(zxb, fyY), hn::Mul(zxa, fyY));
