@@ -348,6 +348,13 @@ TEST(Sao, VectorKernelMatchesTheScalarReference) {
     // Odd sizes: the last column's quad partner is clamped, the scalar loop finishes rows.
     const auto odd = eval::castGeometry(eval::cornerScene(), cam, 101, 77);
     compare(sao(odd.depth.view(), cam), saoReference(odd.depth.view(), cam), "sao odd size");
+    // An odd guard band: vectors start on odd columns, so the quad-pair normal gathers its
+    // partners (even starts take them from the vector's own lanes).
+    sp = SaoParams{};
+    sp.guardBand = 13;
+    ap.guardBand = 13;
+    compare(sao(geo.depth.view(), cam, sp), saoReference(geo.depth.view(), cam, sp), "sao odd guard band");
+    compare(alchemy(geo.depth.view(), cam, ap), alchemyReference(geo.depth.view(), cam, ap), "alchemy odd guard band");
 }
 
 TEST(Sao, PackedBlurInputByHandAndItsEffect) {
