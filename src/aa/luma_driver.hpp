@@ -83,11 +83,13 @@ struct PlaneNeeds {
     int reach = 0;
 };
 
-//! Rows per band of the fast path: its luma rows and planes (a few MB at 1080p) stay in
-//! cache between being computed and being read. Measured on the 2-core EPYC VM at 1080p,
-//! one thread: frame-sized planes 17.3 ms (fxaa3d) / 18.2 ms (ddaa2), the same work in
-//! 60-120-row bands 11-14 ms; beyond 250 rows most of the gain is gone.
-inline constexpr int kBandRows = 96;
+//! Rows per band of the fast path: its luma rows and planes stay in cache between being
+//! computed and being read. Measured on the 2-core EPYC VM at 1080p, one thread:
+//! frame-sized planes 17.3 ms (fxaa3d) / 18.2 ms (ddaa2), the same work in 60-120-row
+//! bands 11-14 ms, beyond 250 rows most of the gain is gone; on 2 threads 48-row bands
+//! beat 96 (fxaa3d 6.0 vs 6.15 ms, ddaa2 6.05 vs 6.3 ms: finer load balance) and 32 (more
+//! halo rows per band).
+inline constexpr int kBandRows = 48;
 
 //! No vector row kernel: every edge pixel goes through the scalar kernel.
 struct NoRowKernel {
