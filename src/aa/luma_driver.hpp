@@ -33,7 +33,7 @@ inline const ImageF& methodLumaPlane(ImageView<const Rgba8> in, bool reference, 
     return fresh;
 }
 
-//! The fast path's luma plane rows [first, first + count) (one band and one row either side).
+//! The fast path's luma plane rows from `first` on (one band and one row either side).
 //! row(y) clamps y to the image, as the 3x3 neighbourhood does.
 struct LumaRows {
     const float* data = nullptr;
