@@ -52,13 +52,6 @@ namespace ssfx::aa::detail {
 
 HWY_EXPORT(ExitRow);
 
-const ImageF& scratchLumaPlane(ImageView<const Rgba8> in, const Exec& exec) {
-    thread_local ImageF plane;
-    if (plane.width() != in.width() || plane.height() != in.height()) plane = ImageF(in.width(), in.height());
-    lumaPlane(in, plane.view(), exec);
-    return plane;
-}
-
 LumaRows bandLumaRows(ImageView<const Rgba8> in, int y0, int y1) {
     thread_local std::vector<float> buffer;
     const int first = std::max(0, y0 - 1), last = std::min(in.height(), y1 + 1);

@@ -29,14 +29,13 @@ HWY_INLINE VF ClampTwo(VF q) {
 }
 
 // fxaa3c for pixels [x, x + N) of row y, 1 <= x, x + N <= W - 1; diagonals at +-1 pixel.
-HWY_INLINE void Fxaa3cChunk(const Texture& tex, const ImageF& L, int x, int y, const Fxaa3cParams& p,
+HWY_INLINE void Fxaa3cChunk(const Texture& tex, const LumaRows& L, int x, int y, const Fxaa3cParams& p,
                             const Rgba8* src, Rgba8* dst) {
     const DF df;
     const DU du;
-    const int w = L.width(), h = L.height();
-    const float* ra = L.data() + std::size_t(y > 0 ? y - 1 : 0) * std::size_t(w);
-    const float* rc = L.data() + std::size_t(y) * std::size_t(w);
-    const float* rb = L.data() + std::size_t(y + 1 < h ? y + 1 : h - 1) * std::size_t(w);
+    const float* ra = L.row(y - 1);
+    const float* rc = L.row(y);
+    const float* rb = L.row(y + 1);
     // Lottes' names (y down): NW = (-1, -1), NE = (+1, -1), SW = (-1, +1), SE = (+1, +1).
     const VF lumaNW = hn::LoadU(df, ra + x - 1), lumaSW = hn::LoadU(df, rb + x - 1);
     const VF lumaSE = hn::LoadU(df, rb + x + 1);
@@ -86,11 +85,11 @@ HWY_INLINE void Fxaa3cChunk(const Texture& tex, const ImageF& L, int x, int y, c
 
 // The interior chunks of row y; returns the first x not written (the caller does x = 0 and
 // [returned, W) with the scalar kernel).
-inline int Fxaa3cRowSimd(const Texture& tex, const ImageF& L, int y, const Fxaa3cParams& p, const Rgba8* src,
+inline int Fxaa3cRowSimd(const Texture& tex, const LumaRows& L, int y, const Fxaa3cParams& p, const Rgba8* src,
                          Rgba8* dst) {
     const int n = int(hn::Lanes(DF()));
     int x = 1;
-    for (; x + n <= L.width() - 1; x += n) Fxaa3cChunk(tex, L, x, y, p, src, dst);
+    for (; x + n <= L.width - 1; x += n) Fxaa3cChunk(tex, L, x, y, p, src, dst);
     return x;
 }
 

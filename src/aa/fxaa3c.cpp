@@ -36,24 +36,22 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Fxaa3cParams& p,
     checkOutput("fxaa3c", in, out);
     validate(p);
     const Texture tex(in, p.filtering);
-    ImageF fresh;
-    // The colour-aware measure (chromaWeight > 0) runs the scalar kernel, on all threads.
-    const bool scalar = reference || p.chromaWeight != 0.0f;
-    const ImageF& L = methodLumaPlane(in, scalar, exec, fresh, p.chromaWeight);
     // At +-1 pixel the diagonal reads land on pixel centres, which return the pixel
     // (spec section 1): luma plane lookups.
     const bool centres = p.diagonalOffset == 1.0f;
     const float du = p.diagonalOffset * tex.invW(), dv = p.diagonalOffset * tex.invH();
-    auto pixel = [&](int x, int y) -> Rgba8 {
+    const int w = in.width(), h = in.height();
+    // The scalar kernel; lumaAt(x, y) is the luma plane at a pixel inside the image.
+    auto pixel = [&](const auto& lumaAt, int x, int y) -> Rgba8 {
         const Rgba8 m = in(x, y);
         const float u = tex.centreU(x), v = tex.centreV(y);
         auto diag = [&](int sx, int sy) {
-            return centres ? L(std::clamp(x + sx, 0, in.width() - 1), std::clamp(y + sy, 0, in.height() - 1))
+            return centres ? lumaAt(std::clamp(x + sx, 0, w - 1), std::clamp(y + sy, 0, h - 1))
                            : edgeLuma(tex.sample(u + float(sx) * du, v + float(sy) * dv), p.chromaWeight);
         };
         const float lumaNW = diag(-1, -1), lumaSW = diag(-1, +1), lumaSE = diag(+1, +1);
         const float lumaNE = diag(+1, -1) + 1.0f / 384.0f;  // FXAA: keeps dir from being 0
-        const float lumaM = L(x, y);
+        const float lumaM = lumaAt(x, y);
         const float lumaMax = maxf(maxf(lumaNE, lumaSE), maxf(lumaNW, lumaSW));
         const float lumaMin = minf(minf(lumaNE, lumaSE), minf(lumaNW, lumaSW));
         if (maxf(lumaMax, lumaM) - minf(lumaMin, lumaM) < maxf(p.edgeThresholdMin, lumaMax * p.edgeThreshold))
@@ -67,9 +65,9 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Fxaa3cParams& p,
         if (!(len > 0.0f)) return m;
         const float d1x = dirX / len, d1y = dirY / len;
 
-        const float h = 0.5f;  // first pair of taps at +-0.5 px along the edge
-        const Rgb n1 = tex.sample(u - d1x * h * tex.invW(), v - d1y * h * tex.invH());
-        const Rgb p1 = tex.sample(u + d1x * h * tex.invW(), v + d1y * h * tex.invH());
+        const float hs = 0.5f;  // first pair of taps at +-0.5 px along the edge
+        const Rgb n1 = tex.sample(u - d1x * hs * tex.invW(), v - d1y * hs * tex.invH());
+        const Rgb p1 = tex.sample(u + d1x * hs * tex.invW(), v + d1y * hs * tex.invH());
         const float minAbs = minf(std::fabs(d1x), std::fabs(d1y)) * p.edgeSharpness;
         // fmax/fmin return the non-NaN operand, as GPU clamp does for 0/0.
         const float d2x = std::fmin(std::fmax(d1x / minAbs, -2.0f), 2.0f);
@@ -82,20 +80,37 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Fxaa3cParams& p,
         const Rgb result = (lumaB < lumaMin || lumaB > lumaMax) ? scale(A, 0.5f) : B;
         return toRgba8(result, m.a);
     };
-    // The vector kernel across pixels covers the default (GPU model, diagonals at +-1 px);
-    // the first pixel and the tail of each row take the scalar kernel.
-    const bool vector = !scalar && centres && p.filtering == Filtering::Gpu;
-    parallelRows(in.height(), exec, [&](int y0, int y1) {
-        for (int y = y0; y < y1; ++y) {
-            Rgba8* row = out.row(y);
-            int x = 0;
-            if (vector) {
-                row[0] = pixel(0, y);
-                x = HWY_DYNAMIC_DISPATCH(Fxaa3cRowSimd)(tex, L, y, p, in.row(y), row);
+    // Reference path, and the colour-aware measure (chromaWeight > 0): the luma plane
+    // pixel by pixel, the scalar kernel everywhere, on all threads.
+    if (reference || p.chromaWeight != 0.0f) {
+        const ImageF L = lumaPlaneReference(in, p.chromaWeight);
+        auto lumaAt = [&](int x, int y) { return L(x, y); };
+        parallelRows(h, exec, [&](int y0, int y1) {
+            for (int y = y0; y < y1; ++y)
+                for (int x = 0; x < w; ++x) out(x, y) = pixel(lumaAt, x, y);
+        });
+        return;
+    }
+    // Fast path, in bands of rows with their luma rows (SIMD, same bits). The vector kernel
+    // across pixels covers the default (GPU model, diagonals at +-1 px); the first pixel and
+    // the tail of each row take the scalar kernel.
+    const bool vector = centres && p.filtering == Filtering::Gpu;
+    parallelRows(
+        h, exec,
+        [&](int y0, int y1) {
+            const LumaRows L = bandLumaRows(in, y0, y1);
+            auto lumaAt = [&](int x, int y) { return L.row(y)[x]; };
+            for (int y = y0; y < y1; ++y) {
+                Rgba8* row = out.row(y);
+                int x = 0;
+                if (vector) {
+                    row[0] = pixel(lumaAt, 0, y);
+                    x = HWY_DYNAMIC_DISPATCH(Fxaa3cRowSimd)(tex, L, y, p, in.row(y), row);
+                }
+                for (; x < w; ++x) row[x] = pixel(lumaAt, x, y);
             }
-            for (; x < in.width(); ++x) row[x] = pixel(x, y);
-        }
-    });
+        },
+        kBandRows);
 }
 
 }  // namespace

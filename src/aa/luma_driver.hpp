@@ -19,20 +19,6 @@
 
 namespace ssfx::aa::detail {
 
-//! The luma plane of `in` (SIMD) in a buffer kept per calling thread and reused while the
-//! size stays the same (fxaa3c's fast path; the methods on runLumaMethod compute luma rows
-//! per band instead).
-const ImageF& scratchLumaPlane(ImageView<const Rgba8> in, const Exec& exec);
-
-//! The luma plane fxaa3c uses: computed pixel by pixel into `fresh` for the reference
-//! path or a non-zero chromaWeight (colour-aware contrast), else scratchLumaPlane().
-inline const ImageF& methodLumaPlane(ImageView<const Rgba8> in, bool reference, const Exec& exec, ImageF& fresh,
-                                     float chromaWeight = 0.0f) {
-    if (!reference && chromaWeight == 0.0f) return scratchLumaPlane(in, exec);
-    fresh = lumaPlaneReference(in, chromaWeight);
-    return fresh;
-}
-
 //! The fast path's luma plane rows from `first` on (one band and one row either side).
 //! row(y) clamps y to the image, as the 3x3 neighbourhood does.
 struct LumaRows {
