@@ -37,7 +37,6 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Ddaa1Params& p, 
     const Texture tex(in, p.filtering);
     // The colour-aware measure (chromaWeight > 0) runs the scalar kernel, on all threads.
     const bool scalar = reference || p.chromaWeight != 0.0f;
-    const ImageF L = scalar ? lumaPlaneReference(in, p.chromaWeight) : ImageF{};
     auto pixel = [&](int x, int y, const Luma3x3& n, float) {
         const Diffusion d = diffusion(n, edgeSides(n), p);
         return diffuse(tex, x, y, d, p.maxDiffusion, 0.0f, 0.0f);
@@ -48,7 +47,7 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Ddaa1Params& p, 
         if (!scalar && p.filtering == Filtering::Gpu)
             HWY_DYNAMIC_DISPATCH(Ddaa1RowSimd)(tex, band, y, mask, p, src, dst);
     };
-    runLumaMethod(in, out, scalar ? &L : nullptr, p.edgeThresholdMin, p.edgeThreshold, exec, PlaneNeeds{}, pixel,
+    runLumaMethod(in, out, scalar, p.chromaWeight, p.edgeThresholdMin, p.edgeThreshold, exec, PlaneNeeds{}, pixel,
                   rows);
 }
 }  // namespace

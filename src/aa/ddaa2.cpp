@@ -152,7 +152,6 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Ddaa2Params& p, 
     const Texture tex(in, p.filtering);
     // The colour-aware measure (chromaWeight > 0) runs the scalar kernel, on all threads.
     const bool scalar = reference || p.chromaWeight != 0.0f;
-    const ImageF L = scalar ? lumaPlaneReference(in, p.chromaWeight) : ImageF{};
     // The vector kernel across pixels: GPU filtering model, and search reads provably equal
     // to pair-plane lookups for this size (else everything takes the scalar kernel).
     const bool vector = !scalar && p.filtering == Filtering::Gpu &&
@@ -167,7 +166,7 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Ddaa2Params& p, 
                     Rgba8* dst) {
         if (vector) HWY_DYNAMIC_DISPATCH(Ddaa2RowSimd)(tex, band, planes, y, mask, p, src, dst);
     };
-    runLumaMethod(in, out, scalar ? &L : nullptr, p.edgeThresholdMin, p.edgeThreshold, exec, needs,
+    runLumaMethod(in, out, scalar, p.chromaWeight, p.edgeThresholdMin, p.edgeThreshold, exec, needs,
                   [&](int x, int y, const Luma3x3& n, float) {
                       const EdgeSides s = edgeSides(n);
                       Diffusion d = diffusion(n, s, p);

@@ -1,5 +1,6 @@
 // Early-exit mask of a row (spec ppaa.md section 1), vectorised with Highway. Same
 // comparisons as belowEdgeThreshold(); max/min and the one multiply are exact per lane.
+// Also the fast path's luma rows per band, which the mask reads.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "src/aa/early_exit.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep

@@ -70,13 +70,10 @@ HWY_INLINE bool AcrossLerp(const Texture& tex, const hn::Mask<DF>& horizontal, V
     const DI di;
     const DU du;
     const VF size = hn::IfThenElse(horizontal, hn::Set(df, float(tex.height())), hn::Set(df, float(tex.width())));
-    const VF t = hn::Sub(hn::Mul(across, size), hn::Set(df, 0.5f));  // SplitAxis' arithmetic
-    const VF fl = hn::Floor(t);
     const VF own = hn::IfThenElse(horizontal, hn::Set(df, float(y)), hn::ConvertTo(df, hn::Iota(di, x)));
-    const VF rel = hn::Sub(fl, own);  // integers: exact
-    const auto before = hn::Eq(rel, hn::Set(df, -1.0f));
-    if (!hn::AllTrue(df, hn::Or(hn::Or(before, hn::Eq(rel, hn::Zero(df))), skip))) return false;
-    const VI w = hn::ConvertTo(di, hn::Add(hn::Mul(hn::Sub(t, fl), hn::Set(df, 256.0f)), hn::Set(df, 0.5f)));
+    const NearSplit s = SplitNear(across, size, own);
+    if (!hn::AllTrue(df, hn::Or(s.near, skip))) return false;
+    const VI w = s.w;
 
     const auto image = tex.image();
     const int h = tex.height();
@@ -84,7 +81,7 @@ HWY_INLINE bool AcrossLerp(const Texture& tex, const hn::Mask<DF>& horizontal, V
     const std::uint32_t* rc = row(y) + x;
     const VU above = hn::LoadU(du, row(y - 1) + x), below = hn::LoadU(du, row(y + 1) + x);
     const VU centre = hn::LoadU(du, rc), left = hn::LoadU(du, rc - 1), right = hn::LoadU(du, rc + 1);
-    const auto hor = hn::RebindMask(du, horizontal), lo = hn::RebindMask(du, before);
+    const auto hor = hn::RebindMask(du, horizontal), lo = hn::RebindMask(du, s.before);
     const VU a = hn::IfThenElse(lo, hn::IfThenElse(hor, above, left), centre);
     const VU b = hn::IfThenElse(lo, centre, hn::IfThenElse(hor, below, right));
     const VU mask = hn::Set(du, 0xFFu);

@@ -82,24 +82,25 @@ struct NoRowKernel {
     void operator()(int, const LumaRows&, const LumaPlanes&, std::uint8_t*, const Rgba8*, Rgba8*) const {}
 };
 
-//! Reference path (`referenceL` given): every pixel through the scalar kernel `pixel`, with
-//! the neighbourhood from that plane. Fast path (`referenceL` null): per band of kBandRows
+//! Scalar path (the reference, or a colour-aware measure, chromaWeight > 0): the luma plane
+//! pixel by pixel, then every pixel through the scalar kernel `pixel`. Fast path: per band of kBandRows
 //! rows, in parallel, the band's luma rows and the planes `needs` asks for, then per row
 //! the early-exit mask; `rowKernel(y, L, planes, mask, src, dst)` may write pixels of row y
 //! itself (a vector kernel across pixels) and sets their mask bytes to kWritten; the
 //! driver copies kExit runs and runs `pixel` on the kEdge pixels.
 template <class PixelFn, class RowKernel = NoRowKernel>
-void runLumaMethod(ImageView<const Rgba8> in, ImageView<Rgba8> out, const ImageF* referenceL, float thresholdMin,
-                   float threshold, const Exec& exec, const PlaneNeeds& needs, const PixelFn& pixel,
-                   const RowKernel& rowKernel = {}) {
+void runLumaMethod(ImageView<const Rgba8> in, ImageView<Rgba8> out, bool scalar, float chromaWeight,
+                   float thresholdMin, float threshold, const Exec& exec, const PlaneNeeds& needs,
+                   const PixelFn& pixel, const RowKernel& rowKernel = {}) {
     const int w = in.width();
-    if (referenceL) {
+    if (scalar) {
+        const ImageF L = lumaPlaneReference(in, chromaWeight);
         parallelRows(in.height(), exec, [&](int y0, int y1) {
             for (int y = y0; y < y1; ++y) {
                 const Rgba8* src = in.row(y);
                 Rgba8* dst = out.row(y);
                 for (int x = 0; x < w; ++x) {
-                    const Luma3x3 n = neighbourhood(*referenceL, x, y);
+                    const Luma3x3 n = neighbourhood(L, x, y);
                     float range;
                     dst[x] = belowEdgeThreshold(n, thresholdMin, threshold, &range)
                                  ? src[x]

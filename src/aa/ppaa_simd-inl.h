@@ -15,9 +15,9 @@
 #include <hwy/highway.h>
 
 #include "src/aa/luma_driver.hpp"
-#include "src/core/exact_div-inl.h"
 #include "src/aa/luma_planes.hpp"
 #include "src/aa/ppaa_common.hpp"
+#include "src/core/exact_div-inl.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace ssfx::aa::detail {
@@ -89,6 +89,25 @@ HWY_INLINE RgbV SampleGpu(const Texture& tex, VF u, VF v) {
             Channel(t00, t10, t01, t11, w00, w10, w01, w11, 16)};
 }
 
+// A coordinate split as SplitAxis does (t = coord size - 0.5), relative to each lane's own
+// texel `own`: whether floor(t) is the texel before it (`before`), or it or the one before
+// (`near`: then the read's texel pair lies next to the lane's pixel), and the GPU weight
+// of the pair's second texel.
+struct NearSplit {
+    hn::Mask<DF> before, near;
+    VI w;
+};
+HWY_INLINE NearSplit SplitNear(VF coord, VF size, VF own) {
+    const DF df;
+    const DI di;
+    const VF t = hn::Sub(hn::Mul(coord, size), hn::Set(df, 0.5f));
+    const VF fl = hn::Floor(t);
+    const VF rel = hn::Sub(fl, own);  // integers: exact
+    const auto before = hn::Eq(rel, hn::Set(df, -1.0f));
+    return {before, hn::Or(before, hn::Eq(rel, hn::Zero(df))),
+            hn::ConvertTo(di, hn::Add(hn::Mul(hn::Sub(t, fl), hn::Set(df, 256.0f)), hn::Set(df, 0.5f)))};
+}
+
 // The GPU-model read at (u, v) per lane, from the 3 x 3 texels around each lane's pixel
 // (row y, pixels x .. x + N - 1 with 1 <= x, x + N <= W - 1), loaded contiguously rather
 // than gathered. Valid when every lane that counts (not in `skip`) reads within a texel of
@@ -99,20 +118,14 @@ HWY_INLINE bool NearSample(const Texture& tex, VF u, VF v, int x, int y, const h
     const DF df;
     const DI di;
     const DU du;
-    const VF half = hn::Set(df, 0.5f), k256 = hn::Set(df, 256.0f), minusOne = hn::Set(df, -1.0f);
-    const VF tx = hn::Sub(hn::Mul(u, hn::Set(df, float(tex.width()))), half);
-    const VF ty = hn::Sub(hn::Mul(v, hn::Set(df, float(tex.height()))), half);
-    const VF fx = hn::Floor(tx), fy = hn::Floor(ty);
-    const VF relX = hn::Sub(fx, hn::ConvertTo(df, hn::Iota(di, x))), relY = hn::Sub(fy, hn::Set(df, float(y)));
-    const auto loX = hn::Eq(relX, minusOne), loY = hn::Eq(relY, minusOne);
-    const auto inX = hn::Or(loX, hn::Eq(relX, hn::Zero(df))), inY = hn::Or(loY, hn::Eq(relY, hn::Zero(df)));
-    if (!hn::AllTrue(df, hn::Or(hn::And(inX, inY), skip))) return false;
-    const VI wx = hn::ConvertTo(di, hn::Add(hn::Mul(hn::Sub(tx, fx), k256), half));
-    const VI wy = hn::ConvertTo(di, hn::Add(hn::Mul(hn::Sub(ty, fy), k256), half));
+    const NearSplit sx = SplitNear(u, hn::Set(df, float(tex.width())), hn::ConvertTo(df, hn::Iota(di, x)));
+    const NearSplit sy = SplitNear(v, hn::Set(df, float(tex.height())), hn::Set(df, float(y)));
+    if (!hn::AllTrue(df, hn::Or(hn::And(sx.near, sy.near), skip))) return false;
+    const VI wx = sx.w, wy = sy.w;
 
     const auto image = tex.image();
     const int h = tex.height();
-    const auto lx = hn::RebindMask(du, loX), ly = hn::RebindMask(du, loY);
+    const auto lx = hn::RebindMask(du, sx.before), ly = hn::RebindMask(du, sy.before);
     VU left[3], right[3];  // per row y - 1, y, y + 1: the texel pair (x0, x1) of each lane
     for (int r = 0; r < 3; ++r) {
         const int row = std::clamp(y - 1 + r, 0, h - 1);
@@ -166,12 +179,6 @@ HWY_INLINE NeighbourhoodV LoadNeighbourhood(const float* ra, const float* rc, co
     return {hn::LoadU(df, rc + x),     hn::LoadU(df, rc + x - 1), hn::LoadU(df, rc + x + 1),
             hn::LoadU(df, ra + x),     hn::LoadU(df, rb + x),     hn::LoadU(df, ra + x - 1),
             hn::LoadU(df, rb + x - 1), hn::LoadU(df, ra + x + 1), hn::LoadU(df, rb + x + 1)};
-}
-HWY_INLINE NeighbourhoodV LoadNeighbourhood(const ImageF& L, int x, int y) {
-    const int w = L.width(), h = L.height();
-    return LoadNeighbourhood(L.data() + std::size_t(y > 0 ? y - 1 : 0) * std::size_t(w),
-                             L.data() + std::size_t(y) * std::size_t(w),
-                             L.data() + std::size_t(y + 1 < h ? y + 1 : h - 1) * std::size_t(w), x);
 }
 HWY_INLINE NeighbourhoodV LoadNeighbourhood(const LumaRows& L, int x, int y) {
     return LoadNeighbourhood(L.row(y - 1), L.row(y), L.row(y + 1), x);
