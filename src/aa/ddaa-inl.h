@@ -107,7 +107,8 @@ HWY_INLINE void SearchBothSides(const LumaPlanes& planes, const hn::Mask<DF>& ho
     const VI xv = hn::Iota(di, x);
     const VI steepI = hn::IfThenElseZero(hn::RebindMask(di, steep2), hn::Set(di, 1));
     // Horizontal edges: plane H row y + steep2, column clamp(x + sign k).
-    const VI rowH = hn::Add(hn::Set(di, int(planes.rowH(y))), hn::Mul(steepI, hn::Set(di, planes.width)));
+    const VI rowH = hn::IfThenElse(hn::RebindMask(di, steep2), hn::Set(di, int(planes.rowH(y + 1))),
+                                   hn::Set(di, int(planes.rowH(y))));
     // Vertical edges: plane V column x + steep2 of row clamp(y + sign k).
     const VI colV = hn::Add(xv, steepI);
     const auto hor = hn::RebindMask(di, horizontal);
@@ -119,9 +120,10 @@ HWY_INLINE void SearchBothSides(const LumaPlanes& planes, const hn::Mask<DF>& ho
     auto gather = [&](int offset) {  // signed position along the edge
         const int yk = std::clamp(y + offset, 0, h - 1);
         if (contiguous) {
-            const float* h0 = planes.data + planes.rowH(y) + x + offset;  // between rows y - 1 and y
-            const float* v0 = planes.data + planes.rowV(yk) + x;         // between columns x - 1 and x
-            const VF alongH = hn::IfThenElse(steep2, hn::LoadU(df, h0 + planes.width), hn::LoadU(df, h0));
+            const float* h0 = planes.data + planes.rowH(y) + x + offset;      // between rows y - 1 and y
+            const float* h1 = planes.data + planes.rowH(y + 1) + x + offset;  // between rows y and y + 1
+            const float* v0 = planes.data + planes.rowV(yk) + x;             // between columns x - 1 and x
+            const VF alongH = hn::IfThenElse(steep2, hn::LoadU(df, h1), hn::LoadU(df, h0));
             const VF alongV = hn::IfThenElse(steep2, hn::LoadU(df, v0 + 1), hn::LoadU(df, v0));
             return hn::IfThenElse(horizontal, alongH, alongV);
         }

@@ -157,7 +157,7 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Ddaa2Params& p, 
     const bool vector = !scalar && p.filtering == Filtering::Gpu &&
                         oncePerSize(in.width(), in.height(), p.searchRounds,
                                     [&] { return searchReadsArePairReads(tex, p.searchRounds); }) &&
-                        planesFitGatherIndices(in.width(), in.height());
+                        planesFitGatherIndices(in.width());
     // The search reads up to 3 searchRounds texels along the edge: plane rows y - 3 r .. y + 3 r.
     PlaneNeeds needs;
     needs.planes = vector;

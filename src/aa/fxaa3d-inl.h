@@ -35,10 +35,11 @@ HWY_INLINE VI WalkIndex(const LumaPlanes& planes, const hn::Mask<DI>& horizontal
     const auto even = hn::Eq(hn::And(hs, one), zero);
     const VI whole = hn::ShiftRight<1>(hs);             // hs / 2 for even hs
     const VI upper = hn::ShiftRight<1>(hn::Add(hs, one));  // (hs + 1) / 2 for odd hs
-    // Plane rows relative to the band's first row.
-    const VI baseV = hn::Set(di, int(planes.rowV(planes.first))), baseQ = hn::Set(di, int(planes.rowQ(planes.first)));
-    const VI first = hn::Set(di, planes.first);
-    const VI rowH = hn::Sub(acrossH, first);
+    // Plane rows to ring slots (rows are never negative: clamped, or y and y + 1).
+    const VI ringMask = hn::Set(di, planes.ringMask);
+    auto slot = [&](VI r) { return hn::And(r, ringMask); };
+    const VI baseV = hn::Set(di, int(planes.sizeH())), baseQ = hn::Set(di, int(planes.sizeH() + planes.sizeV()));
+    const VI rowH = slot(acrossH);
     // Horizontal edges: along x.
     const VI hEven = hn::Add(hn::Mul(rowH, hn::Set(di, planes.width)),
                              hn::Min(hn::Max(hn::Add(xv, whole), zero), hn::Set(di, planes.width - 1)));
@@ -47,12 +48,10 @@ HWY_INLINE VI WalkIndex(const LumaPlanes& planes, const hn::Mask<DI>& horizontal
     // Vertical edges: along y.
     const VI yv = hn::Set(di, y);
     const VI vEven = hn::Add(
-        hn::Add(baseV,
-                hn::Mul(hn::Sub(hn::Min(hn::Max(hn::Add(yv, whole), zero), hn::Set(di, planes.height - 1)), first), wq)),
+        hn::Add(baseV, hn::Mul(slot(hn::Min(hn::Max(hn::Add(yv, whole), zero), hn::Set(di, planes.height - 1))), wq)),
         acrossV);
     const VI vOdd = hn::Add(
-        hn::Add(baseQ,
-                hn::Mul(hn::Sub(hn::Min(hn::Max(hn::Add(yv, upper), zero), hn::Set(di, planes.height)), first), wq)),
+        hn::Add(baseQ, hn::Mul(slot(hn::Min(hn::Max(hn::Add(yv, upper), zero), hn::Set(di, planes.height))), wq)),
         acrossV);
     return hn::IfThenElse(horizontal, hn::IfThenElse(even, hEven, hOdd), hn::IfThenElse(even, vEven, vOdd));
 }
@@ -134,7 +133,7 @@ HWY_INLINE void Fxaa3dChunk(const Texture& tex, const LumaRows& L, const LumaPla
     // borders a read is two contiguous loads per plane; near them, a gather with clamping.
     const int reach = 27;  // the walk ends at most 26.5 px away
     const bool contiguous = x - reach >= 0 && x + int(hn::Lanes(df)) - 1 + reach <= planes.width - 1;
-    const int w = planes.width, h = planes.height;
+    const int h = planes.height;
     auto read = [&](int hs) {
         VF value;
         if (!contiguous) {
@@ -142,14 +141,16 @@ HWY_INLINE void Fxaa3dChunk(const Texture& tex, const LumaRows& L, const LumaPla
         } else if (hs % 2 == 0) {  // pair planes
             const int a = hs / 2;
             const float* h0 = planes.data + planes.rowH(y) + x + a;
+            const float* h1 = planes.data + planes.rowH(y + 1) + x + a;
             const float* v0 = planes.data + planes.rowV(std::clamp(y + a, 0, h - 1)) + x;
-            value = hn::IfThenElse(s.horizontal, hn::IfThenElse(pair1, hn::LoadU(df, h0), hn::LoadU(df, h0 + w)),
+            value = hn::IfThenElse(s.horizontal, hn::IfThenElse(pair1, hn::LoadU(df, h0), hn::LoadU(df, h1)),
                                    hn::IfThenElse(pair1, hn::LoadU(df, v0), hn::LoadU(df, v0 + 1)));
         } else {  // quad plane
             const int c = (hs + 1) / 2;
             const float* q0 = planes.data + planes.rowQ(y) + x + c;
+            const float* q1 = planes.data + planes.rowQ(y + 1) + x + c;
             const float* v0 = planes.data + planes.rowQ(std::clamp(y + c, 0, h)) + x;
-            value = hn::IfThenElse(s.horizontal, hn::IfThenElse(pair1, hn::LoadU(df, q0), hn::LoadU(df, q0 + w + 1)),
+            value = hn::IfThenElse(s.horizontal, hn::IfThenElse(pair1, hn::LoadU(df, q0), hn::LoadU(df, q1)),
                                    hn::IfThenElse(pair1, hn::LoadU(df, v0), hn::LoadU(df, v0 + 1)));
         }
         return hn::Sub(value, localAverage);

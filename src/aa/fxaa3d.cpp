@@ -156,7 +156,7 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Fxaa3dParams& p,
     const bool vector = !scalar && p.filtering == Filtering::Gpu &&
                         oncePerSize(in.width(), in.height(), p.paperSearchQuirk,
                                     [&] { return walkReadsArePlaneReads(tex, p.paperSearchQuirk); }) &&
-                        planesFitGatherIndices(in.width(), in.height());
+                        planesFitGatherIndices(in.width());
     const bool lerp = vector && oncePerSize(in.width(), in.height(), -1, [&] { return centresAreTexels(tex); });
     PlaneNeeds needs;
     needs.planes = needs.quad = vector;

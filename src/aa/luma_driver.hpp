@@ -2,8 +2,9 @@
 // the method's kernel for the pixels that pass it.
 //
 // The reference path evaluates everything one pixel at a time with the scalar kernel. The
-// fast path works in bands of rows: it computes the band's luma rows (and the luma planes
-// the method's searches read) and the early-exit mask with Highway (same float operations
+// fast path works in bands of rows: it computes the band's luma rows, for each row the
+// luma-plane rows the method's searches reach that this thread does not hold yet (a ring
+// per thread, luma_planes.hpp), and the early-exit mask with Highway (same float operations
 // per lane, so the same bits), lets the method's vector kernel write the 16-pixel chunks
 // that hold edge pixels, copies the runs of unchanged pixels and gives the few remaining
 // edge pixels (image borders) to the scalar kernel; bands in parallel.
@@ -69,12 +70,13 @@ struct PlaneNeeds {
     int reach = 0;
 };
 
-//! Rows per band of the fast path: its luma rows and planes stay in cache between being
-//! computed and being read. Measured on the 2-core EPYC VM at 1080p, one thread:
-//! frame-sized planes 17.3 ms (fxaa3d) / 18.2 ms (ddaa2), the same work in 60-120-row
-//! bands 11-14 ms, beyond 250 rows most of the gain is gone; on 2 threads 48-row bands
-//! beat 96 (fxaa3d 6.0 vs 6.15 ms, ddaa2 6.05 vs 6.3 ms: finer load balance) and 32 (more
-//! halo rows per band).
+//! Rows per band of the fast path: its luma rows stay in cache between being computed and
+//! being read, and bands are small enough to share out evenly. Measured on the 2-core EPYC
+//! VM at 1080p: frame-sized planes 17.3 ms (fxaa3d) / 18.2 ms (ddaa2) on one thread, the
+//! same work in 60-120-row bands 11-14 ms; on 2 threads 48-row bands beat 96 (fxaa3d 6.0
+//! vs 6.15 ms, ddaa2 6.05 vs 6.3 ms: finer load balance) and 32 (more halo rows). Since
+//! the planes moved to per-thread rings (a thread's next band reuses the rows it reaches),
+//! 24 and 48 tie and 96 is still slower (fxaa3d 5.9 / 5.9 / 6.2 ms).
 inline constexpr int kBandRows = 48;
 
 //! No vector row kernel: every edge pixel goes through the scalar kernel.
@@ -84,8 +86,8 @@ struct NoRowKernel {
 
 //! Scalar path (the reference, or a colour-aware measure, chromaWeight > 0): the luma plane
 //! pixel by pixel, then every pixel through the scalar kernel `pixel`. Fast path: per band of kBandRows
-//! rows, in parallel, the band's luma rows and the planes `needs` asks for, then per row
-//! the early-exit mask; `rowKernel(y, L, planes, mask, src, dst)` may write pixels of row y
+//! rows, in parallel, the band's luma rows, then per row the plane rows `needs` asks for
+//! and the early-exit mask; `rowKernel(y, L, planes, mask, src, dst)` may write pixels of row y
 //! itself (a vector kernel across pixels) and sets their mask bytes to kWritten; the
 //! driver copies kExit runs and runs `pixel` on the kEdge pixels.
 template <class PixelFn, class RowKernel = NoRowKernel>
@@ -110,14 +112,15 @@ void runLumaMethod(ImageView<const Rgba8> in, ImageView<Rgba8> out, bool scalar,
         });
         return;
     }
+    const std::uint64_t call = needs.planes ? newPlaneCall() : 0;
     parallelRows(
         in.height(), exec,
         [&](int y0, int y1) {
             const LumaRows L = bandLumaRows(in, y0, y1);
-            const LumaPlanes planes =
-                needs.planes ? bandLumaPlanes(in, y0, y1, needs.reach, needs.quad) : LumaPlanes{};
             std::vector<std::uint8_t> mask(static_cast<std::size_t>(w));
             for (int y = y0; y < y1; ++y) {
+                const LumaPlanes planes =
+                    needs.planes ? planeRowsFor(in, call, y, needs.reach, needs.quad) : LumaPlanes{};
                 const Rgba8* src = in.row(y);
                 Rgba8* dst = out.row(y);
                 std::uint8_t* m = mask.data();

@@ -21,22 +21,28 @@ namespace ssfx::aa::detail {
 //!  H: row r (0 <= r <= H), column x = half-way between pixels (x, r - 1) and (x, r);
 //!  V: row y (0 <= y < H), column c (0 <= c <= W) = half-way between pixels (c - 1, y), (c, y);
 //!  Q (optional): row r, column c = half-way between the four pixels around corner (c, r).
-//! A band holds plane rows [first, first + rows) of each (V: those below H), one plane
-//! after the other; the methods compute a band per row block, so the rows they read come
-//! from cache rather than from frame-sized planes.
+//! Rows live in a ring per plane, one plane after the other: plane row r in slot
+//! r & ringMask of ringMask + 1 (a power of two). A thread walking down the image computes
+//! each plane row once, just before its searches first reach it, and reads it from cache
+//! while it is within reach (planeRowsFor()).
 struct LumaPlanes {
     const float* data = nullptr;
     int width = 0, height = 0;  //!< of the image
     bool quad = false;
-    int first = 0, rows = 0;
-    std::size_t sizeH() const { return std::size_t(rows) * std::size_t(width); }
-    std::size_t sizeV() const { return std::size_t(rows) * std::size_t(width + 1); }
-    std::size_t rowH(int r) const { return std::size_t(r - first) * std::size_t(width); }
-    std::size_t rowV(int y) const { return sizeH() + std::size_t(y - first) * std::size_t(width + 1); }
-    std::size_t rowQ(int r) const { return sizeH() + sizeV() + std::size_t(r - first) * std::size_t(width + 1); }
+    int ringMask = 0;
+    std::size_t ringRows() const { return std::size_t(ringMask) + 1; }
+    std::size_t slot(int r) const { return std::size_t(r & ringMask); }
+    std::size_t sizeH() const { return ringRows() * std::size_t(width); }
+    std::size_t sizeV() const { return ringRows() * std::size_t(width + 1); }
+    std::size_t rowH(int r) const { return slot(r) * std::size_t(width); }
+    std::size_t rowV(int y) const { return sizeH() + slot(y) * std::size_t(width + 1); }
+    std::size_t rowQ(int r) const { return sizeH() + sizeV() + slot(r) * std::size_t(width + 1); }
     std::size_t size() const { return sizeH() + sizeV() + (quad ? sizeV() : 0); }
     bool hasQuad() const { return quad; }
 };
+
+//! Largest ring (rows per plane): searches may reach up to (kMaxPlaneRing - 2) / 2 rows.
+inline constexpr int kMaxPlaneRing = 64;
 
 //! Luma of the GPU-model read half-way between texels a and b.
 inline float pairLuma(const Rgba8& a, const Rgba8& b) {
@@ -50,10 +56,10 @@ inline float quadLuma(const Rgba8& a, const Rgba8& b, const Rgba8& c, const Rgba
                 kSixteenthLevels[std::size_t(4 * (a.b + b.b + c.b + d.b))]);
 }
 
-//! The vector kernels index the planes with int32 gather indices (a band holds at most all
-//! rows).
-inline bool planesFitGatherIndices(int width, int height) {
-    return std::int64_t(width + 1) * std::int64_t(height + 1) * 3 < std::int64_t(INT32_MAX);
+//! The vector kernels index the planes with int32 gather indices (at most three rings of
+//! kMaxPlaneRing rows).
+inline bool planesFitGatherIndices(int width) {
+    return std::int64_t(width + 1) * kMaxPlaneRing * 3 < std::int64_t(INT32_MAX);
 }
 
 //! Runs check(n, inv, centre(i), split(coord)) for the x axis, then the y axis, of a
@@ -113,9 +119,14 @@ bool oncePerSize(int width, int height, int option, const Check& check) {
 //! (then its vector kernel runs; otherwise the scalar one). In fxaa3d.cpp.
 bool walkReadsArePlaneReads(const Texture& tex, bool paperSearchQuirk);
 
-//! The plane rows that pixel rows [y0, y1) read when their searches go at most `reach`
-//! rows away (clamped to the planes), computed (SIMD) into a buffer kept per calling
-//! thread. Valid until the next call on the same thread.
-LumaPlanes bandLumaPlanes(ImageView<const Rgba8> in, int y0, int y1, int reach, bool withQuad);
+//! A new id for one run of a method over an image: the plane rings kept per thread hold
+//! rows of the image of one call at a time.
+std::uint64_t newPlaneCall();
+
+//! The plane rows that pixel row y reads when its searches go at most `reach` rows away
+//! (plane rows y - reach .. y + reach + 1, clamped), in a ring kept per calling thread:
+//! rows already there from the same call (the row above, typically) are kept, the others
+//! computed (SIMD). Valid until the next call on the same thread; reach <= 31.
+LumaPlanes planeRowsFor(ImageView<const Rgba8> in, std::uint64_t call, int y, int reach, bool withQuad);
 
 }  // namespace ssfx::aa::detail

@@ -252,10 +252,10 @@ HWY_INLINE void RowChunks(int w, std::uint8_t* mask, const Chunk& chunk) {
     }
 }
 
-// The rows [first, first + rows) of each luma plane (layout in luma_planes.hpp). Half-way
+// Plane rows [r0, r1) of each luma plane, into their ring slots (layout in luma_planes.hpp). Half-way
 // reads between two texels are 8 (a + b) / 4080 = (a + b) / 510 per channel, between four
 // texels 4 (a + b + c + d) / 4080 = (a + b + c + d) / 1020, both exactly (same real number).
-inline void LumaPlaneRows(ImageView<const Rgba8> in, const LumaPlanes& planes) {
+inline void LumaPlaneRows(ImageView<const Rgba8> in, const LumaPlanes& planes, int r0, int r1) {
     const DF df;
     const DI di;
     const DU du;
@@ -283,7 +283,7 @@ inline void LumaPlaneRows(ImageView<const Rgba8> in, const LumaPlanes& planes) {
         return lumaOf(sum(0), sum(8), sum(16), k1020);
     };
     auto clampRow = [h](int y) { return y < 0 ? 0 : (y >= h ? h - 1 : y); };
-    for (int r = planes.first; r < planes.first + planes.rows; ++r) {
+    for (int r = r0; r < r1; ++r) {
         // Plane H, row r: between image rows r - 1 and r (clamped).
         const Rgba8* a = in.row(clampRow(r - 1));
         const Rgba8* b = in.row(clampRow(r));

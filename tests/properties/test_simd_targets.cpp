@@ -115,3 +115,53 @@ TEST(SimdTargets, LongVerticalSearchesAcrossBandsEqualTheReference) {
         }
     }
 }
+
+// The plane rows live in a ring per thread that the next rows of the same call reuse. A
+// second call on the same buffer, with new pixels, must not read the first call's rows:
+// one thread runs both calls, and the image is shorter than the ring, so the ring still
+// holds every row of the first call at the positions the second one reads.
+TEST(SimdTargets, PlaneRowsOfAnEarlierCallAreNotReused) {
+    auto edges = [](ImageRgba8& img, int shift) {
+        for (int y = 0; y < img.height(); ++y)
+            for (int x = 0; x < img.width(); ++x) {
+                const int edge = 20 + shift + y / 40, edge2 = 45 - y / 37;
+                const std::uint8_t v = x < edge ? 30 : (x < edge2 ? 220 : 120);
+                img(x, y) = {v, std::uint8_t(v / 2 + shift), v, 255};
+            }
+    };
+    ImageRgba8 img(60, 48);
+    const Exec one{1};
+    for (const char* id : {"fxaa3d", "ddaa2"}) {
+        const MethodInfo& m = methodById(id);
+        edges(img, 0);
+        const ImageRgba8 first = m.run(img.view(), {}, one);
+        edges(img, 7);  // same buffer, same size, other pixels
+        const ImageRgba8 second = m.run(img.view(), {}, one);
+        EXPECT_NE(first, second) << id;
+        EXPECT_EQ(second, m.reference(img.view(), {}, {})) << id;
+    }
+}
+
+// Near-horizontal edges between rows 63 | 64 and 127 | 128: the pixels above them read the
+// plane row below, which sits at the ring's first slot while theirs is at its last. Both
+// the gathers (40 px wide) and the contiguous loads (130 px) take that path.
+TEST(SimdTargets, HorizontalEdgesAtThePlaneRingsWrapEqualTheReference) {
+    const ResetTargets reset;
+    for (const int w : {40, 130}) {
+        ImageRgba8 img(w, 200);
+        for (int y = 0; y < img.height(); ++y)
+            for (int x = 0; x < w; ++x) {
+                const bool band = (y >= 64 + x / 32 && y < 128 + x / 40) || y >= 192 - x / 50;
+                const std::uint8_t v = band ? 210 : 35;
+                img(x, y) = {v, std::uint8_t(v - 20), v, 255};
+            }
+        for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+            hwy::SetSupportedTargetsForTest(target);
+            for (const char* id : {"fxaa3d", "ddaa2"}) {
+                const MethodInfo& m = methodById(id);
+                EXPECT_EQ(m.run(img.view(), {}, {}), m.reference(img.view(), {}, {}))
+                    << hwy::TargetName(target) << " " << id << " width " << w;
+            }
+        }
+    }
+}
