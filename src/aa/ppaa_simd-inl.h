@@ -55,14 +55,18 @@ HWY_INLINE AxisV SplitAxis(VF coord, float size, int n) {
     return {hn::Min(hn::Max(i, zero), last), hn::Min(hn::Max(hn::Add(i, one), zero), last), w};
 }
 
-// k = (sum + 2048) >> 12 of one channel (byte `shift` of each texel), as a float k / 4080.
-HWY_INLINE VF Channel(VU t00, VU t10, VU t01, VU t11, VI w00, VI w10, VI w01, VI w11, int shift) {
+// k = (sum + 2048) >> 12 of one channel (byte `shift` of each texel), as a float k / 4080,
+// where sum = (256 - wx)(256 - wy) t00 + wx (256 - wy) t10 + (256 - wx) wy t01 + wx wy t11.
+// Evaluated as two lerps, (256 - wy) top + wy bottom with top = (256 - wx) t00 + wx t10:
+// the same integer (no rounding in between, |sum| < 2^24), three multiplies instead of
+// four plus the four weights'.
+HWY_INLINE VF Channel(VU t00, VU t10, VU t01, VU t11, VI wx, VI wy, int shift) {
     const DF df;
     const DI di;
     const VU mask = hn::Set(DU(), 0xFFu);
     auto byte = [&](VU t) { return hn::BitCast(di, hn::And(hn::ShiftRightSame(t, shift), mask)); };
-    const VI sum = hn::Add(hn::Add(hn::Add(hn::Mul(w00, byte(t00)), hn::Mul(w10, byte(t10))), hn::Mul(w01, byte(t01))),
-                           hn::Mul(w11, byte(t11)));
+    auto lerp = [](VI a, VI b, VI w) { return hn::Add(hn::ShiftLeft<8>(a), hn::Mul(w, hn::Sub(b, a))); };
+    const VI sum = lerp(lerp(byte(t00), byte(t10), wx), lerp(byte(t01), byte(t11), wx), wy);
     const VI k = hn::ShiftRight<12>(hn::Add(sum, hn::Set(di, 2048)));
     // (Tried before DivExact: float(double(k) * (1 / 4080.0)), exact too but slower than
     // vdivps on Zen 4.)
@@ -82,11 +86,8 @@ HWY_INLINE RgbV SampleGpu(const Texture& tex, VF u, VF v) {
     const VU t10 = hn::GatherIndex(du, base, hn::Add(r0, ax.i1));
     const VU t01 = hn::GatherIndex(du, base, hn::Add(r1, ax.i0));
     const VU t11 = hn::GatherIndex(du, base, hn::Add(r1, ax.i1));
-    const VI k256 = hn::Set(di, 256);
-    const VI nx = hn::Sub(k256, ax.w), ny = hn::Sub(k256, ay.w);
-    const VI w00 = hn::Mul(nx, ny), w10 = hn::Mul(ax.w, ny), w01 = hn::Mul(nx, ay.w), w11 = hn::Mul(ax.w, ay.w);
-    return {Channel(t00, t10, t01, t11, w00, w10, w01, w11, 0), Channel(t00, t10, t01, t11, w00, w10, w01, w11, 8),
-            Channel(t00, t10, t01, t11, w00, w10, w01, w11, 16)};
+    return {Channel(t00, t10, t01, t11, ax.w, ay.w, 0), Channel(t00, t10, t01, t11, ax.w, ay.w, 8),
+            Channel(t00, t10, t01, t11, ax.w, ay.w, 16)};
 }
 
 // A coordinate split as SplitAxis does (t = coord size - 0.5), relative to each lane's own
@@ -136,11 +137,8 @@ HWY_INLINE bool NearSample(const Texture& tex, VF u, VF v, int x, int y, const h
     }
     const VU t00 = hn::IfThenElse(ly, left[0], left[1]), t10 = hn::IfThenElse(ly, right[0], right[1]);
     const VU t01 = hn::IfThenElse(ly, left[1], left[2]), t11 = hn::IfThenElse(ly, right[1], right[2]);
-    const VI k = hn::Set(di, 256);
-    const VI nx = hn::Sub(k, wx), ny = hn::Sub(k, wy);
-    const VI w00 = hn::Mul(nx, ny), w10 = hn::Mul(wx, ny), w01 = hn::Mul(nx, wy), w11 = hn::Mul(wx, wy);
-    *c = {Channel(t00, t10, t01, t11, w00, w10, w01, w11, 0), Channel(t00, t10, t01, t11, w00, w10, w01, w11, 8),
-          Channel(t00, t10, t01, t11, w00, w10, w01, w11, 16)};
+    *c = {Channel(t00, t10, t01, t11, wx, wy, 0), Channel(t00, t10, t01, t11, wx, wy, 8),
+          Channel(t00, t10, t01, t11, wx, wy, 16)};
     return true;
 }
 
