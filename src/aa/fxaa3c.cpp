@@ -41,17 +41,17 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Fxaa3cParams& p,
     const bool centres = p.diagonalOffset == 1.0f;
     const float du = p.diagonalOffset * tex.invW(), dv = p.diagonalOffset * tex.invH();
     const int w = in.width(), h = in.height();
-    // The scalar kernel; lumaAt(x, y) is the luma plane at a pixel inside the image.
-    auto pixel = [&](const auto& lumaAt, int x, int y) -> Rgba8 {
+    // The scalar kernel, reading luma from L (a band's rows or the whole plane).
+    auto pixel = [&](const LumaRows& L, int x, int y) -> Rgba8 {
         const Rgba8 m = in(x, y);
         const float u = tex.centreU(x), v = tex.centreV(y);
         auto diag = [&](int sx, int sy) {
-            return centres ? lumaAt(std::clamp(x + sx, 0, w - 1), std::clamp(y + sy, 0, h - 1))
+            return centres ? L.row(y + sy)[std::clamp(x + sx, 0, w - 1)]
                            : edgeLuma(tex.sample(u + float(sx) * du, v + float(sy) * dv), p.chromaWeight);
         };
         const float lumaNW = diag(-1, -1), lumaSW = diag(-1, +1), lumaSE = diag(+1, +1);
         const float lumaNE = diag(+1, -1) + 1.0f / 384.0f;  // FXAA: keeps dir from being 0
-        const float lumaM = lumaAt(x, y);
+        const float lumaM = L.row(y)[x];
         const float lumaMax = maxf(maxf(lumaNE, lumaSE), maxf(lumaNW, lumaSW));
         const float lumaMin = minf(minf(lumaNE, lumaSE), minf(lumaNW, lumaSW));
         if (maxf(lumaMax, lumaM) - minf(lumaMin, lumaM) < maxf(p.edgeThresholdMin, lumaMax * p.edgeThreshold))
@@ -83,11 +83,11 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Fxaa3cParams& p,
     // Reference path, and the colour-aware measure (chromaWeight > 0): the luma plane
     // pixel by pixel, the scalar kernel everywhere, on all threads.
     if (reference || p.chromaWeight != 0.0f) {
-        const ImageF L = lumaPlaneReference(in, p.chromaWeight);
-        auto lumaAt = [&](int x, int y) { return L(x, y); };
+        const ImageF plane = lumaPlaneReference(in, p.chromaWeight);
+        const LumaRows L{plane.data(), w, h, 0};
         parallelRows(h, exec, [&](int y0, int y1) {
             for (int y = y0; y < y1; ++y)
-                for (int x = 0; x < w; ++x) out(x, y) = pixel(lumaAt, x, y);
+                for (int x = 0; x < w; ++x) out(x, y) = pixel(L, x, y);
         });
         return;
     }
@@ -99,15 +99,14 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Fxaa3cParams& p,
         h, exec,
         [&](int y0, int y1) {
             const LumaRows L = bandLumaRows(in, y0, y1);
-            auto lumaAt = [&](int x, int y) { return L.row(y)[x]; };
             for (int y = y0; y < y1; ++y) {
                 Rgba8* row = out.row(y);
                 int x = 0;
                 if (vector) {
-                    row[0] = pixel(lumaAt, 0, y);
+                    row[0] = pixel(L, 0, y);
                     x = HWY_DYNAMIC_DISPATCH(Fxaa3cRowSimd)(tex, L, y, p, in.row(y), row);
                 }
-                for (; x < w; ++x) row[x] = pixel(lumaAt, x, y);
+                for (; x < w; ++x) row[x] = pixel(L, x, y);
             }
         },
         kBandRows);

@@ -83,13 +83,9 @@ HWY_INLINE bool AcrossLerp(const Texture& tex, const hn::Mask<DF>& horizontal, V
     const auto hor = hn::RebindMask(du, horizontal), lo = hn::RebindMask(du, s.before);
     const VU a = hn::IfThenElse(lo, hn::IfThenElse(hor, above, left), centre);
     const VU b = hn::IfThenElse(lo, centre, hn::IfThenElse(hor, below, right));
-    const VU mask = hn::Set(du, 0xFFu);
-    const ExactDivisor<DF> k4080(df, 4080.0f);
     auto channel = [&](int shift) {
-        const VI ca = hn::BitCast(di, hn::And(hn::ShiftRightSame(a, shift), mask));
-        const VI cb = hn::BitCast(di, hn::And(hn::ShiftRightSame(b, shift), mask));
-        const VI sum = hn::Add(hn::ShiftLeft<8>(ca), hn::Mul(w, hn::Sub(cb, ca)));  // (256 - w) a + w b
-        return DivExact(hn::ConvertTo(df, hn::ShiftRight<4>(hn::Add(sum, hn::Set(di, 8)))), k4080);
+        const VI sum = Lerp256(TexelByte(a, shift), TexelByte(b, shift), w);
+        return Levels4080(hn::ShiftRight<4>(hn::Add(sum, hn::Set(di, 8))));
     };
     *c = {channel(0), channel(8), channel(16)};
     return true;

@@ -20,8 +20,9 @@
 
 namespace ssfx::aa::detail {
 
-//! The fast path's luma plane rows from `first` on (one band and one row either side).
-//! row(y) clamps y to the image, as the 3x3 neighbourhood does.
+//! Luma plane rows from `first` on: one band and one row either side (fast path), or the
+//! whole plane (first = 0, scalar path). row(y) clamps y to the image, as the 3x3
+//! neighbourhood does.
 struct LumaRows {
     const float* data = nullptr;
     int width = 0, height = 0, first = 0;
@@ -96,7 +97,8 @@ void runLumaMethod(ImageView<const Rgba8> in, ImageView<Rgba8> out, bool scalar,
                    const PixelFn& pixel, const RowKernel& rowKernel = {}) {
     const int w = in.width();
     if (scalar) {
-        const ImageF L = lumaPlaneReference(in, chromaWeight);
+        const ImageF plane = lumaPlaneReference(in, chromaWeight);
+        const LumaRows L{plane.data(), w, in.height(), 0};
         parallelRows(in.height(), exec, [&](int y0, int y1) {
             for (int y = y0; y < y1; ++y) {
                 const Rgba8* src = in.row(y);

@@ -54,16 +54,6 @@ struct Luma3x3 {
     float C, W, E, S, N, SW, NW, SE, NE;
 };
 
-inline Luma3x3 neighbourhood(const ImageF& L, int x, int y) {
-    const int w = L.width(), h = L.height();
-    const int xm = x > 0 ? x - 1 : 0, xp = x + 1 < w ? x + 1 : w - 1;
-    const int ym = y > 0 ? y - 1 : 0, yp = y + 1 < h ? y + 1 : h - 1;
-    const float* ra = L.data() + std::size_t(ym) * w;
-    const float* rc = L.data() + std::size_t(y) * w;
-    const float* rb = L.data() + std::size_t(yp) * w;
-    return {rc[x], rc[xm], rc[xp], ra[x], rb[x], ra[xm], rb[xm], ra[xp], rb[xp]};
-}
-
 //! Early exit of section 1: true when the pixel is left unchanged. `range` receives
 //! lumaMax - lumaMin over the centre and its four direct neighbours.
 inline bool belowEdgeThreshold(const Luma3x3& n, float thresholdMin, float threshold, float* range) {

@@ -55,22 +55,31 @@ HWY_INLINE AxisV SplitAxis(VF coord, float size, int n) {
     return {hn::Min(hn::Max(i, zero), last), hn::Min(hn::Max(hn::Add(i, one), zero), last), w};
 }
 
+// Byte `shift` of each texel, as an int per lane.
+HWY_INLINE VI TexelByte(VU t, int shift) {
+    return hn::BitCast(DI(), hn::And(hn::ShiftRightSame(t, shift), hn::Set(DU(), 0xFFu)));
+}
+
+// (256 - w) a + w b, the GPU model's weighting of two values with weight w in [0, 256].
+HWY_INLINE VI Lerp256(VI a, VI b, VI w) { return hn::Add(hn::ShiftLeft<8>(a), hn::Mul(w, hn::Sub(b, a))); }
+
+// A read's level k in [0, 4080] as the float k / 4080 (the IEEE quotient).
+HWY_INLINE VF Levels4080(VI k) {
+    const DF df;
+    // (Tried before DivExact: float(double(k) * (1 / 4080.0)), exact too but slower than
+    // vdivps on Zen 4.)
+    return DivExact(hn::ConvertTo(df, k), ExactDivisor<DF>(df, 4080.0f));
+}
+
 // k = (sum + 2048) >> 12 of one channel (byte `shift` of each texel), as a float k / 4080,
 // where sum = (256 - wx)(256 - wy) t00 + wx (256 - wy) t10 + (256 - wx) wy t01 + wx wy t11.
 // Evaluated as two lerps, (256 - wy) top + wy bottom with top = (256 - wx) t00 + wx t10:
 // the same integer (no rounding in between, |sum| < 2^24), three multiplies instead of
 // four plus the four weights'.
 HWY_INLINE VF Channel(VU t00, VU t10, VU t01, VU t11, VI wx, VI wy, int shift) {
-    const DF df;
-    const DI di;
-    const VU mask = hn::Set(DU(), 0xFFu);
-    auto byte = [&](VU t) { return hn::BitCast(di, hn::And(hn::ShiftRightSame(t, shift), mask)); };
-    auto lerp = [](VI a, VI b, VI w) { return hn::Add(hn::ShiftLeft<8>(a), hn::Mul(w, hn::Sub(b, a))); };
-    const VI sum = lerp(lerp(byte(t00), byte(t10), wx), lerp(byte(t01), byte(t11), wx), wy);
-    const VI k = hn::ShiftRight<12>(hn::Add(sum, hn::Set(di, 2048)));
-    // (Tried before DivExact: float(double(k) * (1 / 4080.0)), exact too but slower than
-    // vdivps on Zen 4.)
-    return DivExact(hn::ConvertTo(df, k), ExactDivisor<DF>(df, 4080.0f));
+    const VI sum = Lerp256(Lerp256(TexelByte(t00, shift), TexelByte(t10, shift), wx),
+                           Lerp256(TexelByte(t01, shift), TexelByte(t11, shift), wx), wy);
+    return Levels4080(hn::ShiftRight<12>(hn::Add(sum, hn::Set(DI(), 2048))));
 }
 
 // Bilinear GPU-model read at (u, v) per lane (Texture::sampleGpu).
@@ -255,29 +264,28 @@ HWY_INLINE void RowChunks(int w, std::uint8_t* mask, const Chunk& chunk) {
 // texels 4 (a + b + c + d) / 4080 = (a + b + c + d) / 1020, both exactly (same real number).
 inline void LumaPlaneRows(ImageView<const Rgba8> in, const LumaPlanes& planes, int r0, int r1) {
     const DF df;
-    const DI di;
     const DU du;
     const int w = in.width(), h = in.height(), n = int(hn::Lanes(df));
     float* data = const_cast<float*>(planes.data);
-    const VU mask = hn::Set(du, 0xFFu);
     const VF wr = hn::Set(df, 0.299f), wg = hn::Set(df, 0.587f), wb = hn::Set(df, 0.114f);
-    auto ch = [&](VU p, int shift) { return hn::And(hn::ShiftRightSame(p, shift), mask); };
     const ExactDivisor<DF> k510(df, 510.0f), k1020(df, 1020.0f);
-    auto lumaOf = [&](VU sr, VU sg, VU sb, const ExactDivisor<DF>& k) {
-        const VF r = DivExact(hn::ConvertTo(df, hn::BitCast(di, sr)), k);
-        const VF g = DivExact(hn::ConvertTo(df, hn::BitCast(di, sg)), k);
-        const VF b = DivExact(hn::ConvertTo(df, hn::BitCast(di, sb)), k);
+    auto lumaOf = [&](VI sr, VI sg, VI sb, const ExactDivisor<DF>& k) {
+        const VF r = DivExact(hn::ConvertTo(df, sr), k);
+        const VF g = DivExact(hn::ConvertTo(df, sg), k);
+        const VF b = DivExact(hn::ConvertTo(df, sb), k);
         return hn::Sqrt(hn::Add(hn::Add(hn::Mul(wr, r), hn::Mul(wg, g)), hn::Mul(wb, b)));
     };
     auto load = [&](const Rgba8* p) { return hn::LoadU(du, reinterpret_cast<const std::uint32_t*>(p)); };
     auto pairV = [&](const Rgba8* a, const Rgba8* b) {
         const VU pa = load(a), pb = load(b);
-        return lumaOf(hn::Add(ch(pa, 0), ch(pb, 0)), hn::Add(ch(pa, 8), ch(pb, 8)), hn::Add(ch(pa, 16), ch(pb, 16)),
-                      k510);
+        auto sum = [&](int s) { return hn::Add(TexelByte(pa, s), TexelByte(pb, s)); };
+        return lumaOf(sum(0), sum(8), sum(16), k510);
     };
     auto quadV = [&](const Rgba8* a, const Rgba8* b) {  // columns c - 1, c of rows a and b
         const VU p0 = load(a), p1 = load(a + 1), p2 = load(b), p3 = load(b + 1);
-        auto sum = [&](int s) { return hn::Add(hn::Add(ch(p0, s), ch(p1, s)), hn::Add(ch(p2, s), ch(p3, s))); };
+        auto sum = [&](int s) {
+            return hn::Add(hn::Add(TexelByte(p0, s), TexelByte(p1, s)), hn::Add(TexelByte(p2, s), TexelByte(p3, s)));
+        };
         return lumaOf(sum(0), sum(8), sum(16), k1020);
     };
     auto clampRow = [h](int y) { return y < 0 ? 0 : (y >= h ? h - 1 : y); };
