@@ -57,8 +57,9 @@ HWY_INLINE DiffusionV Diffusion(const NeighbourhoodV& n, const Ddaa1Params& p) {
     return d;
 }
 
-// diffuse(): the average of two reads at centre -/+ step + (offU, offV), quantised and
-// stored with the source alpha; lanes whose exit mask is set keep the source pixel.
+// diffuse(): the average of two reads at centre -/+ step + (offU, offV), quantised (from
+// the reads' levels: ByteOfMeanLevel) and stored with the source alpha; lanes whose exit
+// mask is set keep the source pixel.
 HWY_INLINE void DiffuseAndStore(const Texture& tex, const DiffusionV& d, float maxDiffusion, VF offU, VF offV, int x,
                                 int y, const std::uint8_t* exitMask, const Rgba8* src, Rgba8* dst) {
     const DF df;
@@ -73,12 +74,10 @@ HWY_INLINE void DiffuseAndStore(const Texture& tex, const DiffusionV& d, float m
     // diffusion shrinking as the edge offset grows), so they nearly always come from the
     // pixel's 3 x 3 texels; the rest are gathered.
     const auto skip = ExitLanes(exitMask, x);
-    RgbV a, b;
-    if (!NearSample(tex, au, av, x, y, skip, &a)) a = SampleGpu(tex, au, av);
-    if (!NearSample(tex, bu, bv, x, y, skip, &b)) b = SampleGpu(tex, bu, bv);
-    const VF half = hn::Set(df, 0.5f);
-    StoreRgb({hn::Mul(hn::Add(a.r, b.r), half), hn::Mul(hn::Add(a.g, b.g), half), hn::Mul(hn::Add(a.b, b.b), half)},
-             x, exitMask, src, dst);
+    RgbK a, b;
+    if (!NearSample(tex, au, av, x, y, skip, &a)) a = SampleGpuLevels(tex, au, av);
+    if (!NearSample(tex, bu, bv, x, y, skip, &b)) b = SampleGpuLevels(tex, bu, bv);
+    StoreBytes(ByteOfMeanLevel(a.r, b.r), ByteOfMeanLevel(a.g, b.g), ByteOfMeanLevel(a.b, b.b), x, exitMask, src, dst);
 }
 
 // ddaa1 for pixels [x, x + N) of row y, 1 <= x, x + N <= W - 1.

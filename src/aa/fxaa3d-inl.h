@@ -58,13 +58,13 @@ HWY_INLINE VI WalkIndex(const LumaPlanes& planes, const hn::Mask<DI>& horizontal
 
 // fxaa3d's final read, at the pixel's centre along the edge and `across` (a texture
 // coordinate) across it, when pixel centres are texels (centresAreTexels): the GPU model's
-// lerp between the two texels across the edge around the read, from contiguous loads of
-// rows y - 1, y, y + 1 (clamped) and columns x - 1, x, x + 1 instead of four gathers.
+// lerp between the two texels across the edge around the read, as levels, from contiguous
+// loads of rows y - 1, y, y + 1 (clamped) and columns x - 1, x, x + 1 instead of four gathers.
 // The bilinear sum with along-weight 0 is 256 ((256 - w) a + w b), so the read's k is
 // ((256 - w) a + w b + 8) >> 4. Returns false, writing nothing, when a lane that counts
 // reads further than one texel before its own (then the caller gathers).
 HWY_INLINE bool AcrossLerp(const Texture& tex, const hn::Mask<DF>& horizontal, VF across, int x, int y,
-                           const hn::Mask<DF>& skip, RgbV* c) {
+                           const hn::Mask<DF>& skip, RgbK* c) {
     const DF df;
     const DI di;
     const DU du;
@@ -85,7 +85,7 @@ HWY_INLINE bool AcrossLerp(const Texture& tex, const hn::Mask<DF>& horizontal, V
     const VU b = hn::IfThenElse(lo, centre, hn::IfThenElse(hor, below, right));
     auto channel = [&](int shift) {
         const VI sum = Lerp256(TexelByte(a, shift), TexelByte(b, shift), w);
-        return Levels4080(hn::ShiftRight<4>(hn::Add(sum, hn::Set(di, 8))));
+        return hn::ShiftRight<4>(hn::Add(sum, hn::Set(di, 8)));
     };
     *c = {channel(0), channel(8), channel(16)};
     return true;
@@ -191,10 +191,10 @@ HWY_INLINE void Fxaa3dChunk(const Texture& tex, const LumaRows& L, const LumaPla
     const VF shift = hn::Mul(offset, lengthSign);
     const VF su = hn::IfThenElse(s.horizontal, u, hn::Add(u, shift));
     const VF sv = hn::IfThenElse(s.horizontal, hn::Add(v, shift), v);
-    RgbV c;
+    RgbK c;
     if (!lerp || !AcrossLerp(tex, s.horizontal, hn::IfThenElse(s.horizontal, sv, su), x, y, skip, &c))
-        c = SampleGpu(tex, su, sv);
-    StoreRgb(c, x, exitMask, src, dst);
+        c = SampleGpuLevels(tex, su, sv);
+    StoreBytes(ByteOfLevel(c.r), ByteOfLevel(c.g), ByteOfLevel(c.b), x, exitMask, src, dst);
 }
 
 // lerp: centresAreTexels(tex), so the final reads may take AcrossLerp.

@@ -1,4 +1,5 @@
-// Dispatch of the plane computation (body: LumaPlaneRows in ppaa_simd-inl.h).
+// Dispatch of the plane computation (body: LumaPlaneRows in ppaa_simd-inl.h), and of the
+// test hooks of ppaa_simd-inl.h (ppaa_simd.hpp).
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "src/aa/ppaa_simd-inl.h"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
@@ -13,11 +14,17 @@
 #include <vector>
 
 #include "src/aa/luma_planes.hpp"
+#include "src/aa/ppaa_simd.hpp"
 #include "ssfx/core/error.hpp"
 
 namespace ssfx::aa::detail {
 
 HWY_EXPORT(LumaPlaneRows);
+HWY_EXPORT(LevelByteMismatches);
+HWY_EXPORT(MeanLevelByteMismatches);
+
+std::int64_t levelByteMismatches() { return HWY_DYNAMIC_DISPATCH(LevelByteMismatches)(); }
+std::int64_t meanLevelByteMismatches() { return HWY_DYNAMIC_DISPATCH(MeanLevelByteMismatches)(); }
 
 std::uint64_t newPlaneCall() {
     static std::atomic<std::uint64_t> calls{0};

@@ -14,6 +14,9 @@
 
 #include <hwy/highway.h>
 
+#include <cstdint>
+#include <vector>
+
 #include "src/aa/luma_driver.hpp"
 #include "src/aa/luma_planes.hpp"
 #include "src/aa/ppaa_common.hpp"
@@ -71,19 +74,29 @@ HWY_INLINE VF Levels4080(VI k) {
     return DivExact(hn::ConvertTo(df, k), ExactDivisor<DF>(df, 4080.0f));
 }
 
-// k = (sum + 2048) >> 12 of one channel (byte `shift` of each texel), as a float k / 4080,
-// where sum = (256 - wx)(256 - wy) t00 + wx (256 - wy) t10 + (256 - wx) wy t01 + wx wy t11.
+// k = (sum + 2048) >> 12 of one channel (byte `shift` of each texel): the read's level in
+// [0, 4080], whose value is k / 4080 (Levels4080), where
+// sum = (256 - wx)(256 - wy) t00 + wx (256 - wy) t10 + (256 - wx) wy t01 + wx wy t11.
 // Evaluated as two lerps, (256 - wy) top + wy bottom with top = (256 - wx) t00 + wx t10:
 // the same integer (no rounding in between, |sum| < 2^24), three multiplies instead of
 // four plus the four weights'.
-HWY_INLINE VF Channel(VU t00, VU t10, VU t01, VU t11, VI wx, VI wy, int shift) {
+HWY_INLINE VI ChannelLevel(VU t00, VU t10, VU t01, VU t11, VI wx, VI wy, int shift) {
     const VI sum = Lerp256(Lerp256(TexelByte(t00, shift), TexelByte(t10, shift), wx),
                            Lerp256(TexelByte(t01, shift), TexelByte(t11, shift), wx), wy);
-    return Levels4080(hn::ShiftRight<12>(hn::Add(sum, hn::Set(DI(), 2048))));
+    return hn::ShiftRight<12>(hn::Add(sum, hn::Set(DI(), 2048)));
 }
 
-// Bilinear GPU-model read at (u, v) per lane (Texture::sampleGpu).
-HWY_INLINE RgbV SampleGpu(const Texture& tex, VF u, VF v) {
+// A GPU-model read per lane as its three levels (value k / 4080 each).
+struct RgbK {
+    VI r, g, b;
+};
+HWY_INLINE RgbK ChannelLevels(VU t00, VU t10, VU t01, VU t11, VI wx, VI wy) {
+    return {ChannelLevel(t00, t10, t01, t11, wx, wy, 0), ChannelLevel(t00, t10, t01, t11, wx, wy, 8),
+            ChannelLevel(t00, t10, t01, t11, wx, wy, 16)};
+}
+
+// Bilinear GPU-model read at (u, v) per lane (Texture::sampleGpu), as levels.
+HWY_INLINE RgbK SampleGpuLevels(const Texture& tex, VF u, VF v) {
     const DI di;
     const DU du;
     const AxisV ax = SplitAxis(u, float(tex.width()), tex.width());
@@ -95,8 +108,13 @@ HWY_INLINE RgbV SampleGpu(const Texture& tex, VF u, VF v) {
     const VU t10 = hn::GatherIndex(du, base, hn::Add(r0, ax.i1));
     const VU t01 = hn::GatherIndex(du, base, hn::Add(r1, ax.i0));
     const VU t11 = hn::GatherIndex(du, base, hn::Add(r1, ax.i1));
-    return {Channel(t00, t10, t01, t11, ax.w, ay.w, 0), Channel(t00, t10, t01, t11, ax.w, ay.w, 8),
-            Channel(t00, t10, t01, t11, ax.w, ay.w, 16)};
+    return ChannelLevels(t00, t10, t01, t11, ax.w, ay.w);
+}
+
+// The same as floats (Texture::sampleGpu's values).
+HWY_INLINE RgbV SampleGpu(const Texture& tex, VF u, VF v) {
+    const RgbK k = SampleGpuLevels(tex, u, v);
+    return {Levels4080(k.r), Levels4080(k.g), Levels4080(k.b)};
 }
 
 // A coordinate split as SplitAxis does (t = coord size - 0.5), relative to each lane's own
@@ -118,13 +136,13 @@ HWY_INLINE NearSplit SplitNear(VF coord, VF size, VF own) {
             hn::ConvertTo(di, hn::Add(hn::Mul(hn::Sub(t, fl), hn::Set(df, 256.0f)), hn::Set(df, 0.5f)))};
 }
 
-// The GPU-model read at (u, v) per lane, from the 3 x 3 texels around each lane's pixel
+// The GPU-model read at (u, v) per lane (as levels), from the 3 x 3 texels around each lane's pixel
 // (row y, pixels x .. x + N - 1 with 1 <= x, x + N <= W - 1), loaded contiguously rather
 // than gathered. Valid when every lane that counts (not in `skip`) reads within a texel of
 // its pixel: floor(u W - 0.5) and floor(v H - 0.5) are its own column and row or the ones
 // before. Otherwise returns false and writes nothing (the caller gathers). Same indices,
 // clamping (rows only: columns stay inside) and weights as SampleGpu, so the same result.
-HWY_INLINE bool NearSample(const Texture& tex, VF u, VF v, int x, int y, const hn::Mask<DF>& skip, RgbV* c) {
+HWY_INLINE bool NearSample(const Texture& tex, VF u, VF v, int x, int y, const hn::Mask<DF>& skip, RgbK* c) {
     const DF df;
     const DI di;
     const DU du;
@@ -146,8 +164,7 @@ HWY_INLINE bool NearSample(const Texture& tex, VF u, VF v, int x, int y, const h
     }
     const VU t00 = hn::IfThenElse(ly, left[0], left[1]), t10 = hn::IfThenElse(ly, right[0], right[1]);
     const VU t01 = hn::IfThenElse(ly, left[1], left[2]), t11 = hn::IfThenElse(ly, right[1], right[2]);
-    *c = {Channel(t00, t10, t01, t11, wx, wy, 0), Channel(t00, t10, t01, t11, wx, wy, 8),
-          Channel(t00, t10, t01, t11, wx, wy, 16)};
+    *c = ChannelLevels(t00, t10, t01, t11, wx, wy);
     return true;
 }
 
@@ -236,15 +253,78 @@ HWY_INLINE VF CentreU(const Texture& tex, int x) {
     return hn::Div(hn::Add(hn::ConvertTo(df, hn::Iota(di, x)), hn::Set(df, 0.5f)), hn::Set(df, float(tex.width())));
 }
 
-// Stores quantised RGB with the source alpha; lanes that exited keep the source pixel.
-HWY_INLINE void StoreRgb(const RgbV& c, int x, const std::uint8_t* exitMask, const Rgba8* src, Rgba8* dst) {
+// The output byte toUnorm8(k / 4080) of a read of level k (the float k / 4080, rounded to
+// the nearest byte): round(k / 16), exactly k 255 / 4080, except at the ties k = 16 n + 8,
+// where the float quotient's rounding decides. It lies above k / 4080 for those k <= 2048
+// and below for those above, so ties round up, then down. Checked for every k on every
+// target against the scalar code (tests/aa/test_ppaa_simd.cpp).
+HWY_INLINE VI ByteOfLevel(VI k) {
+    const DI di;
+    const VI half = hn::IfThenElse(hn::Gt(k, hn::Set(di, 2048)), hn::Set(di, 7), hn::Set(di, 8));
+    return hn::ShiftRight<4>(hn::Add(k, half));
+}
+
+// The output byte toUnorm8((ka / 4080 + kb / 4080) * 0.5) of the mean of two reads, with
+// the scalar code's float reads and sum s. The exact mean is S / 8160 = (S / 32) / 255,
+// S = ka + kb, so the byte is round(S / 32) except at the ties S = 32 n + 16, where it is
+// n + 1 when s >= S / 4080 and n otherwise. The sign of s 4096 - S - s 16 = s 4080 - S is
+// exact without an FMA: s 4096 and s 16 are exact, and near a tie each subtraction takes
+// numbers within a factor of 2 of each other (Sterbenz), so neither rounds. Checked for
+// every pair (ka, kb) on every target (tests/aa/test_ppaa_simd.cpp).
+HWY_INLINE VI ByteOfMeanLevel(VI ka, VI kb) {
+    const DF df;
+    const DI di;
+    const VI sum = hn::Add(ka, kb);
+    const VI roundUp = hn::ShiftRight<5>(hn::Add(sum, hn::Set(di, 16)));
+    const auto tie = hn::Eq(hn::And(sum, hn::Set(di, 31)), hn::Set(di, 16));
+    const VF s = hn::Add(Levels4080(ka), Levels4080(kb));
+    const VF d = hn::Sub(hn::Sub(hn::Mul(s, hn::Set(df, 4096.0f)), hn::ConvertTo(df, sum)), hn::Mul(s, hn::Set(df, 16.0f)));
+    const auto below = hn::And(hn::RebindMask(di, hn::Lt(d, hn::Zero(df))), tie);
+    return hn::Sub(roundUp, hn::IfThenElseZero(below, hn::Set(di, 1)));
+}
+
+// Stores output bytes (r, g, b per lane) with the source alpha; lanes that exited keep
+// the source pixel.
+HWY_INLINE void StoreBytes(VI r, VI g, VI b, int x, const std::uint8_t* exitMask, const Rgba8* src, Rgba8* dst) {
     const DU du;
     const VU srcV = hn::LoadU(du, reinterpret_cast<const std::uint32_t*>(src + x));
-    const VU rgb = hn::Or(hn::Or(hn::BitCast(du, Quantize(c.r)), hn::ShiftLeft<8>(hn::BitCast(du, Quantize(c.g)))),
-                          hn::ShiftLeft<16>(hn::BitCast(du, Quantize(c.b))));
+    const VU rgb = hn::Or(hn::Or(hn::BitCast(du, r), hn::ShiftLeft<8>(hn::BitCast(du, g))),
+                          hn::ShiftLeft<16>(hn::BitCast(du, b)));
     const VU result = hn::Or(rgb, hn::And(srcV, hn::Set(du, 0xFF000000u)));
     hn::StoreU(hn::IfThenElse(hn::RebindMask(du, ExitLanes(exitMask, x)), srcV, result), du,
                reinterpret_cast<std::uint32_t*>(dst + x));
+}
+
+// Test hooks (src/aa/ppaa_simd.hpp): how many levels k in [0, 4080], and how many pairs of
+// levels, get a byte from ByteOfLevel / ByteOfMeanLevel other than the scalar code's
+// toUnorm8 of the float reads (kSixteenthLevels[k] = k / 4080).
+inline std::int64_t LevelByteMismatches() {
+    const DI di;
+    const int n = int(hn::Lanes(di));
+    std::vector<std::int32_t> got(std::size_t(n), 0);
+    std::int64_t mismatches = 0;
+    for (int k0 = 0; k0 <= 4080; k0 += n) {
+        hn::StoreU(ByteOfLevel(hn::Min(hn::Iota(di, k0), hn::Set(di, 4080))), di, got.data());
+        for (int i = 0; i < n && k0 + i <= 4080; ++i)
+            mismatches += got[std::size_t(i)] != toUnorm8(kSixteenthLevels[std::size_t(k0 + i)]);
+    }
+    return mismatches;
+}
+inline std::int64_t MeanLevelByteMismatches() {
+    const DI di;
+    const int n = int(hn::Lanes(di));
+    std::vector<std::int32_t> got(std::size_t(n), 0);
+    std::int64_t mismatches = 0;
+    for (int ka = 0; ka <= 4080; ++ka) {
+        const float a = kSixteenthLevels[std::size_t(ka)];
+        for (int k0 = 0; k0 <= 4080; k0 += n) {
+            const VI kb = hn::Min(hn::Iota(di, k0), hn::Set(di, 4080));
+            hn::StoreU(ByteOfMeanLevel(hn::Set(di, ka), kb), di, got.data());
+            for (int i = 0; i < n && k0 + i <= 4080; ++i)
+                mismatches += got[std::size_t(i)] != toUnorm8((a + kSixteenthLevels[std::size_t(k0 + i)]) * 0.5f);
+        }
+    }
+    return mismatches;
 }
 
 // Runs `chunk` on the interior chunks of row y that hold at least one edge pixel and marks

@@ -8,6 +8,7 @@
 #include "ssfx/aa/fxaa.hpp"
 #include "ssfx/eval/synthetic.hpp"
 #include "ssfx/registry.hpp"
+#include "src/aa/ppaa_simd.hpp"
 #include "support/test_support.hpp"
 
 using namespace ssfx;
@@ -36,6 +37,19 @@ TEST(SimdTargets, EveryTargetEqualsTheReference) {
     std::printf("[simd] checked %zu targets:", targets.size());
     for (const std::int64_t t : targets) std::printf(" %s", hwy::TargetName(t));
     std::printf("\n");
+}
+
+// fxaa3d and ddaa store bytes straight from the reads' integer levels k (value k / 4080):
+// ByteOfLevel and ByteOfMeanLevel replace the float quantisation of the scalar code. Both
+// are claimed exact over their whole domain, so check all of it: every level, and every
+// pair of levels (16.7 million), on every target.
+TEST(SimdTargets, BytesFromLevelsEqualTheFloatQuantisation) {
+    const ResetTargets reset;
+    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+        hwy::SetSupportedTargetsForTest(target);
+        EXPECT_EQ(aa::detail::levelByteMismatches(), 0) << hwy::TargetName(target);
+        EXPECT_EQ(aa::detail::meanLevelByteMismatches(), 0) << hwy::TargetName(target);
+    }
 }
 
 // fxaa3c with a direction component exactly 0: d2 = 0/0 = NaN, which the scalar code's
