@@ -2,9 +2,10 @@
 // row, so a vector handles N neighbouring pixels at once (as a GPU's warp does).
 //
 // Exactness: every float operation is the scalar kernel's (ddaa_kernel.hpp) in the same
-// order and without FMA; the GPU-model bilinear reads are integer work on gathered
-// texels, divided by 4080 exactly (IEEE division = the kSixteenthLevels table). Only the
-// GPU filtering model has this path; tests/properties check it equals the reference.
+// order and without FMA; the GPU-model bilinear reads are integer work on texels, and the
+// output byte of their mean comes from their levels (ByteOfMeanLevel in ppaa_simd-inl.h).
+// Only the GPU filtering model has this path; tests/properties check it equals the
+// reference.
 #if defined(SSFX_AA_DDAA_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef SSFX_AA_DDAA_INL_H_
 #undef SSFX_AA_DDAA_INL_H_

@@ -2,9 +2,11 @@
 // fxaa3d-inl.h): each lane is one pixel of a row, as in a GPU warp.
 //
 // Exactness: every float operation mirrors the scalar code (sample.cpp, ppaa_common.hpp)
-// in the same order and without FMA; GPU-model bilinear reads are integer work on gathered
-// texels, divided by 4080 exactly (the IEEE quotient = the kSixteenthLevels table, by
-// DivExact: src/core/exact_div-inl.h).
+// in the same order and without FMA; GPU-model bilinear reads are integer work on texels,
+// giving levels k whose value is k / 4080, divided exactly where a float is needed (the
+// IEEE quotient = the kSixteenthLevels table, by DivExact: src/core/exact_div-inl.h) and
+// turned into output bytes in integers where the quantisation allows (ByteOfLevel,
+// ByteOfMeanLevel).
 #if defined(SSFX_AA_PPAA_SIMD_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef SSFX_AA_PPAA_SIMD_INL_H_
 #undef SSFX_AA_PPAA_SIMD_INL_H_
@@ -136,8 +138,8 @@ HWY_INLINE NearSplit SplitNear(VF coord, VF size, VF own) {
             hn::ConvertTo(di, hn::Add(hn::Mul(hn::Sub(t, fl), hn::Set(df, 256.0f)), hn::Set(df, 0.5f)))};
 }
 
-// The GPU-model read at (u, v) per lane (as levels), from the 3 x 3 texels around each lane's pixel
-// (row y, pixels x .. x + N - 1 with 1 <= x, x + N <= W - 1), loaded contiguously rather
+// The GPU-model read at (u, v) per lane, as levels, from the 3 x 3 texels around each
+// lane's pixel (row y, pixels x .. x + N - 1 with 1 <= x, x + N <= W - 1), loaded contiguously rather
 // than gathered. Valid when every lane that counts (not in `skip`) reads within a texel of
 // its pixel: floor(u W - 0.5) and floor(v H - 0.5) are its own column and row or the ones
 // before. Otherwise returns false and writes nothing (the caller gathers). Same indices,
@@ -257,7 +259,7 @@ HWY_INLINE VF CentreU(const Texture& tex, int x) {
 // the nearest byte): round(k / 16), exactly k 255 / 4080, except at the ties k = 16 n + 8,
 // where the float quotient's rounding decides. It lies above k / 4080 for those k <= 2048
 // and below for those above, so ties round up, then down. Checked for every k on every
-// target against the scalar code (tests/aa/test_ppaa_simd.cpp).
+// target against the scalar code (SimdTargets.BytesFromLevelsEqualTheFloatQuantisation).
 HWY_INLINE VI ByteOfLevel(VI k) {
     const DI di;
     const VI half = hn::IfThenElse(hn::Gt(k, hn::Set(di, 2048)), hn::Set(di, 7), hn::Set(di, 8));
@@ -270,7 +272,7 @@ HWY_INLINE VI ByteOfLevel(VI k) {
 // n + 1 when s >= S / 4080 and n otherwise. The sign of s 4096 - S - s 16 = s 4080 - S is
 // exact without an FMA: s 4096 and s 16 are exact, and near a tie each subtraction takes
 // numbers within a factor of 2 of each other (Sterbenz), so neither rounds. Checked for
-// every pair (ka, kb) on every target (tests/aa/test_ppaa_simd.cpp).
+// every pair (ka, kb) on every target (SimdTargets.BytesFromLevelsEqualTheFloatQuantisation).
 HWY_INLINE VI ByteOfMeanLevel(VI ka, VI kb) {
     const DF df;
     const DI di;
@@ -298,31 +300,29 @@ HWY_INLINE void StoreBytes(VI r, VI g, VI b, int x, const std::uint8_t* exitMask
 // Test hooks (src/aa/ppaa_simd.hpp): how many levels k in [0, 4080], and how many pairs of
 // levels, get a byte from ByteOfLevel / ByteOfMeanLevel other than the scalar code's
 // toUnorm8 of the float reads (kSixteenthLevels[k] = k / 4080).
-inline std::int64_t LevelByteMismatches() {
+// Mismatches of bytes(k) against want(k) over every level k, a vector of levels at a time.
+template <class Bytes, class Want>
+std::int64_t LevelMismatches(const Bytes& bytes, const Want& want) {
     const DI di;
     const int n = int(hn::Lanes(di));
     std::vector<std::int32_t> got(std::size_t(n), 0);
     std::int64_t mismatches = 0;
     for (int k0 = 0; k0 <= 4080; k0 += n) {
-        hn::StoreU(ByteOfLevel(hn::Min(hn::Iota(di, k0), hn::Set(di, 4080))), di, got.data());
-        for (int i = 0; i < n && k0 + i <= 4080; ++i)
-            mismatches += got[std::size_t(i)] != toUnorm8(kSixteenthLevels[std::size_t(k0 + i)]);
+        hn::StoreU(bytes(hn::Min(hn::Iota(di, k0), hn::Set(di, 4080))), di, got.data());
+        for (int i = 0; i < n && k0 + i <= 4080; ++i) mismatches += got[std::size_t(i)] != want(k0 + i);
     }
     return mismatches;
 }
+inline std::int64_t LevelByteMismatches() {
+    return LevelMismatches([](VI k) { return ByteOfLevel(k); },
+                           [](int k) { return toUnorm8(kSixteenthLevels[std::size_t(k)]); });
+}
 inline std::int64_t MeanLevelByteMismatches() {
-    const DI di;
-    const int n = int(hn::Lanes(di));
-    std::vector<std::int32_t> got(std::size_t(n), 0);
     std::int64_t mismatches = 0;
     for (int ka = 0; ka <= 4080; ++ka) {
         const float a = kSixteenthLevels[std::size_t(ka)];
-        for (int k0 = 0; k0 <= 4080; k0 += n) {
-            const VI kb = hn::Min(hn::Iota(di, k0), hn::Set(di, 4080));
-            hn::StoreU(ByteOfMeanLevel(hn::Set(di, ka), kb), di, got.data());
-            for (int i = 0; i < n && k0 + i <= 4080; ++i)
-                mismatches += got[std::size_t(i)] != toUnorm8((a + kSixteenthLevels[std::size_t(k0 + i)]) * 0.5f);
-        }
+        mismatches += LevelMismatches([ka](VI kb) { return ByteOfMeanLevel(hn::Set(DI(), ka), kb); },
+                                      [a](int kb) { return toUnorm8((a + kSixteenthLevels[std::size_t(kb)]) * 0.5f); });
     }
     return mismatches;
 }
