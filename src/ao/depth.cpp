@@ -81,8 +81,10 @@ void depthToZ(ImageView<const float> depth, const Camera& camera, ImageView<floa
                     out[x] = 0;
                     continue;
                 }
-                // Eq. 2; d = 1 with zFar = -inf gives -inf (sky).
-                out[x] = float(p.c0 / (double(v) * p.c1 + p.c2));
+                // Eq. 2. d = 1 is the cleared depth, nothing drawn: sky (z = -inf) for
+                // any far plane, as the released SAO shader's depth test skips it (with a
+                // finite far plane eq. 2 would put a wall at zFar there).
+                out[x] = v == 1.0f ? -HUGE_VALF : float(p.c0 / (double(v) * p.c1 + p.c2));
             }
         }
     });

@@ -63,7 +63,9 @@ ImageF raytraced(const RayScene& scene, const Camera& camera, int width, int hei
                 const int x = i + g, y = j + g;
                 const Vec3d dir = primaryRay(proj, float(x) + 0.5f, float(y) + 0.5f);
                 const RayHit hit = scene.intersect({0, 0, 0}, dir, 0.0, INFINITY);
-                if (!std::isfinite(hit.t)) {
+                // No hit, or a hit at or beyond a finite far plane, which a rasteriser clips:
+                // nothing drawn there, sky, as the depth-buffer methods see it (depth 1).
+                if (!std::isfinite(hit.t) || dir.z * hit.t <= camera.zFar) {
                     out(i, j) = 1.0f;
                     continue;
                 }

@@ -7,6 +7,7 @@
 
 #include "render_fixture.hpp"
 #include "ssfx/ao/depth.hpp"
+#include "ssfx/ao/sao.hpp"
 #include "ssfx/core/error.hpp"
 
 namespace ssfx::test {
@@ -283,6 +284,33 @@ TEST_F(RenderTest, BuiltInScenesRender) {
     int textured = 0;
     for (auto l : g.layer) textured += l >= 0;
     EXPECT_GT(textured, int(g.layer.size()) / 4);
+}
+
+TEST_F(RenderTest, NothingDrawnIsSkyForSaoWithAFiniteFarPlane) {
+    // The renderer clears depth to 1 where nothing is drawn; with a finite far plane that
+    // background was a wall at zFar that occluded itself along the roof line (922 pixels off
+    // by more than 8 levels at 480x270). Now it is sky: A = 1 there, and the two far planes
+    // agree on the geometry within the D32F precision at the nave's distances.
+    const Scene a = render::atrium();
+    View finite = a.view("nave"), infinite = finite;
+    finite.zFar = 60, infinite.zFar = INFINITY;
+    const int w = 192, h = 108, g = 16;
+    const auto rf = renderer().renderDepth(a, finite, w, h, ao::DepthFormat::D32F, g);
+    const auto ri = renderer().renderDepth(a, infinite, w, h, ao::DepthFormat::D32F, g);
+    ao::SaoParams p;
+    p.guardBand = g;
+    const ImageF af = ao::sao(rf.depth.view(), rf.camera.camera, p), ai = ao::sao(ri.depth.view(), ri.camera.camera, p);
+    int sky = 0, far8 = 0;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            if (rf.depth(x + g, y + g) == 1.0f) {
+                ++sky;
+                EXPECT_EQ(af(x, y), 1.0f) << x << "," << y;
+            }
+            far8 += std::fabs(af(x, y) - ai(x, y)) * 255.0f > 8.0f;
+        }
+    EXPECT_GT(sky, w * h / 20);
+    EXPECT_LE(far8, w * h / 1000);  // a few distant pixels, from the depth precision at up to 60 m
 }
 
 TEST_F(RenderTest, BadRequestsAreRefused) {

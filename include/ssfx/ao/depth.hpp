@@ -5,8 +5,10 @@
 // Conventions (spec sao.md): camera space is right-handed and the camera looks down -z,
 // so visible points have z < 0; zNear and zFar are negative (zFar = -infinity allowed).
 // Hardware depth d is in [0, 1], 0 at the near plane. Pixel (x, y) has its centre at
-// (x + 0.5, y + 0.5), y down. Sky (d = 1 with an infinite far plane) becomes z = -infinity
-// and every later pass treats it as "nothing there".
+// (x + 0.5, y + 0.5), y down. Depth exactly 1 is what a renderer clears to where nothing
+// is drawn: it is sky for *any* far plane (finite or infinite), becomes z = -infinity, and
+// every later pass treats it as "nothing there" (A = 1, occludes nothing, not blurred in).
+// Geometry must therefore have d < 1, which a rasteriser guarantees (d = 1 is clipped).
 #pragma once
 
 #include <algorithm>
@@ -46,8 +48,8 @@ inline Vec3 reconstructPosition(const Projection& p, float px, float py, float z
     return {z / p.p00 * (1.0f - 2.0f * px / float(p.width)), z / p.p11 * (2.0f * py / float(p.height) - 1.0f), z};
 }
 
-//! Pass 1: hardware depth -> camera-space z (float32). Evaluated in double and rounded
-//! once, so z is the correctly rounded value for the stored depth: what remains is the
+//! Pass 1: hardware depth -> camera-space z (float32); d = 1 (nothing drawn) -> -infinity
+//! for any far plane. Evaluated in double and rounded once, so z is the correctly rounded value for the stored depth: what remains is the
 //! depth format's own precision (the Figure 3 experiment), not the arithmetic's. Throws
 //! ssfx::Error naming the pixel for a depth that is NaN, infinite or outside [0, 1].
 ImageF depthToZ(ImageView<const float> depth, const Camera& camera, const Exec& exec = {});

@@ -48,7 +48,8 @@ struct RaytracedParams {
 };
 
 //! A for every pixel of the inner region of a width x height image seen by `camera`.
-//! Sky pixels (no primary hit) are 1.
+//! Sky pixels (no primary hit, or the hit at or beyond a finite far plane, where a
+//! rasteriser leaves the cleared depth 1) are 1.
 ImageF raytraced(const RayScene& scene, const Camera& camera, int width, int height,
                  const RaytracedParams& params = {}, const Exec& exec = {});
 
