@@ -1,5 +1,6 @@
 // ssfx ao: ambient obscurance from a depth buffer (EXR + camera JSON) or an analytic scene.
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <cmath>
 #include <filesystem>
@@ -23,7 +24,7 @@ namespace ssfx::cli {
 namespace {
 
 struct AoOptions {
-    std::string method = "sao", depth, camera, scene, view, size, output, saveDepth, saveCamera, device;
+    std::string method = "sao", depth, camera, scene, view, size, output, saveDepth, saveCamera, device, preset;
     std::vector<std::string> params;
     double fovDeg = 60;
     int threads = 0, rays = 256;
@@ -52,7 +53,10 @@ void run(const AoOptions& o) {
         throw Error(fmt::format("unknown AO method '{}' (sao, alchemy, raytraced)", o.method));
     if (o.scene.empty() == o.depth.empty()) throw Error("give either --depth FILE (with --camera) or --scene NAME");
     const Exec exec{o.threads};
-    ao::SaoParams sp;
+    if (!o.preset.empty() && o.method != "sao")
+        throw Error(fmt::format("--preset: {} has no presets (sao: {})", o.method, fmt::join(ao::saoPresetNames(), ", ")));
+    // The preset first, then the -p overrides.
+    ao::SaoParams sp = o.preset.empty() ? ao::SaoParams{} : ao::saoPreset(o.preset);
     ao::AlchemyParams ap;
     ao::RaytracedParams rp;
     rp.raysPerPixel = o.rays;
@@ -128,18 +132,27 @@ void addAoCommand(CLI::App& app) {
     cmd->add_option("--fov", o->fovDeg, "With an analytic scene: vertical field of view in degrees (default 60)")
         ->check(CLI::Range(1.0, 179.0));
     cmd->add_option("-o,--output", o->output, "AO output: .png (8-bit) or .exr (float)");
+    cmd->add_option("--preset", o->preset,
+                    "sao: paper (the defaults: the paper's text) or released (the authors' released shaders, "
+                    "June 2012: 11 taps, 6.28 per turn, spin summed in float, linear intensity, r 0.7 m, bias "
+                    "0.012 m, intensity 0.7, 9-tap stride-2 blur, RGB8 storage; docs/methods/sao.md); -p "
+                    "overrides it");
     cmd->add_option("-p,--param", o->params,
                     "NAME=VALUE (repeatable): sao: radius bias epsilon intensity numSamples numSpiralTurns logQ "
-                    "maxMip usePyramid quadThreshold blurRadius blurStride blurSigma edgeSharpness guardBand; "
+                    "maxMip usePyramid quadThreshold blurRadius blurStride blurSigma edgeSharpness "
+                    "blurReleasedWeights blurZeroOutside blurEpsilon guardBand packBlurInput packZMin "
+                    "releasedPacking spiralTurnAngle spinInFloat linearIntensity; "
                     "alchemy: radius sigma beta epsilon k numSamples numSpiralTurns blur...; raytraced: radius");
     cmd->add_option("--rays", o->rays, "raytraced: rays per pixel (default 256)")->check(CLI::Range(1, 65536));
     cmd->add_option("--save-depth", o->saveDepth, "Also write the depth buffer used (EXR, channel Z)");
     cmd->add_option("--save-camera", o->saveCamera, "Also write its camera (JSON)");
     cmd->add_option("--threads", o->threads, "Worker threads (0 = all)")->check(CLI::Range(0, 1024));
-    cmd->footer("Depth d in [0, 1] (0 = near plane); camera space looks down -z (docs/methods/sao.md).\n"
+    cmd->footer("Depth d in [0, 1] (0 = near plane); d = 1 exactly is nothing drawn (sky, A = 1) for any far plane;\n"
+                "camera space looks down -z (docs/methods/sao.md).\n"
                 "Examples:\n"
                 "  ssfx ao --scene room --size 960x540 -p guardBand=64 -o ao.png --save-depth d.exr --save-camera c.json\n"
                 "  ssfx ao --scene atrium --view colonnade --size 960x540 -p guardBand=64 -o ao.png\n"
+                "  ssfx ao --preset released --depth d.exr --camera c.json -p guardBand=64 -o released.png\n"
                 "  ssfx ao -m raytraced --scene scenes/sponza.json --size 480x270 --rays 256 -o truth.exr\n"
                 "  ssfx ao -m alchemy --depth d.exr --camera c.json -p guardBand=64 -o alchemy.exr");
     cmd->callback([o] { run(*o); });

@@ -50,12 +50,12 @@ void setParam(AlchemyParams& p, const std::string& name, double v) {
     else if (name == "k") p.k = f;
     else if (name == "numSamples") p.numSamples = i;
     else if (name == "numSpiralTurns") p.numSpiralTurns = i;
-    else if (detail::setBlurParam(p.blur, name, v)) return;
+    else if (detail::setBlurParam("alchemy", p.blur, name, v)) return;
     else if (name == "guardBand") p.guardBand = i;
     else
         throw Error(fmt::format("alchemy: unknown parameter '{}' (radius, sigma, beta, epsilon, k, numSamples, "
-                                "numSpiralTurns, blurRadius, blurStride, blurSigma, edgeSharpness, guardBand)",
-                                name));
+                                "numSpiralTurns, {}, guardBand)",
+                                name, detail::kBlurParamNames));
 }
 
 namespace {

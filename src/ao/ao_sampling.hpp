@@ -24,15 +24,28 @@ void checkRange(const char* method, const char* name, T v, T lo, T hi) {
     if (!(v >= lo && v <= hi)) throw Error(fmt::format("{}: {} = {} is not in [{}, {}]", method, name, v, lo, hi));
 }
 
+//! A boolean parameter given as a number: 0 or 1, anything else is an error naming it.
+inline bool boolParam(const char* method, const std::string& name, double v) {
+    if (v != 0.0 && v != 1.0) throw Error(fmt::format("{}: {} = {} is not 0 or 1", method, name, v));
+    return v != 0.0;
+}
+
 //! Sets a BlurParams field by name; false for a name that is not one of them.
-inline bool setBlurParam(BlurParams& b, const std::string& name, double v) {
+inline bool setBlurParam(const char* method, BlurParams& b, const std::string& name, double v) {
     if (name == "blurRadius") b.blurRadius = int(std::lround(v));
     else if (name == "blurStride") b.blurStride = int(std::lround(v));
     else if (name == "blurSigma") b.blurSigma = float(v);
     else if (name == "edgeSharpness") b.edgeSharpness = float(v);
+    else if (name == "blurReleasedWeights") b.blurReleasedWeights = boolParam(method, name, v);
+    else if (name == "blurZeroOutside") b.blurZeroOutside = boolParam(method, name, v);
+    else if (name == "blurEpsilon") b.blurEpsilon = float(v);
     else return false;
     return true;
 }
+
+//! The blur parameters' names, for the unknown-parameter messages.
+inline constexpr const char* kBlurParamNames =
+    "blurRadius, blurStride, blurSigma, edgeSharpness, blurReleasedWeights, blurZeroOutside, blurEpsilon";
 
 inline Vec3 sub(Vec3 a, Vec3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
 inline float dot(Vec3 a, Vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
@@ -49,6 +62,8 @@ struct SampleSetup {
     float radius;
     bool usePyramid;
     bool vector = true;  //!< false: the scalar loop only (the reference)
+    double turnAngle = 2.0 * std::numbers::pi;  //!< SaoParams::spiralTurnAngle
+    bool spinInFloat = false;                   //!< SaoParams::spinInFloat
 };
 
 //! floor(log2(n)) for n >= 1, -1 for n <= 0 (GLSL findMSB on a non-negative int).
@@ -115,6 +130,9 @@ inline void copyPyramid(const std::vector<ImageF>& pyr, ZPyramid& out) {
 //! unit direction at angle alpha_k * 2 pi tau; each pixel rotates the whole spiral by its
 //! hash angle phi (eq. 8) with one sine and cosine. This is cos/sin(alpha 2 pi tau + phi)
 //! evaluated as a rotation: the same directions up to rounding, at a ninth of the cost.
+//! With spinInFloat (the released shader's tapLocation()), alpha_k = (k + 0.5) * float(1 / s)
+//! and each tap's angle is alpha_k * float(tau turnAngle) + phi in float (no FMA), its cos
+//! and sin taken per tap.
 template <class Estimator>
 void samplePass(const ZPyramid& pyr, const Projection& proj, Region region, const SampleSetup& s,
                 const Estimator& est, const Exec& exec, ImageF& out) {
@@ -123,10 +141,17 @@ void samplePass(const ZPyramid& pyr, const Projection& proj, Region region, cons
     if (out.width() != region.width || out.height() != region.height) out = ImageF(region.width, region.height);
     const int levels = s.usePyramid ? std::min<int>(s.maxMip, pyr.levels() - 1) : 0;
     std::vector<float> alpha(std::size_t(s.numSamples)), dirX(alpha.size()), dirY(alpha.size());
+    // spinInFloat: alpha_k float(tau turnAngle) per tap (releasedTapAngle() with phi = 0; the
+    // pixel adds its phi in float).
+    std::vector<float> tapAngle(s.spinInFloat ? alpha.size() : 0);
     for (int k = 0; k < s.numSamples; ++k) {
-        const double a = (k + 0.5) / s.numSamples, theta = a * 2.0 * std::numbers::pi * s.spiralTurns;
+        const double a = (k + 0.5) / s.numSamples, theta = a * s.turnAngle * s.spiralTurns;
         alpha[std::size_t(k)] = float(a), dirX[std::size_t(k)] = float(std::cos(theta)),
                            dirY[std::size_t(k)] = float(std::sin(theta));
+        if (s.spinInFloat) {
+            alpha[std::size_t(k)] = (float(k) + 0.5f) * (1.0f / float(s.numSamples));
+            tapAngle[std::size_t(k)] = releasedTapAngle(k, s.numSamples, s.spiralTurns, s.turnAngle, 0.0f);
+        }
     }
     const PositionTables pos(proj);
     const bool vector = s.vector && w >= 2 && h >= 2;
@@ -134,7 +159,8 @@ void samplePass(const ZPyramid& pyr, const Projection& proj, Region region, cons
     if (vector) {
         vin = {pyr.data.data(), pyr.offset.data(), pyr.width.data(), pyr.height.data(), levels, w, h,
                pos.fx.data(), pos.fy.data(), pos.ax, pos.bx, pos.ay, pos.by, proj.pixelsPerMeter, s.radius,
-               s.numSamples, s.logQ, alpha.data(), dirX.data(), dirY.data(), 0, 0, 0, 0, 0, 0};
+               s.numSamples, s.logQ, alpha.data(), dirX.data(), dirY.data(), 0, 0, 0, 0, 0, 0, 1.0f,
+               s.spinInFloat ? tapAngle.data() : nullptr};
         est.fill(vin);
     }
     parallelRows(region.height, exec, [&](int r0, int r1) {
@@ -161,13 +187,20 @@ void samplePass(const ZPyramid& pyr, const Projection& proj, Region region, cons
                 }
                 // Screen-space radius (eq. 5) and the per-pixel rotation (eq. 8).
                 const float ssRadius = -s.radius * proj.pixelsPerMeter / zc;
-                const double phi = double(hashAngle(x, y));
+                const float phiF = hashAngle(x, y);
+                const double phi = double(phiF);
                 const float cphi = float(std::cos(phi)), sphi = float(std::sin(phi));
                 float sum = 0.0f;
                 for (int k = 0; k < s.numSamples; ++k) {
                     const float hk = ssRadius * alpha[std::size_t(k)];
-                    const float ux = dirX[std::size_t(k)] * cphi - dirY[std::size_t(k)] * sphi;
-                    const float uy = dirX[std::size_t(k)] * sphi + dirY[std::size_t(k)] * cphi;
+                    float ux, uy;
+                    if (s.spinInFloat) {  // cos/sin of the float angle, exactly (in double)
+                        const double angle = double(tapAngle[std::size_t(k)] + phiF);
+                        ux = float(std::cos(angle)), uy = float(std::sin(angle));
+                    } else {
+                        ux = dirX[std::size_t(k)] * cphi - dirY[std::size_t(k)] * sphi;
+                        uy = dirX[std::size_t(k)] * sphi + dirY[std::size_t(k)] * cphi;
+                    }
                     // GLSL ivec2(float): truncation toward zero.
                     const int sx = x + int(hk * ux), sy = y + int(hk * uy);
                     // Level (eqs. 9-10): m = clamp(findMSB(int(h)) - log2 q', 0, MAX_MIP).

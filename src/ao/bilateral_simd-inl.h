@@ -21,7 +21,7 @@ namespace ssfx::ao::detail {
 namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
-// out[i] for i in [lo, hi): sum_t w_t a_t / sum_t w_t with w_t = g_t max(0, 1 - k |z_t - z_c|),
+// out[i] for i in [lo, hi): sum_t w_t a_t / (sum_t w_t + epsilon) with w_t = g_t max(0, 1 - k |z_t - z_c|),
 // or 1 where z_c is infinite (sky).
 inline void BilateralRowSimd(const BilateralRowInput& in, int lo, int hi, float* HWY_RESTRICT out) {
     const hn::ScalableTag<float> df;
@@ -41,7 +41,7 @@ inline void BilateralRowSimd(const BilateralRowInput& in, int lo, int hi, float*
             ws = hn::Add(ws, w);
         }
         const auto sky = hn::Eq(hn::Abs(zc), inf);
-        hn::StoreU(hn::IfThenElse(sky, one, hn::Div(s, ws)), df, out + i);
+        hn::StoreU(hn::IfThenElse(sky, one, hn::Div(s, hn::Add(ws, hn::Set(df, in.epsilon)))), df, out + i);
     }
     for (; i < hi; ++i) {  // the row's last few pixels, one at a time (same operations)
         const float zc = in.zCentre[i];
@@ -51,7 +51,7 @@ inline void BilateralRowSimd(const BilateralRowInput& in, int lo, int hi, float*
             s += w * in.aTap[t][i];
             ws += w;
         }
-        out[i] = std::isinf(zc) ? 1.0f : s / ws;
+        out[i] = std::isinf(zc) ? 1.0f : s / (ws + in.epsilon);
     }
 }
 

@@ -2,6 +2,7 @@
 #include "ssfx/ao/sao.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <chrono>
 #include <cmath>
@@ -16,18 +17,23 @@ namespace {
 
 // The paper's updated falloff (appendix, June 2012):
 // A = max(0, 1 - 5 / (r^6 s) * sum max(r^2 - v.v, 0)^3 * max((v.n - beta) / (v.v + eps), 0)) ^ intensity.
+// With linearIntensity (the released shader): A = max(0, 1 - ((sum * (intensity / r^6)) * (5 / s))),
+// and no exponent. `exponent` is 1 then, and scale2 is 1 for the default (one factor).
 struct SaoEstimator {
-    float r2, bias, epsilon, scale, intensity;
+    float r2, bias, epsilon, scale, scale2, exponent;
     float term(float vv, float vn, float) const {
         const float f = std::max(r2 - vv, 0.0f);
         return f * f * f * std::max((vn - bias) / (vv + epsilon), 0.0f);
     }
-    float finish(float sum) const { return post(std::max(0.0f, 1.0f - sum * scale)); }
-    float post(float a) const { return intensity == 1.0f ? a : std::pow(a, intensity); }
+    float finish(float sum) const { return post(std::max(0.0f, 1.0f - sum * scale * scale2)); }
+    float post(float a) const { return exponent == 1.0f ? a : std::pow(a, exponent); }
     void fill(detail::SimdSampleInput& in) const {
-        in.estimator = 0, in.r2 = r2, in.bias = bias, in.epsilon = epsilon, in.scale = scale;
+        in.estimator = 0, in.r2 = r2, in.bias = bias, in.epsilon = epsilon, in.scale = scale, in.scale2 = scale2;
     }
 };
+
+// The released blur's Gaussian table (sigma = 2 taps; AmbientOcclusion_blur.pix, June 2012).
+constexpr float kReleasedGaussian[5] = {0.153170f, 0.144893f, 0.122649f, 0.092902f, 0.062970f};
 
 }  // namespace
 
@@ -37,6 +43,12 @@ int spiralTurnsFor(int s) {
                                        7, 5, 5, 7, 9, 8, 5, 5, 7, 7, 7, 8, 5, 8, 11};
     if (s < 1 || s > 30) throw Error(fmt::format("sao: no spiral-turn table entry for {} samples (1..30)", s));
     return kTurns[s - 1];
+}
+
+float releasedTapAngle(int k, int numSamples, int numSpiralTurns, double spiralTurnAngle, float phi) {
+    const float alpha = (float(k) + 0.5f) * (1.0f / float(numSamples));
+    const float turnsAngle = float(numSpiralTurns) * float(spiralTurnAngle);  // GLSL folds it in float
+    return alpha * turnsAngle + phi;  // two roundings: contraction is off (CMakeLists.txt)
 }
 
 float hashAngle(int x, int y) {
@@ -58,8 +70,43 @@ void validate(const SaoParams& p) {
     detail::checkRange("sao", "blurStride", p.blur.blurStride, 1, 8);
     detail::checkRange("sao", "blurSigma", p.blur.blurSigma, 1e-3f, 16.0f);
     detail::checkRange("sao", "edgeSharpness", p.blur.edgeSharpness, 0.0f, 1e6f);
+    detail::checkRange("sao", "blurEpsilon", p.blur.blurEpsilon, 0.0f, 1.0f);
+    if (p.blur.blurReleasedWeights && p.blur.blurRadius > 4)
+        throw Error(fmt::format("sao: blurReleasedWeights has weights for blurRadius <= 4 (got {})", p.blur.blurRadius));
     detail::checkRange("sao", "guardBand", p.guardBand, 0, 4096);
     detail::checkRange("sao", "packZMin", p.packZMin, -1e5f, -1e-3f);
+    if (p.releasedPacking && !p.packBlurInput) throw Error("sao: releasedPacking needs packBlurInput = 1");
+    detail::checkRange("sao", "spiralTurnAngle", p.spiralTurnAngle, 6.0, 6.5);
+}
+
+SaoParams saoPreset(const std::string& name) {
+    SaoParams p;
+    if (name == "paper") return p;
+    if (name != "released")
+        throw Error(fmt::format("sao: unknown preset '{}' (presets: {})", name, fmt::join(saoPresetNames(), ", ")));
+    // The released shaders (AmbientOcclusion_AO.pix, AmbientOcclusion_blur.pix) and their host
+    // code's defaults, G3D 9, June 2012.
+    p.numSamples = 11, p.numSpiralTurns = 7;      // NUM_SAMPLES, NUM_SPIRAL_TURNS
+    p.spiralTurnAngle = 6.28, p.spinInFloat = true;  // tapLocation()
+    p.linearIntensity = true;
+    p.radius = 0.7f, p.bias = 0.012f, p.intensity = 0.7f;  // host defaults (the paper's demo: 1, 0.012, 1)
+    p.blur.blurRadius = 4, p.blur.blurStride = 2;  // R, SCALE
+    p.blur.blurReleasedWeights = true, p.blur.blurEpsilon = 1e-4f, p.blur.blurZeroOutside = true;
+    p.blur.edgeSharpness = 2000.0f;  // EDGE_SHARPNESS 1 x 2000, on the key
+    p.packBlurInput = true, p.releasedPacking = true, p.packZMin = -300.0f;  // RGB8, FAR_PLANE_Z
+    return p;
+}
+
+std::vector<std::string> saoPresetNames() { return {"paper", "released"}; }
+
+float releasedKey(float z, float zMin) {
+    if (std::isinf(z)) return z;
+    // CSZToKey, packKey, 8-bit storage of both channels, unpackKey (the released shaders).
+    const float key = std::clamp(z * (1.0f / zMin), 0.0f, 1.0f);
+    const float t = std::floor(key * 256.0f);
+    const float g = std::nearbyint(t * (1.0f / 256.0f) * 255.0f) / 255.0f;
+    const float b = std::nearbyint((key * 256.0f - t) * 255.0f) / 255.0f;
+    return g * (256.0f / 257.0f) + b * (1.0f / 257.0f);
 }
 
 float packAo(float a) { return std::nearbyint(std::clamp(a, 0.0f, 1.0f) * 255.0f) / 255.0f; }
@@ -79,6 +126,7 @@ float packZ(float z, float zMin) {
 void setParam(SaoParams& p, const std::string& name, double v) {
     const auto f = float(v);
     const int i = int(std::lround(v));
+    auto flag = [&] { return detail::boolParam("sao", name, v); };
     if (name == "radius") p.radius = f;
     else if (name == "bias") p.bias = f;
     else if (name == "epsilon") p.epsilon = f;
@@ -87,17 +135,22 @@ void setParam(SaoParams& p, const std::string& name, double v) {
     else if (name == "numSpiralTurns") p.numSpiralTurns = i;
     else if (name == "logQ") p.logQ = i;
     else if (name == "maxMip") p.maxMip = i;
-    else if (name == "usePyramid") p.usePyramid = v != 0;
+    else if (name == "usePyramid") p.usePyramid = flag();
     else if (name == "quadThreshold") p.quadThreshold = f;
-    else if (detail::setBlurParam(p.blur, name, v)) return;
+    else if (detail::setBlurParam("sao", p.blur, name, v)) return;
     else if (name == "guardBand") p.guardBand = i;
-    else if (name == "packBlurInput") p.packBlurInput = v != 0;
+    else if (name == "packBlurInput") p.packBlurInput = flag();
     else if (name == "packZMin") p.packZMin = f;
+    else if (name == "releasedPacking") p.releasedPacking = flag();
+    else if (name == "spiralTurnAngle") p.spiralTurnAngle = v;
+    else if (name == "spinInFloat") p.spinInFloat = flag();
+    else if (name == "linearIntensity") p.linearIntensity = flag();
     else
         throw Error(fmt::format("sao: unknown parameter '{}' (radius, bias, epsilon, intensity, numSamples, "
-                                "numSpiralTurns, logQ, maxMip, usePyramid, quadThreshold, blurRadius, blurStride, "
-                                "blurSigma, edgeSharpness, guardBand, packBlurInput, packZMin)",
-                                name));
+                                "numSpiralTurns, logQ, maxMip, usePyramid, quadThreshold, {}, guardBand, "
+                                "packBlurInput, packZMin, releasedPacking, spiralTurnAngle, spinInFloat, "
+                                "linearIntensity)",
+                                name, detail::kBlurParamNames));
 }
 
 namespace {
@@ -132,8 +185,15 @@ void samplePassImpl(const ZPyramid& pyramid, const Projection& proj, Region regi
                     const Exec& exec, bool vector, ImageF& out) {
     validate(p);
     const float r2 = p.radius * p.radius;
-    const SaoEstimator est{r2, p.bias, p.epsilon, 5.0f / (r2 * r2 * r2 * float(p.numSamples)), p.intensity};
-    const detail::SampleSetup setup{p.numSamples, p.numSpiralTurns, p.logQ, p.maxMip, p.radius, p.usePyramid, vector};
+    // linearIntensity: the released host's intensityDivR6 = intensity / pow(radius, 6) (float),
+    // times the shader's constant 5.0 / NUM_SAMPLES.
+    const SaoEstimator est =
+        p.linearIntensity
+            ? SaoEstimator{r2, p.bias, p.epsilon, p.intensity / std::pow(p.radius, 6.0f), 5.0f / float(p.numSamples), 1.0f}
+            : SaoEstimator{r2, p.bias, p.epsilon, 5.0f / (r2 * r2 * r2 * float(p.numSamples)), 1.0f, p.intensity};
+    const detail::SampleSetup setup{p.numSamples, p.numSpiralTurns, p.logQ,        p.maxMip,
+                                    p.radius,     p.usePyramid,     vector,        p.spiralTurnAngle,
+                                    p.spinInFloat};
     detail::samplePass(pyramid, proj, region, setup, est, exec, out);
 }
 }  // namespace
@@ -199,34 +259,56 @@ ImageF bilateralPass(const ImageF& a, ImageView<const float> z, Region region, c
 
 void bilateralPass(const ImageF& a, ImageView<const float> z, Region region, const BlurParams& p, bool horizontal,
                    ImageF& out, const Exec& exec) {
-    // Section 2.4: Gaussian spatial weights times max(0, 1 - k |dz|); sky does not contribute.
-    std::vector<float> gauss(std::size_t(p.blurRadius) + 1);
-    for (int t = 0; t <= p.blurRadius; ++t)
-        gauss[std::size_t(t)] = std::exp(-float(t * t) / (2.0f * p.blurSigma * p.blurSigma));
+    // Section 2.4: spatial weights times max(0, 1 - k |dz|); sky does not contribute. Taps in
+    // summation order with their spatial weights: t = -R..R with exp(-t^2 / (2 sigma^2)) (the
+    // centre 1), or the released blur's order and weights (the centre first with gaussian[0],
+    // then t = -R..-1, 1..R with 0.3 + gaussian[|t|]).
+    const int W = region.width, H = region.height, R = p.blurRadius, S = p.blurStride;
+    std::vector<int> order;
+    std::vector<float> weight;
+    if (p.blurReleasedWeights) {
+        if (R > 4) throw Error(fmt::format("bilateralPass: blurReleasedWeights needs blurRadius <= 4 (got {})", R));
+        order.push_back(0), weight.push_back(kReleasedGaussian[0]);
+        for (int t = -R; t <= R; ++t)
+            if (t != 0) order.push_back(t), weight.push_back(0.3f + kReleasedGaussian[std::abs(t)]);
+    } else {
+        for (int t = -R; t <= R; ++t)
+            order.push_back(t), weight.push_back(std::exp(-float(t * t) / (2.0f * p.blurSigma * p.blurSigma)));
+    }
+    const int taps = int(order.size());
     if (out.width() != region.width || out.height() != region.height) out = ImageF(region.width, region.height);
-    const int W = region.width, R = p.blurRadius, S = p.blurStride;
-    // Taps of pixel i are i + t S for t = -R..R, clamped to the region. A row goes to the
-    // vector kernel (bilateral_simd-inl.h: each pixel sums its taps in t order, the same
-    // float operations as the per-pixel loop below); in the horizontal pass the pixels
-    // within R S of the row's ends clamp and take the per-pixel loop.
+    // blurZeroOutside: a vertical tap beyond the region reads these rows (a key of -inf weighs
+    // 0, for any k), a horizontal one is skipped; else taps clamp to the region's edge.
+    const std::vector<float> outsideZ(p.blurZeroOutside ? std::size_t(W) : 0, -HUGE_VALF),
+        outsideA(outsideZ.size(), 1.0f);
+    // Taps of pixel i are i + t S. A row goes to the vector kernel (bilateral_simd-inl.h: each
+    // pixel sums its taps in order, the same float operations as the per-pixel loop below); in
+    // the horizontal pass the pixels within R S of the row's ends reach past it and take the
+    // per-pixel loop.
     parallelRows(region.height, exec, [&](int r0, int r1) {
         detail::BilateralRowInput row{};
-        row.taps = 2 * R + 1;
+        row.taps = taps;
         row.edgeSharpness = p.edgeSharpness;
-        for (int t = -R; t <= R; ++t) row.gauss[t + R] = gauss[std::size_t(std::abs(t))];
+        row.epsilon = p.blurEpsilon;
+        for (int k = 0; k < taps; ++k) row.gauss[k] = weight[std::size_t(k)];
         for (int j = r0; j < r1; ++j) {
             const float* zc = &z(region.x0, region.y0 + j);
             const int lo = horizontal ? std::min(W, R * S) : 0, hi = horizontal ? std::max(lo, W - R * S) : W;
             row.zCentre = zc;
-            for (int t = -R; t <= R; ++t) {
-                const int tj = horizontal ? j : std::clamp(j + t * S, 0, region.height - 1);
+            for (int k = 0; k < taps; ++k) {
+                const int t = order[std::size_t(k)];
+                if (!horizontal && p.blurZeroOutside && (j + t * S < 0 || j + t * S >= H)) {
+                    row.zTap[k] = outsideZ.data(), row.aTap[k] = outsideA.data();
+                    continue;
+                }
+                const int tj = horizontal ? j : std::clamp(j + t * S, 0, H - 1);
                 const int shift = horizontal ? t * S : 0;
-                row.zTap[t + R] = &z(region.x0, region.y0 + tj) + shift;
-                row.aTap[t + R] = &a(0, tj) + shift;
+                row.zTap[k] = &z(region.x0, region.y0 + tj) + shift;
+                row.aTap[k] = &a(0, tj) + shift;
             }
             float* o = &out(0, j);
             detail::bilateralRowSimd(row, lo, hi, o);
-            // The clamped ends of a horizontal row, pixel by pixel.
+            // The ends of a horizontal row, pixel by pixel.
             for (int i = 0; i < W; ++i) {
                 if (i == lo) i = std::max(i, hi);
                 if (i >= W) break;
@@ -235,14 +317,16 @@ void bilateralPass(const ImageF& a, ImageView<const float> z, Region region, con
                     continue;
                 }
                 float s = 0, ws = 0;
-                for (int t = -R; t <= R; ++t) {
-                    const int ti = std::clamp(i + t * S, 0, W - 1);
-                    const float w = gauss[std::size_t(std::abs(t))] *
-                                    std::max(0.0f, 1.0f - p.edgeSharpness * std::fabs(zc[ti] - zc[i]));
+                for (int k = 0; k < taps; ++k) {
+                    const int at = i + order[std::size_t(k)] * S;
+                    if (p.blurZeroOutside && (at < 0 || at >= W)) continue;  // weight 0
+                    const int ti = std::clamp(at, 0, W - 1);
+                    const float w =
+                        weight[std::size_t(k)] * std::max(0.0f, 1.0f - p.edgeSharpness * std::fabs(zc[ti] - zc[i]));
                     s += w * a(ti, j);
                     ws += w;
                 }
-                o[i] = s / ws;  // the centre tap has weight 1
+                o[i] = s / (ws + p.blurEpsilon);  // the centre tap has weight > 0
             }
         }
     });
@@ -292,12 +376,17 @@ ImageF saoImpl(ImageView<const float> depth, const Camera& camera, const SaoPara
         // What the blur would read from the packed buffer (the bandwidth option).
         if (ws.zp.width() != z.width() || ws.zp.height() != z.height()) ws.zp = ImageF(z.width(), z.height());
         for (int y = work.y0; y < work.y0 + work.height; ++y)
-            for (int x = work.x0; x < work.x0 + work.width; ++x) ws.zp(x, y) = packZ(z(x, y), p.packZMin);
+            for (int x = work.x0; x < work.x0 + work.width; ++x)
+                ws.zp(x, y) = p.releasedPacking ? releasedKey(z(x, y), p.packZMin) : packZ(z(x, y), p.packZMin);
         float* av = ws.a.data();
         for (std::int64_t i = 0; i < ws.a.pixelCount(); ++i) av[i] = packAo(av[i]);
         zBlur = ws.zp.view();
     }
     bilateralPass(ws.a, zBlur, work, p.blur, true, ws.h, exec);
+    if (p.releasedPacking) {  // the horizontal pass's output is stored in 8 bits too
+        float* hv = ws.h.data();
+        for (std::int64_t i = 0; i < ws.h.pixelCount(); ++i) hv[i] = packAo(hv[i]);
+    }
     ImageF result(out.width, out.height);
     if (work.x0 == out.x0 && work.y0 == out.y0 && work.width == out.width && work.height == out.height) {
         bilateralPass(ws.h, zBlur, work, p.blur, false, result, exec);  // the usual case: even sizes

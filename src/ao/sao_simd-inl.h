@@ -1,8 +1,9 @@
 // Highway body of the AO sample pass (SAO and AlchemyAO; see ao_sampling.hpp for the
 // scalar loop it follows): one lane per pixel along a row, taps gathered from all pyramid
-// levels stored in one buffer. The lanes follow the scalar operations except one: the hash
-// angle's sine and cosine come from Highway's float approximations after a double-precision
-// range reduction (the scalar loop uses std::cos/sin in double). That moves a tap's position
+// levels stored in one buffer. The lanes follow the scalar operations except one: the sine
+// and cosine of the hash angle (and, with spinInFloat, of each tap's float angle) come from
+// Highway's float approximations after a double-precision range reduction (the scalar loop
+// uses std::cos/sin in double). That moves a tap's position
 // by a few ulps, which can move a truncated tap offset by one pixel in rare pixels; the test
 // holds the vector path to the scalar one within a stated tolerance.
 #if defined(SSFX_AO_SAO_SIMD_INL_H_) == defined(HWY_TARGET_TOGGLE)
@@ -23,6 +24,31 @@ HWY_BEFORE_NAMESPACE();
 namespace ssfx::ao::detail {
 namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
+
+// A float angle reduced to about [-pi, pi] for Highway's Cos/Sin: a - 2 pi nearbyint(a / 2 pi)
+// in double (every float angle is exact in double), then rounded to float.
+template <class DF>
+hn::Vec<DF> ReduceAngle(DF df, hn::Vec<DF> a) {
+#if HWY_TARGET == HWY_SCALAR
+    HWY_ALIGN float v[hn::MaxLanes(df)];
+    hn::Store(a, df, v);
+    for (std::size_t l = 0; l < hn::Lanes(df); ++l) {
+        const double x = double(v[l]);
+        v[l] = float(x - 6.283185307179586 * std::nearbyint(x / 6.283185307179586));
+    }
+    return hn::Load(df, v);
+#else
+    // Half a vector at a time: the scalar reduction's operations, so the same bits.
+    const hn::Half<DF> dh;
+    const hn::Repartition<double, DF> dd;
+    const auto twoPi = hn::Set(dd, 6.283185307179586);
+    auto reduce = [&](hn::Vec<decltype(dh)> v) {
+        const auto x = hn::PromoteTo(dd, v);
+        return hn::DemoteTo(dh, hn::Sub(x, hn::Mul(twoPi, hn::Round(hn::Div(x, twoPi)))));
+    };
+    return hn::Combine(df, reduce(hn::UpperHalf(dh, a)), reduce(hn::LowerHalf(dh, a)));
+#endif
+}
 
 // Pixels [x0, x1) of buffer row y; returns the first x it did not do (whole vectors only,
 // and only where every lane's quad partner lies inside the buffer).
@@ -96,35 +122,22 @@ inline int SampleRowSimd(const SimdSampleInput& in, int y, int x0, int x1, float
         const auto ssRadius = hn::Div(radiusS, zc);
         // Hash angle phi = 10 * ((3x) ^ (y + xy)) (eq. 8), reduced to [-pi, pi] in double.
         const auto k = hn::Xor(hn::Mul(xi, hn::Set(di, 3)), hn::Add(hn::Set(di, y), hn::Mul(xi, hn::Set(di, y))));
-#if HWY_TARGET == HWY_SCALAR
-        HWY_ALIGN float phiRed[hn::MaxLanes(df)];
-        HWY_ALIGN std::int32_t kk[hn::MaxLanes(di)];
-        hn::Store(k, di, kk);
-        for (int l = 0; l < n; ++l) {
-            const double phi = double(10.0f * float(kk[l]));  // hashAngle(): float, then widened
-            phiRed[l] = float(phi - 6.283185307179586 * std::nearbyint(phi / 6.283185307179586));
-        }
-        const auto pr = hn::Load(df, phiRed);
-#else
-        // hashAngle() (float), widened; phi - 2 pi nearbyint(phi / 2 pi) in double, half a
-        // vector at a time: the scalar reduction's operations, so the same bits.
-        const hn::Half<decltype(df)> dh;
-        const hn::Repartition<double, decltype(df)> dd;
-        const auto twoPi = hn::Set(dd, 6.283185307179586);
-        auto reduce = [&](hn::Vec<decltype(dh)> v) {
-            const auto phi = hn::PromoteTo(dd, v);
-            return hn::DemoteTo(dh, hn::Sub(phi, hn::Mul(twoPi, hn::Round(hn::Div(phi, twoPi)))));
-        };
+        // hashAngle() (float): phi = 10 * float(k).
         const auto phiF = hn::Mul(hn::Set(df, 10.0f), hn::ConvertTo(df, k));
-        const auto pr = hn::Combine(df, reduce(hn::UpperHalf(dh, phiF)), reduce(hn::LowerHalf(dh, phiF)));
-#endif
+        const auto pr = ReduceAngle(df, phiF);
         const auto cphi = hn::Cos(df, pr), sphi = hn::Sin(df, pr);
         auto sum = zero;
         for (int s = 0; s < in.numSamples; ++s) {
             const auto hk = hn::Mul(ssRadius, hn::Set(df, in.alpha[s]));
-            const auto dX = hn::Set(df, in.dirX[s]), dY = hn::Set(df, in.dirY[s]);
-            const auto ux = hn::Sub(hn::Mul(dX, cphi), hn::Mul(dY, sphi));
-            const auto uy = hn::Add(hn::Mul(dX, sphi), hn::Mul(dY, cphi));
+            hn::Vec<decltype(df)> ux, uy;
+            if (in.tapAngle) {  // spinInFloat: the tap's angle alpha_k float(tau turnAngle) + phi in float
+                const auto angle = ReduceAngle(df, hn::Add(hn::Set(df, in.tapAngle[s]), phiF));
+                ux = hn::Cos(df, angle), uy = hn::Sin(df, angle);
+            } else {
+                const auto dX = hn::Set(df, in.dirX[s]), dY = hn::Set(df, in.dirY[s]);
+                ux = hn::Sub(hn::Mul(dX, cphi), hn::Mul(dY, sphi));
+                uy = hn::Add(hn::Mul(dX, sphi), hn::Mul(dY, cphi));
+            }
             const auto sx = hn::Add(xi, hn::ConvertTo(di, hn::Mul(hk, ux)));  // truncation toward 0
             const auto sy = hn::Add(hn::Set(di, y), hn::ConvertTo(di, hn::Mul(hk, uy)));
             // m = clamp(findMSB(int(h)) - logQ, 0, maxLevel). For 1 <= h < 2^31, findMSB(int(h))
@@ -164,7 +177,7 @@ inline int SampleRowSimd(const SimdSampleInput& in, int y, int x0, int x1, float
             // Sky taps (z = -inf) add nothing.
             sum = hn::Add(sum, hn::IfThenElseZero(hn::Gt(zq, negInf), term));
         }
-        auto a = hn::Max(zero, hn::Sub(one, hn::Mul(sum, hn::Set(df, in.scale))));
+        auto a = hn::Max(zero, hn::Sub(one, hn::Mul(hn::Mul(sum, hn::Set(df, in.scale)), hn::Set(df, in.scale2))));
         a = hn::IfThenElse(valid, a, one);
         hn::StoreU(a, df, out + (x - x0));
     }

@@ -20,6 +20,10 @@ struct SimdSampleInput {
     const float *alpha, *dirX, *dirY;    //!< the spiral, [numSamples]
     int estimator;                       //!< 0: SAO's falloff, 1: AlchemyAO (eq. 1)
     float r2, bias, beta, epsilon, scale;
+    float scale2;                        //!< A = max(0, 1 - (sum * scale) * scale2) (1: one factor)
+    //! [numSamples] alpha_k float(tau turnAngle) when each tap's angle is summed with the hash
+    //! angle in float (SaoParams::spinInFloat); null: the spiral rotated per pixel.
+    const float* tapAngle;
 };
 
 //! z = c0 / (d c1 + c2) for one row (depth_simd-inl.h); false, with `z` unspecified, when some
@@ -34,8 +38,9 @@ struct BilateralRowInput {
     const float* zCentre;
     const float* zTap[kMaxTaps];
     const float* aTap[kMaxTaps];
-    float gauss[kMaxTaps];               //!< Gaussian weight of each tap
+    float gauss[kMaxTaps];               //!< spatial weight of each tap
     float edgeSharpness;                 //!< k of max(0, 1 - k |dz|)
+    float epsilon;                       //!< out = sum / (weights + epsilon)
 };
 
 //! out[i] for i in [lo, hi) of one bilateral row; 1 where zCentre[i] is infinite.

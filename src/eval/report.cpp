@@ -477,6 +477,14 @@ void writeReport(const ReportOptions& o) {
                 aoSection += fmt::format("<figure><img class=\"aoimg\" src=\"ao/images/ao_atrium_{0}.png\" alt=\"atrium "
                                          "{0}\"><figcaption>atrium (Vulkan): {0}</figcaption></figure>\n",
                                          name);
+        // The paper's configuration beside the released shaders' (sao.md "released").
+        aoSection += "</div>\n<div class=\"anims\">\n";
+        for (const char* scene : {"room", "atrium"})
+            for (const char* name : {"paper", "released", "released_blur"})
+                if (fs::exists(out / "ao" / "images" / fmt::format("ao_{}_{}.png", scene, name)))
+                    aoSection += fmt::format("<figure><img class=\"aoimg\" src=\"ao/images/ao_{0}_{1}.png\" alt=\"{0} "
+                                             "{1}\"><figcaption>{0}: {1}</figcaption></figure>\n",
+                                             scene, name);
         aoSection += "</div>\n<img class=\"plot\" width=\"880\" height=\"420\" src=\"ao/plots/ao_radius_scaling.png\" "
                      "alt=\"AO time vs radius\">\n<img class=\"plot\" width=\"880\" height=\"420\" "
                      "src=\"ao/plots/ao_z_precision.png\" alt=\"z precision\">\n";

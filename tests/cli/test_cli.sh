@@ -114,6 +114,13 @@ check ao_badparam 2 "$SSFX" ao --scene room --size 32x24 -p radius=-2 -o "$OUT/x
 contains ao_badparam "$OUT/ao_badparam.err" "radius"
 check ao_unknown 2 "$SSFX" ao --scene room --size 32x24 -p nope=1 -o "$OUT/x.png"
 check ao_ext 2 "$SSFX" ao --scene room --size 32x24 -o "$OUT/x.jpg"
+check ao_preset 0 "$SSFX" ao --preset released --depth "$OUT/d.exr" --camera "$OUT/c.json" -p guardBand=8 -p radius=1 -o "$OUT/released.png"
+[ -s "$OUT/released.png" ] || { echo "FAIL ao_preset: no output"; fail=1; }
+cmp -s "$OUT/released.png" "$OUT/ao2.png" && { echo "FAIL ao_preset: the released preset gave the default output"; fail=1; }
+check ao_preset_bad 2 "$SSFX" ao --preset shipped --depth "$OUT/d.exr" --camera "$OUT/c.json" -o "$OUT/x.png"
+contains ao_preset_bad "$OUT/ao_preset_bad.err" "paper, released"
+check ao_preset_alchemy 2 "$SSFX" ao -m alchemy --preset released --depth "$OUT/d.exr" --camera "$OUT/c.json" -o "$OUT/x.png"
+check ao_flag_bad 2 "$SSFX" ao --scene room --size 32x24 -p spinInFloat=2 -o "$OUT/x.png"
 check ao_nocam 2 "$SSFX" ao --depth "$OUT/d.exr" -o "$OUT/x.png"
 check ao_truncated 2 "$SSFX" ao --depth "$OUT/trunc.png" --camera "$OUT/c.json" -o "$OUT/x.png"
 echo '{"fov_y_deg": 60, "zNear": -0.1}' > "$OUT/badcam.json"

@@ -34,6 +34,16 @@ struct BlurParams {
     //! [0, 1e6] 1/m: a tap's weight is multiplied by max(0, 1 - edgeSharpness * |z_tap - z|).
     //! The paper's 2^11 on its key z / (-200 m) is 2048 / 200 = 10.24 per metre.
     float edgeSharpness = 10.24f;
+    //! The released blur's spatial weights (AmbientOcclusion_blur.pix, June 2012): tap t != 0
+    //! weighs 0.3 + gaussian[|t|], the centre gaussian[0], summed centre first, from its table
+    //! gaussian = {0.153170, 0.144893, 0.122649, 0.092902, 0.062970} (sigma 2 taps);
+    //! blurSigma is then unused and blurRadius must be <= 4. Default off: exp(-t^2 / 2 sigma^2).
+    bool blurReleasedWeights = false;
+    //! Taps beyond the blurred region weigh 0 (the released passes read the cleared buffer
+    //! there) instead of reading the region's edge pixel (clamped). Default off.
+    bool blurZeroOutside = false;
+    //! [0, 1]: A = sum / (sum of weights + blurEpsilon); the released blur adds 1e-4. Default 0.
+    float blurEpsilon = 0.0f;
 };
 
 struct SaoParams {
@@ -55,16 +65,55 @@ struct SaoParams {
     //! parts of key * 256 (two 8-bit channels). Default off: the blur reads float A and z.
     bool packBlurInput = false;
     float packZMin = -200.0f;   //!< [-1e5, -1e-3] m: z_min of the key (the paper's -200 m)
+    //! With packBlurInput: the buffer as the released shaders store it between the passes
+    //! (RGB8: A in R, the key in G and B), key = clamp(z * (1 / packZMin), 0, 1) packed as
+    //! (floor(256 key) / 256, 256 key - floor(256 key)) and read back as
+    //! G * 256 / 257 + B / 257; A is stored in 8 bits before *each* blur pass, and the edge
+    //! weight max(0, 1 - edgeSharpness |key_tap - key|) is taken on the key itself, so
+    //! edgeSharpness is per key unit (the released 2000; packZMin: their FAR_PLANE_Z, -300 m).
+    bool releasedPacking = false;
+    //! [6, 6.5] rad: the angle of one spiral turn, 2 pi; the released tapLocation() uses 6.28.
+    double spiralTurnAngle = 2.0 * 3.14159265358979323846;
+    //! The released tapLocation(): tap k's angle alpha_k (tau spiralTurnAngle) + phi is summed
+    //! in float (phi is not reduced first, so the sum rounds to half an ulp of phi: the taps
+    //! of pixels with large hash angles turn) before cos/sin, with alpha_k = (k + 0.5) *
+    //! float(1 / s); cos/sin of that float are exact. Default off: the
+    //! spiral's angles in double, rotated by phi per pixel (eq. 8 as a rotation).
+    bool spinInFloat = false;
+    //! The released estimator's intensity: A = max(0, 1 - ((sum * (intensity / r^6)) * (5 / s)))
+    //! (a linear factor) instead of the default A = max(0, 1 - 5 / (r^6 s) sum)^intensity.
+    bool linearIntensity = false;
 };
+
+//! Named configurations of SaoParams (the same mechanism as `ssfx aa --preset`):
+//!   "paper"    the defaults: the paper's text (s = 9, tau = 7, r = 1 m, beta = 0.01 m,
+//!              intensity 1 as an exponent, the 7-tap stride-3 Gaussian blur on float z);
+//!   "released" the authors' released shaders and host code (G3D 9, June 2012): s = 11,
+//!              tau = 7, spiralTurnAngle 6.28, spinInFloat, linearIntensity, r = 0.7 m,
+//!              bias 0.012 m, intensity 0.7, the 9-tap stride-2 blur (blurRadius 4,
+//!              blurStride 2, blurReleasedWeights, blurEpsilon 1e-4, blurZeroOutside), RGB8
+//!              storage between the passes (packBlurInput, releasedPacking, packZMin -300 m,
+//!              edgeSharpness 2000 per key unit).
+//! Throws ssfx::Error listing the names for an unknown one.
+SaoParams saoPreset(const std::string& name);
+//! The preset names, "paper" first.
+std::vector<std::string> saoPresetNames();
 
 //! The packing of SaoParams::packBlurInput, for tests: A -> 8-bit, and z -> the z the blur
 //! sees after the 16-bit key round trip (sky stays -infinity).
 float packAo(float a);
 float packZ(float z, float zMin);
+//! With releasedPacking: the key the released blur reads back for z (see releasedPacking;
+//! sky stays -infinity, which weighs 0 as a tap and passes A = 1 through as a centre).
+float releasedKey(float z, float zMin);
 
 //! The discrepancy-minimising number of spiral turns for s samples (s = 1..30; spec sao.md);
 //! the paper's default pairs s = 9 with tau = 7 instead.
 int spiralTurnsFor(int numSamples);
+
+//! With spinInFloat: tap k's angle as the released tapLocation() forms it, in float and
+//! without FMA: alpha_k * float(tau * turnAngle) + phi, alpha_k = (k + 0.5) * float(1 / s).
+float releasedTapAngle(int k, int numSamples, int numSpiralTurns, double spiralTurnAngle, float phi);
 
 //! AlchemyAO's per-pixel rotation angle (paper eq. 8, the released code's form):
 //! phi = 10 * float((3 x) ^ (y + x y)) radians, with C operator precedence.
