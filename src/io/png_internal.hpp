@@ -24,6 +24,10 @@ std::uint32_t readBe32(const std::uint8_t* p);
 std::uint16_t readBe16(const std::uint8_t* p);
 void appendBe32(std::vector<std::uint8_t>& out, std::uint32_t v);
 void appendBe16(std::vector<std::uint8_t>& out, std::uint16_t v);
+//! Bytes of the per-frame PNGs that the APNG reader has handed to libpng on this thread (a
+//! test hook: decoding stays linear in the file size when no chunk is copied per frame).
+std::uint64_t& apngBytesDecoded();
+
 //! Appends length, type, payload and CRC.
 void appendChunk(std::vector<std::uint8_t>& out, const char* type, std::span<const std::uint8_t> data);
 

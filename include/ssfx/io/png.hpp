@@ -15,6 +15,8 @@
 #pragma once
 
 #include <cstdint>
+#include <cstdio>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -28,6 +30,24 @@ std::vector<std::uint8_t> readFile(const std::string& path);
 //! Writes to a temporary file in the same directory and renames it over `path`, so
 //! `path` is never left half-written (an existing file stays intact on failure).
 void writeFileAtomic(const std::string& path, std::span<const std::uint8_t> bytes);
+
+//! An output written piece by piece with the same guarantee: the pieces go to a temporary
+//! file beside `path`, commit() syncs it and renames it over `path`; destroyed without a
+//! commit (an error on the way), it removes the temporary and `path` is untouched.
+class AtomicFile {
+public:
+    explicit AtomicFile(const std::string& path);
+    ~AtomicFile();
+    AtomicFile(const AtomicFile&) = delete;
+    AtomicFile& operator=(const AtomicFile&) = delete;
+    void write(std::span<const std::uint8_t> bytes);
+    void commit();
+    const std::string& path() const { return path_; }
+
+private:
+    std::string path_, tmp_;
+    std::FILE* file_ = nullptr;
+};
 
 // ---- still PNG ----------------------------------------------------------------------
 //! `name` is used in error messages (usually the file path).
@@ -58,5 +78,54 @@ Animation decodeApng(std::span<const std::uint8_t> bytes, const std::string& nam
 std::vector<std::uint8_t> encodeApng(const Animation& animation);
 Animation readApng(const std::string& path);
 void writeApng(const std::string& path, const Animation& animation);
+
+//! At most this many frames in one APNG (an hour at 25 fps is 90,000): the streaming
+//! reader's bound on the work a file can ask for, separate from the pixel limits.
+inline constexpr std::uint32_t kMaxApngFrames = 100000;
+
+//! Reads an APNG (or a still PNG: one frame) one frame at a time, from a file or from
+//! memory, holding one composed canvas, one frame's compressed data and the few chunks that
+//! decoding needs (PLTE, tRNS), never the whole file: memory is about one frame whatever
+//! the frame count, and time is linear in the file size. Each frame's size is checked
+//! against kMaxPixels / kMaxDimension, the declared frame count against kMaxApngFrames.
+//! decodeApng() and readApng() are built on it (they add the all-frames pixel limit).
+//! Errors throw ssfx::Error naming the file (and the frame) as decodeApng() does; frames
+//! already returned were complete and correct.
+class ApngReader {
+public:
+    explicit ApngReader(const std::string& path);
+    ApngReader(std::span<const std::uint8_t> bytes, const std::string& name);
+    ~ApngReader();
+    ApngReader(ApngReader&&) noexcept;
+    ApngReader& operator=(ApngReader&&) noexcept;
+    int width() const;
+    int height() const;
+    bool animated() const;             //!< false: a still PNG
+    std::uint32_t frameCount() const;  //!< as the acTL chunk declares it (1 for a still PNG)
+    std::uint32_t numPlays() const;
+    //! The next frame, composed onto the canvas (dispose and blend applied), or nullptr after
+    //! the last one (then the file's end has been checked). Valid until the next call.
+    const Frame* next();
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+//! Writes an APNG one frame at a time (each frame stored whole: dispose none, blend
+//! source) through an AtomicFile: `path` appears, complete, only at commit(), which
+//! checks that exactly `frames` frames were added.
+class ApngWriter {
+public:
+    ApngWriter(const std::string& path, int width, int height, std::uint32_t frames, std::uint32_t numPlays = 0);
+    ~ApngWriter();
+    void add(ImageView<const Rgba8> image, std::uint16_t delayNum = 1, std::uint16_t delayDen = 25);
+    void commit();
+
+private:
+    AtomicFile file_;
+    int width_, height_;
+    std::uint32_t frames_, added_ = 0, seq_ = 0;
+};
 
 }  // namespace ssfx::io
