@@ -77,7 +77,7 @@ void addQuality(CLI::App& eval) {
 
 void addTemporal(CLI::App& eval) {
     struct Options {
-        std::string dir, name = "animated", out, json, markdown;
+        std::string dir, name = "animated", out, json, markdown, source = "compute";
         std::vector<std::string> methods;
         int threads = 0;
     };
@@ -86,58 +86,88 @@ void addTemporal(CLI::App& eval) {
     cmd->add_option("--dir", o->dir,
                     "Read NAME.png, NAMEx2/x4/x8.png (APNG) from here (default: draw ssfx's 'animated' directly)");
     cmd->add_option("--image", o->name, "Animation name (default: animated)");
+    cmd->add_option("--source", o->source,
+                    "compute: run each method on the frames; given: score the NAME_METHOD.png animations in --dir "
+                    "(outputs made elsewhere, e.g. the DDAA author's) against the same x8 reference")
+        ->check(CLI::IsMember({"compute", "given"}));
     cmd->add_option("--out", o->out, "Write NAME_METHOD.png and NAME_reference.png (APNG) to this directory");
     cmd->add_option("--json", o->json, "Also write the results as JSON");
     cmd->add_option("--md", o->markdown, "Also write the results as Markdown");
-    cmd->add_option("--methods", o->methods, "Methods (default: the quality table's)")->delimiter(',');
+    cmd->add_option("--methods", o->methods,
+                    "Methods (default: the quality table's; with --source given: those whose NAME_METHOD.png exists)")
+        ->delimiter(',');
     cmd->add_option("--threads", o->threads, "Worker threads (0 = all)")->check(CLI::Range(0, 1024));
     cmd->footer("flicker = RMS over frames, pixels and RGB of (dO_t - dR_t), in 8-bit levels, where dO_t is the\n"
                 "method's frame-to-frame difference and dR_t that of the x8 render resolved to 1x (around the\n"
                 "loop); tPSNR is the same as a PSNR; PSNR compares each output frame with the resolved frame.\n"
-                "Reading an x8 APNG holds all its frames in memory (about 3 GB for 'animated').");
+                "Frames are streamed: one frame of each scale is in memory at a time (a 4800x4800 x8 frame is\n"
+                "92 MB), plus two 1x frames per method (and each 1x frame with --out: APNGs are written as they\n"
+                "come), whatever the number of frames (docs/evaluation.md).");
     cmd->callback([o] {
-        eval::FrameFn frame;
-        int frames = 0, fps = 25;
-        auto cache = std::make_shared<std::map<int, io::Animation>>();
+        if (o->source == "given" && o->dir.empty()) throw Error("--source given needs --dir (where NAME_METHOD.png are)");
+        std::unique_ptr<eval::FrameSource> source;
+        int fps = 25;
         if (o->dir.empty()) {
             const auto& info = eval::testImageByName(o->name);
-            frames = info.frames;
             fps = info.fps;
-            frame = [name = o->name](int t, int scale) { return eval::drawTestImage(name, scale, t); };
+            source = eval::drawnFrames(info.frames, [name = o->name](int t, int scale) {
+                return eval::drawTestImage(name, scale, t);
+            });
         } else {
-            auto load = [dir = o->dir, name = o->name, cache](int scale) -> io::Animation& {
-                auto it = cache->find(scale);
-                if (it != cache->end()) return it->second;
-                const std::string file = (std::filesystem::path(dir) /
-                                          (scale == 1 ? name + ".png" : fmt::format("{}x{}.png", name, scale)))
-                                             .string();
-                return (*cache)[scale] = io::readApng(file);
-            };
-            const io::Animation& a = load(1);
-            frames = int(a.frames.size());
-            fps = int(std::lround(1.0 / a.frames[0].delaySeconds()));
-            frame = [load](int t, int scale) {
-                const io::Animation& anim = load(scale);
-                if (t >= int(anim.frames.size())) throw Error(fmt::format("x{} animation has fewer frames", scale));
-                return ImageRgba8::copyOf(anim.frames[std::size_t(t)].image.view());
-            };
+            const auto path = [&](const std::string& file) { return (std::filesystem::path(o->dir) / file).string(); };
+            if (!std::filesystem::exists(path(o->name + "x8.png")))
+                throw Error(fmt::format("{}: no such file (the x8 animation of '{}')", path(o->name + "x8.png"), o->name));
+            source = eval::apngFrames(o->dir, o->name);
+            io::ApngReader first(path(o->name + "x8.png"));
+            const io::Frame* f = first.next();
+            if (f && f->delaySeconds() > 0) fps = int(std::lround(1.0 / f->delaySeconds()));
         }
         eval::TemporalOptions t;
         t.methods = o->methods;
         t.exec = Exec{o->threads};
         t.progress = progressLine;
-        const eval::TemporalRun run = eval::evaluateTemporal(frames, frame, t);
-        fmt::print("{}", eval::temporalMarkdown(run.results));
+        t.keepOutputs = false;
+        std::vector<std::pair<std::string, std::string>> given;
+        if (o->source == "given") {
+            const std::vector<std::string> ids = o->methods.empty() ? eval::paperMethodOrder() : o->methods;
+            for (const auto& id : ids) {
+                const std::string file = (std::filesystem::path(o->dir) / fmt::format("{}_{}.png", o->name, id)).string();
+                if (std::filesystem::exists(file)) given.emplace_back(id, file);
+                else if (!o->methods.empty()) throw Error(fmt::format("{}: no such file (given outputs of {})", file, id));
+            }
+            if (given.empty())
+                throw Error(fmt::format("--source given: no {}_METHOD.png animation in {}", o->name, o->dir));
+        }
+        const std::vector<std::string> names = [&] {
+            std::vector<std::string> n;
+            if (!given.empty())
+                for (const auto& g : given) n.push_back(g.first);
+            else
+                n = o->methods.empty() ? eval::paperMethodOrder() : o->methods;
+            return n;
+        }();
+        // --out: every animation written frame by frame, committed together at the end.
+        std::vector<std::unique_ptr<io::ApngWriter>> writers;
         if (!o->out.empty()) {
             std::filesystem::create_directories(o->out);
-            auto save = [&](const std::string& suffix, const std::vector<ImageRgba8>& images) {
-                io::Animation anim;
-                for (const auto& img : images) anim.frames.push_back({img, 1, std::uint16_t(fps)});
-                io::writeApng((std::filesystem::path(o->out) / (o->name + "_" + suffix + ".png")).string(), anim);
+            t.onFrame = [&](int frame, const std::vector<ImageRgba8>& outputs, const ImageRgba8& ref) {
+                if (frame == 0) {
+                    auto open = [&](const std::string& suffix) {
+                        writers.push_back(std::make_unique<io::ApngWriter>(
+                            (std::filesystem::path(o->out) / (o->name + "_" + suffix + ".png")).string(), ref.width(),
+                            ref.height(), std::uint32_t(source->frames())));
+                    };
+                    open("reference");
+                    for (const auto& n : names) open(n);
+                }
+                writers[0]->add(ref.view(), 1, std::uint16_t(fps));
+                for (std::size_t m = 0; m < outputs.size(); ++m) writers[m + 1]->add(outputs[m].view(), 1, std::uint16_t(fps));
             };
-            save("reference", run.reference);
-            for (std::size_t m = 0; m < run.results.size(); ++m) save(run.results[m].method, run.outputs[m]);
         }
+        const eval::TemporalRun run =
+            given.empty() ? eval::evaluateTemporal(*source, t) : eval::evaluateTemporalGiven(*source, given, t);
+        for (auto& w : writers) w->commit();
+        fmt::print("{}", eval::temporalMarkdown(run.results));
         if (!o->json.empty()) writeText(o->json, eval::temporalJson(run.results));
         if (!o->markdown.empty()) writeText(o->markdown, eval::temporalMarkdown(run.results));
     });

@@ -370,6 +370,40 @@ void writeReport(const ReportOptions& o) {
     writeText(out / "data" / "temporal.md", temporalMarkdown(temporal.results));
     all["temporal"] = nlohmann::ordered_json::parse(temporalJson(temporal.results));
 
+    // 4b. The author's animation, when the reference data has it (animatedx8.png and
+    // animated_METHOD.png): the given outputs and ssfx's on the same frames, streamed.
+    std::string temporalReference;
+    if (!o.referenceDir.empty() && !o.quick && fs::exists(fs::path(o.referenceDir) / "animatedx8.png")) {
+        std::vector<std::pair<std::string, std::string>> given;
+        for (const auto& id : methodIds) {
+            const fs::path file = fs::path(o.referenceDir) / fmt::format("animated_{}.png", id);
+            if (fs::exists(file)) given.emplace_back(id, file.string());
+        }
+        if (!given.empty()) {
+            TemporalOptions go = to;
+            go.keepOutputs = false;
+            go.methods.clear();
+            for (const auto& g : given) go.methods.push_back(g.first);
+            const TemporalRun g = evaluateTemporalGiven(*apngFrames(o.referenceDir, "animated"), given, go);
+            const TemporalRun ours = evaluateTemporal(*apngFrames(o.referenceDir, "animated"), go);
+            all["temporal_reference"] = {{"given", nlohmann::ordered_json::parse(temporalJson(g.results))},
+                                         {"ours", nlohmann::ordered_json::parse(temporalJson(ours.results))}};
+            std::vector<std::string> rows;
+            std::vector<std::vector<double>> vals;
+            for (std::size_t m = 0; m < g.results.size(); ++m) {
+                rows.push_back(g.results[m].method + " (author's outputs)");
+                vals.push_back({g.results[m].flickerLevels, g.results[m].temporalPsnr, g.results[m].psnr});
+                rows.push_back(g.results[m].method + " (ssfx)");
+                vals.push_back({ours.results[m].flickerLevels, ours.results[m].temporalPsnr, ours.results[m].psnr});
+            }
+            temporalReference = "<h3>The author's animation: given outputs and ssfx's</h3>\n<p class=\"note\">The DDAA "
+                                "author's <code>animated</code> frames (x8 resolved as the reference), scored from the "
+                                "author's GPU outputs (<code>ssfx eval temporal --source given</code>) and from ssfx's "
+                                "outputs on the same inputs; frames are streamed, one x8 frame in memory at a time.</p>\n" +
+                                htmlTable(rows, {"flicker (levels)", "tPSNR (dB)", "PSNR (dB)"}, vals, 3, false, "method");
+        }
+    }
+
     // 5. Speed (Table 3 layout).
     SpeedOptions so;
     so.methods = methodIds;
@@ -584,6 +618,7 @@ void writeReport(const ReportOptions& o) {
         }
         h += htmlTable(names, {"flicker (levels)", "tPSNR (dB)", "PSNR (dB)"}, rows, 3, false, "method");
     }
+    h += temporalReference;
     h += "<img class=\"plot\" width=\"880\" height=\"360\" src=\"plots/flicker.png\" alt=\"flicker per method\">\n<div class=\"anims\">\n";
     h += "<figure><img src=\"anim/animated_reference.png\" alt=\"reference animation\"><figcaption>reference (x8 "
          "resolved)</figcaption></figure>\n";

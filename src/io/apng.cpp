@@ -341,6 +341,15 @@ struct ApngReader::Impl {
         }
         const std::size_t index = framesSeen - 1;
         if (data.empty()) throw Error(fmt::format("{}: APNG frame {} has no image data", name, index));
+        if (fc.width == canvasW && fc.height == canvasH && fc.blend == kBlendSource && fc.dispose != kDisposePrevious) {
+            // The frame replaces the whole canvas: free it first, so that one canvas-sized
+            // image is in memory at a time (a 4800x4800 frame is 92 MB).
+            canvas = ImageRgba8();
+            canvas = decodeFrame(fc.width, fc.height, data, index);
+            current.delayNum = fc.delayNum, current.delayDen = fc.delayDen;
+            last = fc, haveLast = true;
+            return &current;
+        }
         const ImageRgba8 sub = decodeFrame(fc.width, fc.height, data, index);
         if (fc.dispose == kDisposePrevious) before = canvas;
         for (std::uint32_t y = 0; y < fc.height; ++y)

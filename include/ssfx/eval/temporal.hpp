@@ -13,8 +13,11 @@
 // aliased edge that jumps a whole pixel while the reference moves smoothly scores badly.
 #pragma once
 
+#include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "ssfx/core/image.hpp"
@@ -26,11 +29,32 @@ namespace ssfx::eval {
 //! Frame `frame` of the animation at `scale` (1, 2, 4 or 8).
 using FrameFn = std::function<ImageRgba8(int frame, int scale)>;
 
+//! The frames of an animation at each scale, asked for in order t = 0, 1, ... at each
+//! scale (each scale on its own); a view stays valid until the next call at its scale.
+class FrameSource {
+public:
+    virtual ~FrameSource() = default;
+    virtual int frames() const = 0;
+    virtual ImageView<const Rgba8> frame(int t, int scale) = 0;
+};
+//! A FrameFn as a source (each call draws the frame; the last one of each scale is kept).
+std::unique_ptr<FrameSource> drawnFrames(int frames, FrameFn frame);
+//! The animation stored as APNG files DIR/NAME.png, NAMEx2.png, NAMEx4.png, NAMEx8.png,
+//! each streamed with io::ApngReader: one frame of each scale in memory, whatever the frame
+//! count (the x8 file's own frame count; the others must have as many). Files are opened
+//! when their scale is first asked for.
+std::unique_ptr<FrameSource> apngFrames(const std::string& dir, const std::string& name);
+
 struct TemporalOptions {
     std::vector<std::string> methods;  //!< ids; empty = the quality table's order
     MethodSettings settings;
     Exec exec;
     std::function<void(const std::string&)> progress;
+    //! Keep every 1x output and reference frame in TemporalRun (off: memory stays a few 1x
+    //! frames per method; use onFrame to write them out as they come).
+    bool keepOutputs = true;
+    //! Called for every frame with the methods' outputs (in `methods` order) and R_t.
+    std::function<void(int t, const std::vector<ImageRgba8>& outputs, const ImageRgba8& reference)> onFrame;
 };
 
 struct TemporalResult {
@@ -42,12 +66,40 @@ struct TemporalResult {
 
 struct TemporalRun {
     std::vector<TemporalResult> results;            //!< one per method, in order
-    std::vector<std::vector<ImageRgba8>> outputs;   //!< outputs[m][t]
-    std::vector<ImageRgba8> reference;              //!< R_t
+    std::vector<std::vector<ImageRgba8>> outputs;   //!< outputs[m][t] (with keepOutputs)
+    std::vector<ImageRgba8> reference;              //!< R_t (with keepOutputs)
 };
 
-//! Runs every method on every frame. Needs frames >= 2.
+//! Runs every method on every frame, streaming: frame t of each scale is read, the x8 one
+//! resolved to R_t and dropped, the outputs scored and dropped (unless keepOutputs).
+//! Needs frames >= 2.
+TemporalRun evaluateTemporal(FrameSource& source, const TemporalOptions& options);
 TemporalRun evaluateTemporal(int frames, const FrameFn& frame, const TemporalOptions& options);
+
+//! `--source given`: scores outputs made elsewhere, frame by frame: `given` pairs a method
+//! name with an APNG of its 1x outputs (e.g. the DDAA author's DIR/NAME_METHOD.png), each
+//! streamed, against the source's resolved x8 frames. Every animation must have the source's
+//! frame count and 1x size.
+TemporalRun evaluateTemporalGiven(FrameSource& source, const std::vector<std::pair<std::string, std::string>>& given,
+                                  const TemporalOptions& options);
+
+//! The metrics accumulated one frame at a time (memory: the first and the previous frame
+//! of both sequences), so that any number of frames can be scored.
+class TemporalScorer {
+public:
+    explicit TemporalScorer(Exec exec = {}) : exec_(exec) {}
+    //! Output and reference of the next frame (all frames of one size).
+    void add(ImageView<const Rgba8> output, ImageView<const Rgba8> reference);
+    //! The scores, closing the loop from the last frame to the first. Needs >= 2 frames.
+    TemporalResult result() const;
+
+private:
+    Exec exec_;
+    ImageRgba8 firstOut_, firstRef_, prevOut_, prevRef_;
+    std::uint64_t flickerSum_ = 0;  //!< sum of squared differences of differences (levels^2)
+    double mseSum_ = 0;
+    int frames_ = 0;
+};
 
 //! The metrics for one sequence of outputs against a reference sequence (same sizes).
 TemporalResult temporalScore(const std::vector<ImageRgba8>& outputs, const std::vector<ImageRgba8>& reference,
