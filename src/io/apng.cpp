@@ -412,47 +412,57 @@ Animation decodeApng(std::span<const std::uint8_t> bytes, const std::string& nam
     return readAll(r, name);
 }
 
+namespace {
+
+// The signature, IHDR (8-bit RGBA, as encodePng() writes it) and acTL of an APNG.
+std::vector<std::uint8_t> apngHeader(int width, int height, std::uint32_t frames, std::uint32_t numPlays) {
+    std::vector<std::uint8_t> out(kPngSignature, kPngSignature + 8), ihdr, actl;
+    appendBe32(ihdr, std::uint32_t(width)), appendBe32(ihdr, std::uint32_t(height));
+    for (std::uint8_t b : {8, 6, 0, 0, 0}) ihdr.push_back(b);  // depth 8, RGBA, deflate, filter 0, no interlace
+    appendChunk(out, "IHDR", ihdr);
+    appendBe32(actl, frames), appendBe32(actl, numPlays);
+    appendChunk(out, "acTL", actl);
+    return out;
+}
+
+// One frame stored whole (dispose none, blend source): its fcTL, then its data as IDAT for
+// the first frame and as fdAT after; `seq` is the next sequence number.
+void appendFrame(std::vector<std::uint8_t>& out, ImageView<const Rgba8> image, std::uint16_t delayNum,
+                 std::uint16_t delayDen, bool first, std::uint32_t& seq) {
+    const std::vector<std::uint8_t> png = encodePng(image);
+    std::vector<std::uint8_t> fctl;
+    appendBe32(fctl, seq++);
+    appendBe32(fctl, std::uint32_t(image.width())), appendBe32(fctl, std::uint32_t(image.height()));
+    appendBe32(fctl, 0), appendBe32(fctl, 0);
+    appendBe16(fctl, delayNum), appendBe16(fctl, delayDen);
+    fctl.push_back(kDisposeNone), fctl.push_back(kBlendSource);
+    appendChunk(out, "fcTL", fctl);
+    for (const Chunk& c : parseChunks(png, "APNG output")) {
+        if (!c.is("IDAT")) continue;
+        if (first) {
+            appendChunk(out, "IDAT", c.data);
+        } else {
+            std::vector<std::uint8_t> fdat;
+            appendBe32(fdat, seq++);
+            fdat.insert(fdat.end(), c.data.begin(), c.data.end());
+            appendChunk(out, "fdAT", fdat);
+        }
+    }
+}
+
+}  // namespace
+
 std::vector<std::uint8_t> encodeApng(const Animation& anim) {
     if (anim.frames.empty()) throw Error("APNG output: no frames");
     const int w = anim.width(), h = anim.height();
-    std::vector<std::uint8_t> out(kPngSignature, kPngSignature + 8);
+    std::vector<std::uint8_t> out = apngHeader(w, h, std::uint32_t(anim.frames.size()), anim.numPlays);
     std::uint32_t seq = 0;
     for (std::size_t i = 0; i < anim.frames.size(); ++i) {
         const Frame& f = anim.frames[i];
         if (f.image.width() != w || f.image.height() != h)
             throw Error(fmt::format("APNG output: frame {} is {}x{}, frame 0 is {}x{}", i, f.image.width(),
                                     f.image.height(), w, h));
-        const std::vector<std::uint8_t> png = encodePng(f.image);
-        const std::vector<Chunk> chunks = parseChunks(png, "APNG output");
-        if (i == 0) {
-            appendChunk(out, "IHDR", chunks[0].data);
-            std::vector<std::uint8_t> actl;
-            appendBe32(actl, std::uint32_t(anim.frames.size()));
-            appendBe32(actl, anim.numPlays);
-            appendChunk(out, "acTL", actl);
-        }
-        std::vector<std::uint8_t> fctl;
-        appendBe32(fctl, seq++);
-        appendBe32(fctl, std::uint32_t(w));
-        appendBe32(fctl, std::uint32_t(h));
-        appendBe32(fctl, 0);
-        appendBe32(fctl, 0);
-        appendBe16(fctl, f.delayNum);
-        appendBe16(fctl, f.delayDen);
-        fctl.push_back(kDisposeNone);
-        fctl.push_back(kBlendSource);
-        appendChunk(out, "fcTL", fctl);
-        for (const Chunk& c : chunks) {
-            if (!c.is("IDAT")) continue;
-            if (i == 0) {
-                appendChunk(out, "IDAT", c.data);
-            } else {
-                std::vector<std::uint8_t> fdat;
-                appendBe32(fdat, seq++);
-                fdat.insert(fdat.end(), c.data.begin(), c.data.end());
-                appendChunk(out, "fdAT", fdat);
-            }
-        }
+        appendFrame(out, f.image.view(), f.delayNum, f.delayDen, i == 0, seq);
     }
     appendChunk(out, "IEND", {});
     return out;
@@ -474,15 +484,7 @@ ApngWriter::ApngWriter(const std::string& path, int width, int height, std::uint
     checkDimensions(width, height, path);
     if (frames < 1 || frames > kMaxApngFrames)
         throw Error(fmt::format("{}: an APNG of {} frames (1..{})", path, frames, kMaxApngFrames));
-    // IHDR as encodePng() writes it, then acTL.
-    std::vector<std::uint8_t> out(kPngSignature, kPngSignature + 8), ihdr;
-    appendBe32(ihdr, std::uint32_t(width)), appendBe32(ihdr, std::uint32_t(height));
-    for (std::uint8_t b : {8, 6, 0, 0, 0}) ihdr.push_back(b);  // 8-bit RGBA, deflate, no filter type, no interlace
-    appendChunk(out, "IHDR", ihdr);
-    std::vector<std::uint8_t> actl;
-    appendBe32(actl, frames), appendBe32(actl, numPlays);
-    appendChunk(out, "acTL", actl);
-    file_.write(out);
+    file_.write(apngHeader(width, height, frames, numPlays));
 }
 
 ApngWriter::~ApngWriter() = default;
@@ -492,25 +494,8 @@ void ApngWriter::add(ImageView<const Rgba8> image, std::uint16_t delayNum, std::
         throw Error(fmt::format("{}: frame {} is {}x{}, the animation {}x{}", file_.path(), added_, image.width(),
                                 image.height(), width_, height_));
     if (added_ >= frames_) throw Error(fmt::format("{}: more than the {} frames declared", file_.path(), frames_));
-    const std::vector<std::uint8_t> png = encodePng(image);
-    std::vector<std::uint8_t> out, fctl;
-    appendBe32(fctl, seq_++);
-    appendBe32(fctl, std::uint32_t(width_)), appendBe32(fctl, std::uint32_t(height_));
-    appendBe32(fctl, 0), appendBe32(fctl, 0);
-    appendBe16(fctl, delayNum), appendBe16(fctl, delayDen);
-    fctl.push_back(kDisposeNone), fctl.push_back(kBlendSource);
-    appendChunk(out, "fcTL", fctl);
-    for (const Chunk& c : parseChunks(png, "APNG output")) {
-        if (!c.is("IDAT")) continue;
-        if (added_ == 0) {
-            appendChunk(out, "IDAT", c.data);
-        } else {
-            std::vector<std::uint8_t> fdat;
-            appendBe32(fdat, seq_++);
-            fdat.insert(fdat.end(), c.data.begin(), c.data.end());
-            appendChunk(out, "fdAT", fdat);
-        }
-    }
+    std::vector<std::uint8_t> out;
+    appendFrame(out, image, delayNum, delayDen, added_ == 0, seq_);
     file_.write(out);
     ++added_;
 }

@@ -10,6 +10,7 @@
 #include "ssfx/ao/raytraced.hpp"
 #include "ssfx/ao/sao.hpp"
 #include "ssfx/eval/ao_scenes.hpp"
+#include "ssfx/io/exr.hpp"
 
 using namespace ssfx;
 using namespace ssfx::ao;
@@ -86,6 +87,19 @@ TEST(Sky, NothingDrawnStaysOneWithAFiniteFarPlaneInEveryFormat) {
                 }
         }
         EXPECT_GT(skyPixels, 2000);
+        // Through an EXR file (ssfx ao --depth): depth 1 survives the float round trip, and
+        // the file gives the in-memory buffer's AO exactly.
+        {
+            const Camera cam = cameraWithFar(-60.0);
+            const ImageF d = yardDepth(cam, f, w, h);
+            const std::string path = std::string(SSFX_TEST_OUT_DIR) + "/sky_depth.exr";
+            io::writeExr(path, d.view(), "Z");
+            const ImageF back = io::readExr(path);
+            ASSERT_EQ(back, d);
+            SaoParams sp;
+            sp.guardBand = g;
+            EXPECT_EQ(sao(back.view(), cam, sp), results[0][0]);
+        }
         // Geometry is the same for both far planes up to the format's depth precision, so
         // the AO is too: within 2/255 for D24 and D32F (z differs by < 0.1 mm at the yard's
         // 2-12 m); D16 stores z 60 m away with a different step for each far plane
