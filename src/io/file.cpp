@@ -1,8 +1,14 @@
-// Whole-file reads and atomic writes (temporary file in the same directory + rename).
+// Whole-file reads and atomic writes (temporary file in the target's directory + rename;
+// see AtomicFile in png.hpp for what is replaced, what is written into and what is refused).
+#include <fcntl.h>
 #include <fmt/format.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
+#include <csignal>
+#include <mutex>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -25,22 +31,139 @@ std::vector<std::uint8_t> readFile(const std::string& path) {
     return bytes;
 }
 
+namespace {
+
+namespace fs = std::filesystem;
+
+// The temporaries alive in this process, so that SIGINT and SIGTERM can remove them: a fixed
+// table of paths, filled and cleared under a mutex, read by the handler with unlink() alone
+// (async-signal-safe). A slot is used while its flag is set.
+constexpr int kSlots = 64;
+constexpr std::size_t kSlotBytes = 4096;
+char gTempPath[kSlots][kSlotBytes];
+std::atomic<bool> gTempUsed[kSlots];
+std::mutex gTempMutex;
+struct sigaction gPrevious[2];
+const int kSignals[2] = {SIGINT, SIGTERM};
+
+extern "C" void removeTemporariesAndDie(int sig) {
+    for (int i = 0; i < kSlots; ++i)
+        if (gTempUsed[i].load()) ::unlink(gTempPath[i]);
+    for (int k = 0; k < 2; ++k)
+        if (kSignals[k] == sig) ::sigaction(sig, &gPrevious[k], nullptr);
+    ::raise(sig);  // the previous disposition (by default: terminate with this signal)
+}
+
+void installHandlersOnce() {
+    static std::once_flag once;
+    std::call_once(once, [] {
+        for (int k = 0; k < 2; ++k) {
+            struct sigaction now {};
+            ::sigaction(kSignals[k], nullptr, &now);
+            if (now.sa_handler != SIG_DFL) continue;  // the program has its own: leave it
+            struct sigaction sa {};
+            sa.sa_handler = removeTemporariesAndDie;
+            sigemptyset(&sa.sa_mask);
+            ::sigaction(kSignals[k], &sa, &gPrevious[k]);
+        }
+    });
+}
+
+int registerTemp(const std::string& path) {
+    if (path.size() >= kSlotBytes) return -1;
+    std::lock_guard<std::mutex> lock(gTempMutex);
+    for (int i = 0; i < kSlots; ++i)
+        if (!gTempUsed[i].load()) {
+            std::memcpy(gTempPath[i], path.c_str(), path.size() + 1);
+            gTempUsed[i].store(true);
+            return i;
+        }
+    return -1;  // more than 64 at once: still removed on errors, not on signals
+}
+
+void unregisterTemp(int slot) {
+    if (slot < 0) return;
+    std::lock_guard<std::mutex> lock(gTempMutex);
+    gTempUsed[slot].store(false);
+}
+
+// `path` with every symbolic link along it followed (a dangling link gives its target: the
+// file to create), so that the target is what gets replaced, in the target's directory.
+fs::path followLinks(const fs::path& path) {
+    fs::path p = path;
+    for (int depth = 0; depth < 40; ++depth) {
+        std::error_code ec;
+        if (!fs::is_symlink(fs::symlink_status(p, ec))) return p;
+        const fs::path to = fs::read_symlink(p, ec);
+        if (ec) throw Error(fmt::format("{}: cannot read the symbolic link ({})", path.string(), ec.message()));
+        p = to.is_absolute() ? to : p.parent_path() / to;
+    }
+    throw Error(fmt::format("{}: too many levels of symbolic links", path.string()));
+}
+
+}  // namespace
+
 AtomicFile::AtomicFile(const std::string& path) : path_(path) {
-    namespace fs = std::filesystem;
-    const fs::path target(path);
-    if (fs::is_directory(target)) throw Error(fmt::format("{}: is a directory", path));
+    if (path == "-") {  // standard output, written as it comes
+        file_ = stdout;
+        direct_ = true;
+        return;
+    }
+    const fs::path target = followLinks(fs::path(path));
+    std::error_code ec;
+    const fs::file_status st = fs::status(target, ec);
+    if (fs::is_directory(st)) throw Error(fmt::format("{}: is a directory", path));
+    if (fs::exists(st) && !fs::is_regular_file(st)) {
+        // A device, a FIFO, a socket: written into, never replaced.
+        file_ = std::fopen(target.c_str(), "wb");
+        if (!file_) throw Error(fmt::format("{}: cannot open for writing ({})", path, std::strerror(errno)));
+        direct_ = true;
+        return;
+    }
+    target_ = target.string();
+    mode_t mode = 0666;  // a new file: 0666 less the umask, as open(2) gives it
+    if (fs::exists(st)) {
+        struct stat info {};
+        if (::stat(target.c_str(), &info) != 0)
+            throw Error(fmt::format("{}: cannot stat ({})", path, std::strerror(errno)));
+        // Read-only: no write permission bit at all, or none for us (root passes access()).
+        if ((info.st_mode & 0222) == 0 || ::access(target.c_str(), W_OK) != 0)
+            throw Error(fmt::format("{}: is read-only; not overwritten", path));
+        mode = info.st_mode & 07777;
+        keepMode_ = true;
+    }
+    // A short temporary name beside the target (any target name that fits fits it too).
     std::random_device rd;
-    tmp_ = (target.parent_path() / fmt::format(".{}.tmp{}-{:08x}", target.filename().string(), ::getpid(), rd()))
-               .string();
-    file_ = std::fopen(tmp_.c_str(), "wb");
-    if (!file_) throw Error(fmt::format("{}: cannot create output file ({})", path, std::strerror(errno)));
+    int fd = -1;
+    for (int attempt = 0; attempt < 100 && fd < 0; ++attempt) {
+        tmp_ = (target.parent_path() / fmt::format(".ssfx-{:08x}.tmp", rd())).string();
+        fd = ::open(tmp_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, keepMode_ ? 0600 : mode);
+        if (fd < 0 && errno != EEXIST) break;
+    }
+    if (fd < 0) throw Error(fmt::format("{}: cannot create output file ({})", path, std::strerror(errno)));
+    if (keepMode_ && ::fchmod(fd, mode) != 0) {
+        const int e = errno;
+        ::close(fd), ::unlink(tmp_.c_str());
+        throw Error(fmt::format("{}: cannot set the file mode ({})", path, std::strerror(e)));
+    }
+    installHandlersOnce();
+    slot_ = registerTemp(tmp_);
+    file_ = ::fdopen(fd, "wb");
+    if (!file_) {
+        ::close(fd), ::unlink(tmp_.c_str()), unregisterTemp(slot_);
+        throw Error(fmt::format("{}: cannot create output file ({})", path, std::strerror(errno)));
+    }
 }
 
 AtomicFile::~AtomicFile() {
-    if (file_) {
-        std::fclose(file_);
-        std::remove(tmp_.c_str());
+    if (!file_) return;
+    if (direct_) {
+        if (file_ != stdout) std::fclose(file_);
+        return;
     }
+    std::fclose(file_);
+    std::remove(tmp_.c_str());
+    unregisterTemp(slot_);
 }
 
 void AtomicFile::write(std::span<const std::uint8_t> bytes) {
@@ -51,16 +174,24 @@ void AtomicFile::write(std::span<const std::uint8_t> bytes) {
 
 void AtomicFile::commit() {
     if (!file_) throw Error(fmt::format("{}: committed twice", path_));
+    if (direct_) {
+        const bool ok = std::fflush(file_) == 0 && (file_ == stdout || std::fclose(file_) == 0);
+        file_ = nullptr;
+        if (!ok) throw Error(fmt::format("{}: write failed ({})", path_, std::strerror(errno)));
+        return;
+    }
     bool ok = std::fflush(file_) == 0;
     ok = (::fsync(::fileno(file_)) == 0) && ok;
     ok = (std::fclose(file_) == 0) && ok;
     file_ = nullptr;
     if (!ok) {
         std::remove(tmp_.c_str());
+        unregisterTemp(slot_);
         throw Error(fmt::format("{}: write failed ({})", path_, std::strerror(errno)));
     }
     std::error_code ec;
-    std::filesystem::rename(tmp_, path_, ec);
+    fs::rename(tmp_, target_, ec);
+    unregisterTemp(slot_);
     if (ec) {
         std::remove(tmp_.c_str());
         throw Error(fmt::format("{}: cannot move output into place ({})", path_, ec.message()));

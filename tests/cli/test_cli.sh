@@ -37,6 +37,20 @@ check aa 0 "$SSFX" aa -m ddaa2 "$OUT/scene/scene.png" -o "$OUT/ddaa2.png" --pres
 check resolve 0 "$SSFX" aa -m ssaax4 "$OUT/scene/scenex4.png" -o "$OUT/ssaax4.png"
 check param 0 "$SSFX" aa -m ddaa2 -p strength=2 -p searchRounds=3 "$OUT/scene/scene.png" -o "$OUT/p.png"
 
+# -o and what it names: "-" is standard output, a link is followed, a read-only file refused.
+"$SSFX" aa -m ddaa2 "$OUT/scene/scene.png" -o - --preset high --threads 2 >"$OUT/stdout.png" 2>"$OUT/stdout.err" ||
+  { echo "FAIL aa_stdout: exit $?"; fail=1; }
+cmp -s "$OUT/stdout.png" "$OUT/ddaa2.png" || { echo "FAIL aa_stdout: -o - differs from the file output"; fail=1; }
+cp "$OUT/p.png" "$OUT/target.png" && ln -sf target.png "$OUT/link.png"
+check aa_link 0 "$SSFX" aa -m ddaa2 "$OUT/scene/scene.png" -o "$OUT/link.png" --preset high
+[ -L "$OUT/link.png" ] || { echo "FAIL aa_link: the link was replaced"; fail=1; }
+cmp -s "$OUT/target.png" "$OUT/ddaa2.png" || { echo "FAIL aa_link: the link's target was not written"; fail=1; }
+cp "$OUT/p.png" "$OUT/readonly.png" && chmod 444 "$OUT/readonly.png"
+check aa_readonly 2 "$SSFX" aa -m blur "$OUT/scene/scene.png" -o "$OUT/readonly.png"
+contains aa_readonly "$OUT/aa_readonly.err" "read-only"
+cmp -s "$OUT/readonly.png" "$OUT/p.png" || { echo "FAIL aa_readonly: the file was changed"; fail=1; }
+chmod 644 "$OUT/readonly.png"
+
 # APNG in -> APNG out with every frame (the 3-frame seed of the fuzz corpus).
 check apng 0 "$SSFX" aa -m ddaa1 "$SRC/fuzz/corpus/apng/three_frames.png" -o "$OUT/anim.png"
 python3 - "$OUT/anim.png" <<'PY' || { echo "FAIL apng: output is not a 3-frame APNG"; fail=1; }

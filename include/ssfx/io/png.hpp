@@ -27,13 +27,23 @@ namespace ssfx::io {
 
 // ---- whole files --------------------------------------------------------------------
 std::vector<std::uint8_t> readFile(const std::string& path);
-//! Writes to a temporary file in the same directory and renames it over `path`, so
-//! `path` is never left half-written (an existing file stays intact on failure).
+//! Writes through an AtomicFile (below): `path` is never left half-written, an existing file
+//! stays intact on failure, links are followed, devices and FIFOs written into, "-" is stdout.
 void writeFileAtomic(const std::string& path, std::span<const std::uint8_t> bytes);
 
 //! An output written piece by piece with the same guarantee: the pieces go to a temporary
 //! file beside `path`, commit() syncs it and renames it over `path`; destroyed without a
-//! commit (an error on the way), it removes the temporary and `path` is untouched.
+//! commit (an error on the way), it removes the temporary and `path` is untouched. What
+//! `path` names decides how:
+//!  - a regular file (or none yet): replaced atomically; an existing file keeps its mode, a
+//!    new one gets 0666 less the umask; a read-only one (no write bit, or not writable by
+//!    us) is refused with an ssfx::Error and left alone;
+//!  - a symbolic link: followed, and its target replaced in the target's directory (the
+//!    link stays a link);
+//!  - a device, FIFO or socket: written into directly (never replaced by a regular file);
+//!  - "-": standard output.
+//! The temporary is named .ssfx-XXXXXXXX.tmp (any name that fits the directory fits it) and
+//! is removed on SIGINT and SIGTERM too (the signal then ends the program as before).
 class AtomicFile {
 public:
     explicit AtomicFile(const std::string& path);
@@ -45,8 +55,11 @@ public:
     const std::string& path() const { return path_; }
 
 private:
-    std::string path_, tmp_;
+    std::string path_, target_, tmp_;
     std::FILE* file_ = nullptr;
+    bool direct_ = false;    //!< written into (stdout, a device, a FIFO): no temporary
+    bool keepMode_ = false;  //!< an existing regular file's mode is given to the replacement
+    int slot_ = -1;          //!< the temporary's entry in the signal handler's table
 };
 
 // ---- still PNG ----------------------------------------------------------------------

@@ -1,0 +1,151 @@
+// What -o does to what it names (AtomicFile, png.hpp): regular files replaced atomically
+// with their mode kept, symbolic links followed, FIFOs written into, read-only files
+// refused, temporary names that fit, temporaries removed on SIGTERM. Every file here is one
+// the test makes (never the real /dev).
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <thread>
+
+#include "ssfx/core/error.hpp"
+#include "ssfx/io/png.hpp"
+
+using namespace ssfx;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path freshDir(const std::string& name) {
+    const fs::path d = fs::path(SSFX_TEST_OUT_DIR) / name;
+    fs::remove_all(d);
+    fs::create_directories(d);
+    return d;
+}
+
+std::span<const std::uint8_t> bytesOf(const std::string& s) {
+    return {reinterpret_cast<const std::uint8_t*>(s.data()), s.size()};
+}
+
+std::string contents(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+int temporaries(const fs::path& dir) {
+    int n = 0;
+    for (const auto& e : fs::directory_iterator(dir)) n += e.path().filename().string().rfind(".ssfx-", 0) == 0;
+    return n;
+}
+
+mode_t modeOf(const fs::path& p) {
+    struct stat st {};
+    ::stat(p.c_str(), &st);
+    return st.st_mode & 07777;
+}
+
+}  // namespace
+
+TEST(AtomicFile, AnExistingFileKeepsItsModeAndANewOneGetsTheUmasks) {
+    const fs::path d = freshDir("atomic_mode");
+    const fs::path f = d / "private.png";
+    io::writeFileAtomic(f.string(), bytesOf("old"));
+    ::chmod(f.c_str(), 0600);
+    io::writeFileAtomic(f.string(), bytesOf("new"));
+    EXPECT_EQ(contents(f), "new");
+    EXPECT_EQ(modeOf(f), mode_t(0600));
+    ::chmod(f.c_str(), 0640);
+    io::writeFileAtomic(f.string(), bytesOf("newer"));
+    EXPECT_EQ(modeOf(f), mode_t(0640));
+    const mode_t mask = ::umask(0);
+    ::umask(mask);
+    const fs::path g = d / "fresh.png";
+    io::writeFileAtomic(g.string(), bytesOf("x"));
+    EXPECT_EQ(modeOf(g), mode_t(0666 & ~mask));
+    EXPECT_EQ(temporaries(d), 0);
+}
+
+TEST(AtomicFile, ASymbolicLinkIsFollowedAndItsTargetReplaced) {
+    const fs::path d = freshDir("atomic_link");
+    fs::create_directories(d / "real");
+    const fs::path target = d / "real" / "out.png", link = d / "link.png";
+    io::writeFileAtomic(target.string(), bytesOf("old"));
+    fs::create_symlink("real/out.png", link);  // relative to the link's directory
+    io::writeFileAtomic(link.string(), bytesOf("new"));
+    EXPECT_TRUE(fs::is_symlink(fs::symlink_status(link)));
+    EXPECT_EQ(contents(target), "new");
+    // A dangling link creates its target.
+    const fs::path dangling = d / "dangling.png";
+    fs::create_symlink("real/later.png", dangling);
+    io::writeFileAtomic(dangling.string(), bytesOf("made"));
+    EXPECT_TRUE(fs::is_symlink(fs::symlink_status(dangling)));
+    EXPECT_EQ(contents(d / "real" / "later.png"), "made");
+    EXPECT_EQ(temporaries(d), 0);
+    EXPECT_EQ(temporaries(d / "real"), 0);
+}
+
+TEST(AtomicFile, AReadOnlyFileIsRefusedAndLeftAlone) {
+    const fs::path d = freshDir("atomic_readonly");
+    const fs::path f = d / "keep.png";
+    io::writeFileAtomic(f.string(), bytesOf("precious"));
+    ::chmod(f.c_str(), 0444);  // refused even for root, who may write anything
+    try {
+        io::writeFileAtomic(f.string(), bytesOf("overwritten"));
+        ADD_FAILURE() << "no error";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("read-only"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(contents(f), "precious");
+    EXPECT_EQ(temporaries(d), 0);
+}
+
+TEST(AtomicFile, ANameOfTheLongestLengthFits) {
+    const fs::path d = freshDir("atomic_long");
+    const fs::path f = d / (std::string(251, 'n') + ".png");  // 255 bytes: NAME_MAX
+    io::writeFileAtomic(f.string(), bytesOf("long"));
+    EXPECT_EQ(contents(f), "long");
+}
+
+TEST(AtomicFile, AFifoIsWrittenIntoNotReplaced) {
+    const fs::path d = freshDir("atomic_fifo");
+    const fs::path fifo = d / "pipe.png";
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0644), 0);
+    std::string got;
+    std::thread reader([&] { got = contents(fifo); });
+    io::writeFileAtomic(fifo.string(), bytesOf("through the pipe"));
+    reader.join();
+    EXPECT_EQ(got, "through the pipe");
+    EXPECT_TRUE(fs::is_fifo(fs::status(fifo)));
+    EXPECT_EQ(temporaries(d), 0);
+}
+
+TEST(AtomicFile, ADirectoryIsAnError) {
+    const fs::path d = freshDir("atomic_dir");
+    EXPECT_THROW(io::writeFileAtomic(d.string(), bytesOf("x")), Error);
+}
+
+TEST(AtomicFile, SigtermDuringAWriteLeavesNoTemporary) {
+    // A child process starts an output, writes part of it and is sent SIGTERM before the
+    // commit: the temporary goes, the old file stays, and the child dies by the signal.
+    const fs::path d = freshDir("atomic_signal");
+    const fs::path f = d / "out.png";
+    io::writeFileAtomic(f.string(), bytesOf("old"));
+    const pid_t pid = ::fork();
+    ASSERT_GE(pid, 0);
+    if (pid == 0) {
+        io::AtomicFile out(f.string());
+        out.write(bytesOf("half of it"));
+        ::kill(::getpid(), SIGTERM);
+        ::_exit(0);  // not reached
+    }
+    int status = 0;
+    ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+    EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM) << status;
+    EXPECT_EQ(temporaries(d), 0);
+    EXPECT_EQ(contents(f), "old");
+}
