@@ -73,7 +73,7 @@ void run(const AaOptions& o) {
     if (o.filtering == "exact") settings.filtering = Filtering::Exact;
     const Exec exec{o.threads};
 
-    const std::vector<std::uint8_t> bytes = io::readFile(o.input);
+    const std::vector<std::uint8_t> bytes = io::readFile(o.input, io::kMaxImageFileBytes, "PNG", io::kPngMagic);
     if (io::isApng(bytes)) {
         io::Animation anim = io::decodeApng(bytes, o.input);
         for (io::Frame& f : anim.frames) f.image = m.run(f.image.view(), settings, exec);

@@ -25,7 +25,7 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 std::string pathIn(const std::string& dir, const std::string& file) { return (fs::path(dir) / file).string(); }
 
 bool isStillPng(const std::string& path) {
-    const auto bytes = io::readFile(path);
+    const auto bytes = io::readFile(path, io::kMaxImageFileBytes, "PNG", io::kPngMagic);
     return !io::isApng(bytes);
 }
 

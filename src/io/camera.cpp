@@ -48,7 +48,7 @@ ao::Camera parseCameraJson(const std::string& text, const std::string& name) {
 }
 
 ao::Camera readCameraJson(const std::string& path) {
-    const auto bytes = readFile(path);
+    const auto bytes = readFile(path, kMaxJsonFileBytes, "JSON");
     return parseCameraJson(std::string(bytes.begin(), bytes.end()), path);
 }
 

@@ -100,7 +100,7 @@ ImageF decodeExr(std::span<const std::uint8_t> bytes, const std::string& name, c
 }
 
 ImageF readExr(const std::string& path, const std::string& channel, std::string* channelUsed) {
-    const auto bytes = readFile(path);
+    const auto bytes = readFile(path, kMaxExrFileBytes, "EXR", kExrMagic);
     return decodeExr(bytes, path, channel, channelUsed);
 }
 

@@ -18,13 +18,31 @@
 
 namespace ssfx::io {
 
-std::vector<std::uint8_t> readFile(const std::string& path) {
+std::vector<std::uint8_t> readFile(const std::string& path, std::uint64_t maxBytes, const char* kind,
+                                   std::span<const std::uint8_t> signature) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) throw Error(fmt::format("{}: is a directory, not a {} file", path, kind));
     std::FILE* f = std::fopen(path.c_str(), "rb");
     if (!f) throw Error(fmt::format("{}: cannot open for reading ({})", path, std::strerror(errno)));
     std::vector<std::uint8_t> bytes;
     std::uint8_t buf[1 << 16];
     std::size_t n;
-    while ((n = std::fread(buf, 1, sizeof buf, f)) > 0) bytes.insert(bytes.end(), buf, buf + n);
+    auto fail = [&](const std::string& message) {
+        std::fclose(f);
+        throw Error(message);
+    };
+    // The signature first: a wrong file is refused after its first few bytes.
+    if (!signature.empty()) {
+        n = std::fread(buf, 1, signature.size(), f);
+        if (n < signature.size() || std::memcmp(buf, signature.data(), signature.size()) != 0)
+            fail(fmt::format("{}: not a {} file (wrong signature)", path, kind));
+        bytes.assign(buf, buf + n);
+    }
+    while ((n = std::fread(buf, 1, sizeof buf, f)) > 0) {
+        if (bytes.size() + n > maxBytes)
+            fail(fmt::format("{}: more than {} bytes, the limit for a {} file", path, maxBytes, kind));
+        bytes.insert(bytes.end(), buf, buf + n);
+    }
     const bool failed = std::ferror(f) != 0;
     std::fclose(f);
     if (failed) throw Error(fmt::format("{}: read error", path));

@@ -141,7 +141,7 @@ std::vector<std::uint8_t> encodePng(ImageView<const Rgba8> image) {
 }
 
 ImageRgba8 readPng(const std::string& path) {
-    const auto bytes = readFile(path);
+    const auto bytes = readFile(path, kMaxImageFileBytes, "PNG", kPngMagic);
     return decodePng(bytes, path);
 }
 

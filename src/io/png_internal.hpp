@@ -6,9 +6,11 @@
 #include <string>
 #include <vector>
 
+#include "ssfx/io/png.hpp"
+
 namespace ssfx::io::detail {
 
-inline constexpr std::uint8_t kPngSignature[8] = {0x89, 'P', 'N', 'G', 0x0D, 0x0A, 0x1A, 0x0A};
+inline constexpr const auto& kPngSignature = ssfx::io::kPngMagic;
 
 struct Chunk {
     char type[5] = {};                   //!< four letters, NUL-terminated

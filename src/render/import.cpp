@@ -99,7 +99,7 @@ Scene importModel(const std::string& path, double scale) {
                     if (!fs::is_regular_file(file))
                         throw Error(fmt::format("model '{}': material '{}' names texture '{}', not found at {}", path,
                                                 mat.name, texName, file.string()));
-                    const auto bytes = io::readFile(file.string());
+                    const auto bytes = io::readFile(file.string(), io::kMaxImageFileBytes, "texture");
                     img = decodeTexture(bytes.data(), bytes.size(), file.string());
                 }
                 found = layerOf.emplace(texName, addTextureLayer(s.textures, img)).first;
@@ -140,7 +140,7 @@ Scene importModel(const std::string& path, double scale) {
 }
 
 Scene loadSceneFile(const std::string& path) {
-    const auto bytes = io::readFile(path);
+    const auto bytes = io::readFile(path, io::kMaxJsonFileBytes, "JSON");
     Json j;
     try {
         j = Json::parse(bytes.begin(), bytes.end());

@@ -2,6 +2,7 @@
 // with their mode kept, symbolic links followed, FIFOs written into, read-only files
 // refused, temporary names that fit, temporaries removed on SIGTERM. Every file here is one
 // the test makes (never the real /dev).
+#include <fcntl.h>
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -148,4 +149,49 @@ TEST(AtomicFile, SigtermDuringAWriteLeavesNoTemporary) {
     EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM) << status;
     EXPECT_EQ(temporaries(d), 0);
     EXPECT_EQ(contents(f), "old");
+}
+
+// ---- bounded reads -------------------------------------------------------------------
+
+TEST(BoundedRead, TheSignatureIsCheckedFirstAndTheCapStopsAnEndlessInput) {
+    // A FIFO fed without end by a writer thread (what /dev/zero does, without touching
+    // /dev): a PNG read refuses it after its first 8 bytes, a JSON read at its 16 MiB cap.
+    std::signal(SIGPIPE, SIG_IGN);
+    const fs::path d = freshDir("bounded_fifo");
+    for (const char* kind : {"png", "json"}) {
+        const fs::path fifo = d / (std::string("endless.") + kind);
+        ASSERT_EQ(::mkfifo(fifo.c_str(), 0644), 0);
+        std::thread writer([&] {
+            const int fd = ::open(fifo.c_str(), O_WRONLY);
+            if (fd < 0) return;
+            std::vector<char> zeros(1 << 16, ' ');
+            while (::write(fd, zeros.data(), zeros.size()) > 0) {
+            }
+            ::close(fd);  // the reader closed its end: EPIPE
+        });
+        try {
+            if (std::string(kind) == "png") io::readPng(fifo.string());
+            else io::readFile(fifo.string(), io::kMaxJsonFileBytes, "JSON");
+            ADD_FAILURE() << "no error for " << kind;
+        } catch (const Error& e) {
+            const std::string m = e.what();
+            EXPECT_NE(m.find(fifo.string()), std::string::npos) << m;
+            EXPECT_NE(m.find(std::string(kind) == "png" ? "wrong signature" : "16777216 bytes"), std::string::npos) << m;
+        }
+        writer.join();
+    }
+}
+
+TEST(BoundedRead, ADirectoryAndAFileAboveTheCapAreNamedAsSuch) {
+    const fs::path d = freshDir("bounded_files");
+    try {
+        io::readPng(d.string());
+        ADD_FAILURE() << "no error";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("is a directory"), std::string::npos) << e.what();
+    }
+    const fs::path f = d / "big.json";
+    io::writeFileAtomic(f.string(), bytesOf(std::string(1000, ' ')));
+    EXPECT_EQ(io::readFile(f.string(), 1000, "JSON").size(), 1000u);
+    EXPECT_THROW(io::readFile(f.string(), 999, "JSON"), Error);
 }

@@ -26,7 +26,26 @@
 namespace ssfx::io {
 
 // ---- whole files --------------------------------------------------------------------
-std::vector<std::uint8_t> readFile(const std::string& path);
+//! Caps on whole-file reads, derived from the pixel limit (kMaxPixels = 2^28), so that a
+//! wrong input (a device, an endless FIFO, a huge file) costs a bounded read and a clear
+//! error instead of all the memory:
+//!  - PNG/APNG and texture images: 5 bytes a pixel at the limit (RGBA even stored without
+//!    compression, plus filter bytes, zlib's block headers and the chunks): 1.25 GiB;
+//!  - EXR: 17 bytes a pixel (four float32 channels uncompressed, plus headers and the
+//!    offset tables): 4.25 GiB;
+//!  - JSON (cameras, scene files): 16 MiB.
+inline constexpr std::uint64_t kMaxImageFileBytes = 5 * std::uint64_t(kMaxPixels);
+inline constexpr std::uint64_t kMaxExrFileBytes = 17 * std::uint64_t(kMaxPixels);
+inline constexpr std::uint64_t kMaxJsonFileBytes = std::uint64_t(16) << 20;
+inline constexpr std::uint8_t kPngMagic[8] = {0x89, 'P', 'N', 'G', 0x0D, 0x0A, 0x1A, 0x0A};
+inline constexpr std::uint8_t kExrMagic[4] = {0x76, 0x2F, 0x31, 0x01};
+
+//! Reads a whole file of `kind` ("PNG", "EXR", "JSON", ...): its first bytes are checked
+//! against `signature` before anything else is read, and the read stops with an error
+//! past `maxBytes`. Errors name the file: a directory, a missing file, a wrong signature,
+//! a file above the cap.
+std::vector<std::uint8_t> readFile(const std::string& path, std::uint64_t maxBytes, const char* kind,
+                                   std::span<const std::uint8_t> signature = {});
 //! Writes through an AtomicFile (below): `path` is never left half-written, an existing file
 //! stays intact on failure, links are followed, devices and FIFOs written into, "-" is stdout.
 void writeFileAtomic(const std::string& path, std::span<const std::uint8_t> bytes);
