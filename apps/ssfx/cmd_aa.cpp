@@ -13,12 +13,20 @@
 namespace ssfx::cli {
 
 std::pair<int, int> parseSize(const std::string& text, const std::string& option, int maxSide) {
-    int w = 0, h = 0;
-    char x = 0, extra = 0;
-    if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || x != 'x' || w < 1 || h < 1 || w > maxSide ||
-        h > maxSide)
-        throw Error(fmt::format("{} '{}' is not WIDTHxHEIGHT (1..{} each)", option, text, maxSide));
-    return {w, h};
+    // WIDTHxHEIGHT, each a whole number in 1..maxSide: no sign, no overflow (4294967360x36
+    // is refused, not read as 64x36).
+    const auto bad = [&] { return Error(fmt::format("{} '{}' is not WIDTHxHEIGHT (1..{} each)", option, text, maxSide)); };
+    const auto x = text.find('x');
+    if (x == std::string::npos) throw bad();
+    auto side = [&](std::string_view s) {
+        std::int64_t v = 0;
+        const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+        if (s.empty() || s[0] == '-' || ec != std::errc() || end != s.data() + s.size() || v < 1 || v > maxSide)
+            throw bad();
+        return int(v);
+    };
+    const std::string_view t(text);
+    return {side(t.substr(0, x)), side(t.substr(x + 1))};
 }
 
 std::pair<std::string, double> parseParam(const std::string& text) {
@@ -29,7 +37,9 @@ std::pair<std::string, double> parseParam(const std::string& text) {
     if (value == "true") return {name, 1.0};
     if (value == "false") return {name, 0.0};
     double v = 0;
-    const auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), v);
+    // An explicit plus sign is a number too (from_chars takes only '-').
+    const std::size_t skip = value.size() > 1 && value[0] == '+' && value[1] != '-' && value[1] != '+' ? 1 : 0;
+    const auto [end, ec] = std::from_chars(value.data() + skip, value.data() + value.size(), v);
     if (ec != std::errc() || end != value.data() + value.size())
         throw Error(fmt::format("parameter {}: '{}' is not a number", name, value));
     return {name, v};

@@ -63,7 +63,11 @@ void run(const AoOptions& o) {
     int guard = 0;
     for (const auto& text : o.params) {
         const auto [name, value] = parseParam(text);
-        if (name == "guardBand") guard = rp.guardBand = int(value);
+        if (name == "guardBand") {
+            if (!(std::isfinite(value) && value == std::floor(value) && value >= 0 && value <= 4096))
+                throw Error(fmt::format("guardBand = {} is not an integer in [0, 4096]", value));
+            guard = rp.guardBand = int(value);
+        }
         if (o.method == "sao") ao::setParam(sp, name, value);
         else if (o.method == "alchemy") ao::setParam(ap, name, value);
         else if (name == "radius") rp.radius = float(value);

@@ -42,16 +42,16 @@ void validate(const AlchemyParams& p) {
 
 void setParam(AlchemyParams& p, const std::string& name, double v) {
     const auto f = float(v);
-    const int i = int(std::lround(v));
+    auto i = [&] { return detail::intParam("alchemy", name, v); };
     if (name == "radius") p.radius = f;
     else if (name == "sigma") p.sigma = f;
     else if (name == "beta") p.beta = f;
     else if (name == "epsilon") p.epsilon = f;
     else if (name == "k") p.k = f;
-    else if (name == "numSamples") p.numSamples = i;
-    else if (name == "numSpiralTurns") p.numSpiralTurns = i;
+    else if (name == "numSamples") p.numSamples = i();
+    else if (name == "numSpiralTurns") p.numSpiralTurns = i();
     else if (detail::setBlurParam("alchemy", p.blur, name, v)) return;
-    else if (name == "guardBand") p.guardBand = i;
+    else if (name == "guardBand") p.guardBand = i();
     else
         throw Error(fmt::format("alchemy: unknown parameter '{}' (radius, sigma, beta, epsilon, k, numSamples, "
                                 "numSpiralTurns, {}, guardBand)",

@@ -30,10 +30,18 @@ inline bool boolParam(const char* method, const std::string& name, double v) {
     return v != 0.0;
 }
 
+//! An integer parameter given as a number: a finite whole number in int's range, anything
+//! else (10.4, nan, 4294967297) is an error naming it, never rounded, truncated or wrapped.
+inline int intParam(const char* method, const std::string& name, double v) {
+    if (!(std::isfinite(v) && v == std::floor(v) && v >= -2147483648.0 && v <= 2147483647.0))
+        throw Error(fmt::format("{}: {} = {} is not an integer", method, name, v));
+    return int(v);
+}
+
 //! Sets a BlurParams field by name; false for a name that is not one of them.
 inline bool setBlurParam(const char* method, BlurParams& b, const std::string& name, double v) {
-    if (name == "blurRadius") b.blurRadius = int(std::lround(v));
-    else if (name == "blurStride") b.blurStride = int(std::lround(v));
+    if (name == "blurRadius") b.blurRadius = intParam(method, name, v);
+    else if (name == "blurStride") b.blurStride = intParam(method, name, v);
     else if (name == "blurSigma") b.blurSigma = float(v);
     else if (name == "edgeSharpness") b.edgeSharpness = float(v);
     else if (name == "blurReleasedWeights") b.blurReleasedWeights = boolParam(method, name, v);

@@ -125,20 +125,20 @@ float packZ(float z, float zMin) {
 
 void setParam(SaoParams& p, const std::string& name, double v) {
     const auto f = float(v);
-    const int i = int(std::lround(v));
+    auto i = [&] { return detail::intParam("sao", name, v); };
     auto flag = [&] { return detail::boolParam("sao", name, v); };
     if (name == "radius") p.radius = f;
     else if (name == "bias") p.bias = f;
     else if (name == "epsilon") p.epsilon = f;
     else if (name == "intensity") p.intensity = f;
-    else if (name == "numSamples") p.numSamples = i;
-    else if (name == "numSpiralTurns") p.numSpiralTurns = i;
-    else if (name == "logQ") p.logQ = i;
-    else if (name == "maxMip") p.maxMip = i;
+    else if (name == "numSamples") p.numSamples = i();
+    else if (name == "numSpiralTurns") p.numSpiralTurns = i();
+    else if (name == "logQ") p.logQ = i();
+    else if (name == "maxMip") p.maxMip = i();
     else if (name == "usePyramid") p.usePyramid = flag();
     else if (name == "quadThreshold") p.quadThreshold = f;
     else if (detail::setBlurParam("sao", p.blur, name, v)) return;
-    else if (name == "guardBand") p.guardBand = i;
+    else if (name == "guardBand") p.guardBand = i();
     else if (name == "packBlurInput") p.packBlurInput = flag();
     else if (name == "packZMin") p.packZMin = f;
     else if (name == "releasedPacking") p.releasedPacking = flag();

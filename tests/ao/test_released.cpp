@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "ssfx/ao/alchemy.hpp"
 #include "ssfx/ao/depth.hpp"
 #include "ssfx/ao/sao.hpp"
 #include "ssfx/core/error.hpp"
@@ -62,6 +63,13 @@ TEST(Released, ParametersByNameAndTheirChecks) {
                 p.releasedPacking);
     EXPECT_EQ(p.blur.blurEpsilon, 1e-4f);
     EXPECT_THROW(setParam(p, "spinInFloat", 0.5), Error);  // a flag is 0 or 1
+    // Integers are whole numbers in range: never rounded, truncated or wrapped.
+    for (double bad : {10.4, double(NAN), 4294967297.0, -0.5})
+        for (const char* name : {"numSamples", "guardBand", "blurRadius", "logQ"}) EXPECT_THROW(setParam(p, name, bad), Error) << name << " " << bad;
+    AlchemyParams ap;
+    EXPECT_THROW(setParam(ap, "numSamples", 12.5), Error);
+    setParam(ap, "numSamples", 13);
+    EXPECT_EQ(ap.numSamples, 13);
     SaoParams bad;
     bad.releasedPacking = true;  // needs packBlurInput
     EXPECT_THROW(validate(bad), Error);

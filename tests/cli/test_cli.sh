@@ -135,6 +135,13 @@ check ao_preset_bad 2 "$SSFX" ao --preset shipped --depth "$OUT/d.exr" --camera 
 contains ao_preset_bad "$OUT/ao_preset_bad.err" "paper, released"
 check ao_preset_alchemy 2 "$SSFX" ao -m alchemy --preset released --depth "$OUT/d.exr" --camera "$OUT/c.json" -o "$OUT/x.png"
 check ao_flag_bad 2 "$SSFX" ao --scene room --size 32x24 -p spinInFloat=2 -o "$OUT/x.png"
+# Numbers: integers are never wrapped, truncated or rounded; sizes do not overflow; "+1" is a number.
+for p in guardBand=4294967297 guardBand=nan numSamples=10.4 blurRadius=2.5; do
+  check "ao_int_$p" 2 "$SSFX" ao --scene room --size 32x24 -p "$p" -o "$OUT/x.png"
+  contains "ao_int_$p" "$OUT/ao_int_$p.err" "not an integer"
+done
+check ao_size_wrap 2 "$SSFX" ao --scene room --size 4294967360x36 -o "$OUT/x.png"
+check aa_plus 0 "$SSFX" aa -m ddaa2 -p strength=+1 "$OUT/scene/scene.png" -o "$OUT/plus.png"
 check ao_nocam 2 "$SSFX" ao --depth "$OUT/d.exr" -o "$OUT/x.png"
 check ao_truncated 2 "$SSFX" ao --depth "$OUT/trunc.png" --camera "$OUT/c.json" -o "$OUT/x.png"
 echo '{"fov_y_deg": 60, "zNear": -0.1}' > "$OUT/badcam.json"
