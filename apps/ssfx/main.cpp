@@ -8,6 +8,7 @@
 #include "commands.hpp"
 #include "ssfx/core/error.hpp"
 #include "ssfx/core/memory.hpp"
+#include "ssfx/io/png.hpp"
 
 int main(int argc, char** argv) {
     ssfx::tuneAllocatorForImages();  // frames and benchmark repetitions reuse their buffers
@@ -16,6 +17,12 @@ int main(int argc, char** argv) {
                  "ssfx"};
     app.require_subcommand(1);
     app.set_version_flag("--version", "ssfx 0.1.0");
+    // A batch user's lower pixel limit for every input (before the command: ssfx --max-pixels N aa ...).
+    app.add_option_function<std::int64_t>(
+           "--max-pixels", [](std::int64_t n) { ssfx::io::setMaxPixels(n); },
+           "Refuse input images larger than N pixels from their header (default and most: 268435456 = 2^28)")
+        ->trigger_on_parse();
+    app.fallthrough();  // ... or after it: ssfx aa --max-pixels N ...
     ssfx::cli::addAaCommand(app);
     ssfx::cli::addMethodsCommand(app);
     ssfx::cli::addBenchCommand(app);

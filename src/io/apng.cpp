@@ -213,7 +213,7 @@ struct ApngReader::Impl {
             throw Error(fmt::format("{}: corrupt PNG (first chunk is not a valid IHDR)", name));
         std::memcpy(ihdr, c.data.data(), 13);
         canvasW = readBe32(ihdr), canvasH = readBe32(ihdr + 4);
-        checkDimensions(canvasW, canvasH, name);
+        checkInputDimensions(canvasW, canvasH, name);
         // The chunks before the image data: acTL makes it an APNG; keep PLTE and tRNS.
         while (true) {
             readChunk(c);
@@ -396,9 +396,9 @@ namespace {
 // The whole-file readers: every frame in memory, so all frames together stay under the
 // pixel limit (checked from the header, before any frame is decoded).
 Animation readAll(ApngReader& r, const std::string& name) {
-    if (r.animated() && std::int64_t(r.frameCount()) * r.width() * r.height() > kMaxPixels)
+    if (r.animated() && std::int64_t(r.frameCount()) * r.width() * r.height() > maxPixels())
         throw Error(fmt::format("{}: APNG with {} frames of {}x{} exceeds the limit of {} pixels in all", name,
-                                r.frameCount(), r.width(), r.height(), kMaxPixels));
+                                r.frameCount(), r.width(), r.height(), maxPixels()));
     Animation anim;
     anim.numPlays = r.numPlays();
     while (const Frame* f = r.next()) anim.frames.push_back(Frame{ImageRgba8::copyOf(f->image.view()), f->delayNum, f->delayDen});

@@ -62,7 +62,7 @@ ImageF decodeExr(std::span<const std::uint8_t> bytes, const std::string& name, c
         Imf::InputFile file(stream);
         const Imath::Box2i dw = file.header().dataWindow();
         const std::int64_t w = std::int64_t(dw.max.x) - dw.min.x + 1, h = std::int64_t(dw.max.y) - dw.min.y + 1;
-        checkDimensions(w, h, name);
+        checkInputDimensions(w, h, name);
         const Imf::ChannelList& channels = file.header().channels();
         std::string pick = channel;
         if (pick.empty()) {

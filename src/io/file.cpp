@@ -18,6 +18,24 @@
 
 namespace ssfx::io {
 
+namespace {
+std::atomic<std::int64_t> gMaxPixels{kMaxPixels};
+}  // namespace
+
+void setMaxPixels(std::int64_t n) {
+    if (n < 1 || n > kMaxPixels) throw Error(fmt::format("--max-pixels {} is not in [1, {}]", n, kMaxPixels));
+    gMaxPixels.store(n);
+}
+
+std::int64_t maxPixels() { return gMaxPixels.load(); }
+
+void checkInputDimensions(std::int64_t width, std::int64_t height, const std::string& what) {
+    checkDimensions(width, height, what);
+    if (width * height > maxPixels())
+        throw Error(fmt::format("{}: size {}x{} exceeds the pixel limit of {} (--max-pixels)", what, width, height,
+                                maxPixels()));
+}
+
 std::vector<std::uint8_t> readFile(const std::string& path, std::uint64_t maxBytes, const char* kind,
                                    std::span<const std::uint8_t> signature) {
     std::error_code ec;

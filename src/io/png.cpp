@@ -109,7 +109,7 @@ ImageRgba8 decodePng(std::span<const std::uint8_t> bytes, const std::string& nam
     png_uint_32 w = 0, h = 0;
     if (!readHeader(png, info, &w, &h))
         throw Error(fmt::format("{}: corrupt or unsupported PNG ({})", name, state.message));
-    checkDimensions(w, h, name);
+    checkInputDimensions(w, h, name);
     ImageRgba8 image{int(w), int(h)};
     std::vector<png_bytep> rows(h);
     for (png_uint_32 y = 0; y < h; ++y) rows[y] = reinterpret_cast<png_bytep>(image.view().row(int(y)));

@@ -142,6 +142,13 @@ for p in guardBand=4294967297 guardBand=nan numSamples=10.4 blurRadius=2.5; do
 done
 check ao_size_wrap 2 "$SSFX" ao --scene room --size 4294967360x36 -o "$OUT/x.png"
 check aa_plus 0 "$SSFX" aa -m ddaa2 -p strength=+1 "$OUT/scene/scene.png" -o "$OUT/plus.png"
+# --max-pixels: a lower limit for batch work, before or after the command.
+check maxpix_ok 0 "$SSFX" --max-pixels 3072 aa -m blur "$OUT/scene/scene.png" -o "$OUT/mp.png"
+check maxpix_low 2 "$SSFX" --max-pixels 3071 aa -m blur "$OUT/scene/scene.png" -o "$OUT/mp2.png"
+contains maxpix_low "$OUT/maxpix_low.err" "pixel limit of 3071"
+[ -e "$OUT/mp2.png" ] && { echo "FAIL maxpix_low: wrote an output"; fail=1; }
+check maxpix_after 2 "$SSFX" aa --max-pixels 100 -m blur "$OUT/scene/scene.png" -o "$OUT/mp2.png"
+check maxpix_bad 2 "$SSFX" --max-pixels 0 aa -m blur "$OUT/scene/scene.png" -o "$OUT/mp2.png"
 check ao_nocam 2 "$SSFX" ao --depth "$OUT/d.exr" -o "$OUT/x.png"
 check ao_truncated 2 "$SSFX" ao --depth "$OUT/trunc.png" --camera "$OUT/c.json" -o "$OUT/x.png"
 echo '{"fov_y_deg": 60, "zNear": -0.1}' > "$OUT/badcam.json"

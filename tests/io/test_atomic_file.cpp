@@ -195,3 +195,21 @@ TEST(BoundedRead, ADirectoryAndAFileAboveTheCapAreNamedAsSuch) {
     EXPECT_EQ(io::readFile(f.string(), 1000, "JSON").size(), 1000u);
     EXPECT_THROW(io::readFile(f.string(), 999, "JSON"), Error);
 }
+
+TEST(PixelLimit, ALowerLimitRefusesFromTheHeaderAndIsRestored) {
+    // A 4x4 image under a 15-pixel limit: refused by every decoder, whole-file APNG included.
+    const auto png = io::encodePng(ImageRgba8(4, 4).view());
+    io::Animation a;
+    a.frames.assign(2, io::Frame{ImageRgba8(3, 3), 1, 25});  // 18 pixels in all, 9 per frame
+    const auto apng = io::encodeApng(a);
+    io::setMaxPixels(15);
+    EXPECT_THROW(io::decodePng(png, "four.png"), Error);
+    EXPECT_THROW(io::decodeApng(apng, "two.png"), Error);  // all frames together: 18 > 15
+    io::ApngReader streamed(apng, "two.png");              // a frame at a time: 9 <= 15
+    EXPECT_NE(streamed.next(), nullptr);
+    EXPECT_THROW(io::setMaxPixels(0), Error);
+    EXPECT_THROW(io::setMaxPixels(kMaxPixels + 1), Error);
+    io::setMaxPixels(kMaxPixels);
+    EXPECT_EQ(io::decodePng(png, "four.png").width(), 4);
+    EXPECT_EQ(io::maxPixels(), kMaxPixels);
+}

@@ -81,6 +81,17 @@ private:
     int slot_ = -1;          //!< the temporary's entry in the signal handler's table
 };
 
+// ---- the decoders' pixel limit --------------------------------------------------------
+//! Every decoder (PNG, each APNG frame and all of a whole-file APNG's frames together, EXR)
+//! refuses an image larger than this many pixels from its header, before allocating it.
+//! It is kMaxPixels (2^28) unless lowered, process-wide, for batch work (`ssfx --max-pixels
+//! N`): a 74-byte PNG claiming 16384x16384 then costs nothing instead of 1 GiB. Throws
+//! ssfx::Error unless 1 <= n <= kMaxPixels.
+void setMaxPixels(std::int64_t n);
+std::int64_t maxPixels();
+//! checkDimensions() and maxPixels(), with a message naming `what` and the limit.
+void checkInputDimensions(std::int64_t width, std::int64_t height, const std::string& what);
+
 // ---- still PNG ----------------------------------------------------------------------
 //! `name` is used in error messages (usually the file path).
 ImageRgba8 decodePng(std::span<const std::uint8_t> bytes, const std::string& name);
