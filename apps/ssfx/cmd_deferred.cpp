@@ -63,7 +63,7 @@ void run(const DeferredOptions& o) {
     if (o.reference) ref = deferred::referenceSupersampling(scene, g, p.shading, exec);
 
     namespace fs = std::filesystem;
-    fs::create_directories(o.out);
+    io::makeDirectories(o.out);
     const fs::path dir(o.out);
     const float n = float(o.m * o.m);
     ImageF samples(w, h);

@@ -65,7 +65,7 @@ void addQuality(CLI::App& eval) {
         for (const auto& text : o->params) q.settings.params.push_back(parseParam(text));
         q.source = o->source == "given" ? eval::OutputSource::Given : eval::OutputSource::Compute;
         q.outputsDir = o->outputs;
-        if (!q.outputsDir.empty()) std::filesystem::create_directories(q.outputsDir);
+        if (!q.outputsDir.empty()) io::makeDirectories(q.outputsDir);
         q.exec = Exec{o->threads};
         q.progress = progressLine;
         const eval::QualityTable t = eval::evaluateQuality(o->dir, q);
@@ -149,7 +149,7 @@ void addTemporal(CLI::App& eval) {
         // --out: every animation written frame by frame, committed together at the end.
         std::vector<std::unique_ptr<io::ApngWriter>> writers;
         if (!o->out.empty()) {
-            std::filesystem::create_directories(o->out);
+            io::makeDirectories(o->out);
             t.onFrame = [&](int frame, const std::vector<ImageRgba8>& outputs, const ImageRgba8& ref) {
                 if (frame == 0) {
                     auto open = [&](const std::string& suffix) {

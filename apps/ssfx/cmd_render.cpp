@@ -85,7 +85,7 @@ void run(const RenderOptions& o) {
     // Everything is rendered before anything is written.
     render::Renderer renderer({o.device, o.validation});
     if (o.aaSet) {
-        std::filesystem::create_directories(o.out);
+        io::makeDirectories(o.out);
         render::writeAaRenderSet(renderer, scene, view, w, h, o.out, scene.name);
         fmt::print("{}: {}.png, {}x2.png, {}x4.png, {}x8.png -> {}\n", scene.name, scene.name, scene.name, scene.name,
                    scene.name, o.out);
@@ -97,7 +97,7 @@ void run(const RenderOptions& o) {
     if (o.gbuffer > 0) gbuffer = renderer.renderGBuffer(scene, view, w, h, o.gbuffer);
     const ImageF z = ao::depthToZ(depth.depth.view(), depth.camera.camera);
 
-    std::filesystem::create_directories(o.out);
+    io::makeDirectories(o.out);
     const std::filesystem::path dir(o.out);
     io::writeExr((dir / "depth.exr").string(), depth.depth.view(), "Z");
     io::writeExr((dir / "z.exr").string(), z.view(), "Z");

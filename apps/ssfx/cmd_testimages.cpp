@@ -31,7 +31,7 @@ void addTestimagesCommand(CLI::App& app) {
         std::vector<std::string> names = o->names;
         if (names.empty())
             for (const auto& t : eval::testImages()) names.emplace_back(t.name);
-        std::filesystem::create_directories(o->out);
+        io::makeDirectories(o->out);
         for (const auto& name : names) {
             const eval::TestImageInfo& info = eval::testImageByName(name);
             for (int scale : o->scales) {

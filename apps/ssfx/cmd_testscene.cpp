@@ -21,7 +21,7 @@ void addTestsceneCommand(CLI::App& app) {
     cmd->add_option("--width", o->width, "Width at 1x (default 1920)")->check(CLI::Range(1, 8192));
     cmd->add_option("--height", o->height, "Height at 1x (default 1080)")->check(CLI::Range(1, 8192));
     cmd->callback([o] {
-        std::filesystem::create_directories(o->out);
+        io::makeDirectories(o->out);
         for (int scale : {1, 2, 4}) {
             const std::string name = scale == 1 ? "scene.png" : fmt::format("scenex{}.png", scale);
             io::writePng((std::filesystem::path(o->out) / name).string(),

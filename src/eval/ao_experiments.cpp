@@ -237,7 +237,7 @@ ZPrecision zPrecisionExperiment() {
 std::string runAoExperiments(const AoExperimentOptions& o) {
     if (o.outDir.empty()) throw Error("eval ao: no output directory");
     const fs::path out(o.outDir);
-    for (const char* sub : {"images", "plots", "data"}) fs::create_directories(out / sub);
+    for (const char* sub : {"images", "plots", "data"}) io::makeDirectories((out / sub).string());
     auto say = [&](const std::string& s) {
         if (o.progress) o.progress(s);
     };

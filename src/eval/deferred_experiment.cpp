@@ -42,8 +42,8 @@ std::string runDeferredExperiment(const DeferredExperimentOptions& o) {
     };
     deferred::validate(o.params);
     const fs::path out(o.outDir);
-    fs::create_directories(out / "images");
-    fs::create_directories(out / "data");
+    io::makeDirectories((out / "images").string());
+    io::makeDirectories((out / "data").string());
     const int w = o.quick ? 256 : o.width, h = o.quick ? 192 : o.height, reps = o.quick ? 1 : std::max(1, o.repetitions);
     const render::Scene scene = render::loadScene(o.scene);
     const render::View& view = scene.view(o.view);

@@ -183,7 +183,7 @@ void writeReport(const ReportOptions& o) {
         if (o.progress) o.progress(s);
     };
     const fs::path out(o.outDir);
-    for (const char* sub : {"images", "anim", "plots", "data", "methods"}) fs::create_directories(out / sub);
+    for (const char* sub : {"images", "anim", "plots", "data", "methods"}) io::makeDirectories((out / sub).string());
     const std::vector<std::string> methodIds = o.methods.empty() ? paperMethodOrder() : o.methods;
     for (const auto& id : methodIds) methodById(id);
     nlohmann::ordered_json all;

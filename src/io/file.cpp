@@ -234,6 +234,15 @@ void AtomicFile::commit() {
     }
 }
 
+void makeDirectories(const std::string& dir) {
+    std::error_code ec;
+    const fs::path p(dir);
+    if (fs::exists(p, ec) && !fs::is_directory(p, ec))
+        throw Error(fmt::format("{}: exists and is not a directory (an output directory was expected)", dir));
+    fs::create_directories(p, ec);
+    if (ec) throw Error(fmt::format("{}: cannot create the output directory ({})", dir, ec.message()));
+}
+
 void writeFileAtomic(const std::string& path, std::span<const std::uint8_t> bytes) {
     AtomicFile f(path);
     f.write(bytes);

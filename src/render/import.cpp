@@ -139,6 +139,10 @@ Scene importModel(const std::string& path, double scale) {
     return s;
 }
 
+namespace {
+Scene sceneFromJson(const Json& j, const std::string& path);
+}  // namespace
+
 Scene loadSceneFile(const std::string& path) {
     const auto bytes = io::readFile(path, io::kMaxJsonFileBytes, "JSON");
     Json j;
@@ -147,6 +151,38 @@ Scene loadSceneFile(const std::string& path) {
     } catch (const std::exception& e) {
         throw Error(fmt::format("scene file '{}': not valid JSON ({})", path, e.what()));
     }
+    // Every value is read through the checked getters below, which name the file and the
+    // field as a JSON pointer; a library type error would still not escape raw.
+    try {
+        return sceneFromJson(j, path);
+    } catch (const nlohmann::json::exception& e) {
+        throw Error(fmt::format("scene file '{}': a value of the wrong type ({})", path, e.what()));
+    }
+}
+
+namespace {
+
+// A number at `pointer` (a JSON pointer for the message), or `fallback` where it is absent.
+double numberAt(const Json& o, const char* key, double fallback, const std::string& where, const std::string& pointer) {
+    if (!o.contains(key)) return fallback;
+    if (!o[key].is_number()) throw Error(fmt::format("{}: {} must be a number", where, pointer));
+    return o[key].get<double>();
+}
+
+// Unknown keys of a view or a light are errors, as at the top level (docs/render.md).
+void onlyKeys(const Json& o, std::initializer_list<const char*> known, const std::string& what) {
+    for (auto it = o.begin(); it != o.end(); ++it) {
+        bool ok = false;
+        for (const char* k : known) ok = ok || it.key() == k;
+        if (!ok) {
+            std::string list;
+            for (const char* k : known) list += (list.empty() ? "" : ", ") + std::string(k);
+            throw Error(fmt::format("{}: unknown key '{}' ({})", what, it.key(), list));
+        }
+    }
+}
+
+Scene sceneFromJson(const Json& j, const std::string& path) {
     if (!j.is_object()) throw Error(fmt::format("scene file '{}': must be a JSON object", path));
     for (auto it = j.begin(); it != j.end(); ++it)
         if (it.key() != "model" && it.key() != "scale" && it.key() != "ambient" && it.key() != "background" &&
@@ -155,7 +191,7 @@ Scene loadSceneFile(const std::string& path) {
                                     path, it.key()));
     if (!j.contains("model") || !j["model"].is_string())
         throw Error(fmt::format("scene file '{}': 'model' (a path) is required", path));
-    const double scale = j.value("scale", 1.0);
+    const double scale = numberAt(j, "scale", 1.0, fmt::format("scene file '{}'", path), "/scale");
     fs::path model = j["model"].get<std::string>();
     if (model.is_relative()) model = fs::path(path).parent_path() / model;
     Scene s = importModel(model.string(), scale);
@@ -166,7 +202,12 @@ Scene loadSceneFile(const std::string& path) {
     if (j.contains("lights")) {
         s.lights.clear();
         if (!j["lights"].is_array()) throw Error(where + ": 'lights' must be an array");
-        for (const auto& l : j["lights"]) {
+        for (std::size_t li = 0; li < j["lights"].size(); ++li) {
+            const Json& l = j["lights"][li];
+            if (!l.is_object()) throw Error(fmt::format("{}: /lights/{} must be an object", where, li));
+            onlyKeys(l, {"type", "direction", "position", "color"}, fmt::format("{}: /lights/{}", where, li));
+            if (l.contains("type") && !l["type"].is_string())
+                throw Error(fmt::format("{}: /lights/{}/type must be a string", where, li));
             const std::string type = l.value("type", "");
             Light light;
             if (type == "directional") {
@@ -190,17 +231,23 @@ Scene loadSceneFile(const std::string& path) {
         for (auto it = j["views"].begin(); it != j["views"].end(); ++it) {
             const Json& v = it.value();
             const std::string what = fmt::format("{}: view '{}'", where, it.key());
+            if (!v.is_object()) throw Error(fmt::format("{}: /views/{} must be an object", where, it.key()));
+            onlyKeys(v, {"eye", "target", "up", "fov_y_deg", "z_near", "z_far"}, what);
             View view;
             view.eye = glm::dvec3(vec3Of(v.value("eye", Json()), what + " 'eye'"));
             view.target = glm::dvec3(vec3Of(v.value("target", Json()), what + " 'target'"));
             if (v.contains("up")) view.up = glm::dvec3(vec3Of(v["up"], what + " 'up'"));
-            view.fovYDeg = v.value("fov_y_deg", view.fovYDeg);
-            view.zNear = v.value("z_near", view.zNear);
-            if (v.contains("z_far") && !v["z_far"].is_null()) view.zFar = v["z_far"].get<double>();
+            const std::string at = "/views/" + it.key() + "/";
+            view.fovYDeg = numberAt(v, "fov_y_deg", view.fovYDeg, where, at + "fov_y_deg");
+            view.zNear = numberAt(v, "z_near", view.zNear, where, at + "z_near");
+            if (v.contains("z_far") && !v["z_far"].is_null())
+                view.zFar = numberAt(v, "z_far", view.zFar, where, at + "z_far (a number, or null for infinity)");
             s.views.emplace_back(it.key(), view);
         }
     }
     return s;
 }
+
+}  // namespace
 
 }  // namespace ssfx::render

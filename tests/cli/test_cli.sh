@@ -142,6 +142,12 @@ for p in guardBand=4294967297 guardBand=nan numSamples=10.4 blurRadius=2.5; do
 done
 check ao_size_wrap 2 "$SSFX" ao --scene room --size 4294967360x36 -o "$OUT/x.png"
 check aa_plus 0 "$SSFX" aa -m ddaa2 -p strength=+1 "$OUT/scene/scene.png" -o "$OUT/plus.png"
+# --out naming an existing file: a user's mistake, exit 2 with the name.
+touch "$OUT/a_file"
+for c in "testscene --out" "testimages --images lines --scales 1 --out" "eval ao --quick --out"; do
+  check "outdir_${c%% *}" 2 "$SSFX" $c "$OUT/a_file"
+  contains "outdir_${c%% *}" "$OUT/outdir_${c%% *}.err" "a_file"
+done
 # --max-pixels: a lower limit for batch work, before or after the command.
 check maxpix_ok 0 "$SSFX" --max-pixels 3072 aa -m blur "$OUT/scene/scene.png" -o "$OUT/mp.png"
 check maxpix_low 2 "$SSFX" --max-pixels 3071 aa -m blur "$OUT/scene/scene.png" -o "$OUT/mp2.png"

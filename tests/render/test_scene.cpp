@@ -216,6 +216,26 @@ TEST(RenderImport, BadInputsGiveClearErrors) {
     EXPECT_NE(message([&] { render::loadScene((dir / "s4.json").string()); }).find("spot"), std::string::npos);
     writeText(dir / "s5.json", "{not json");
     EXPECT_NE(message([&] { render::loadScene((dir / "s5.json").string()); }).find("not valid JSON"), std::string::npos);
+    // Wrong JSON types: the file and the field (a JSON pointer), never a raw library message;
+    // unknown keys inside views and lights are errors as at the top level.
+    const std::pair<const char*, const char*> typeErrors[] = {
+        {R"({"model": "tri.obj", "scale": "big"})", "/scale"},
+        {R"({"model": "tri.obj", "lights": [5]})", "/lights/0"},
+        {R"({"model": "tri.obj", "views": {"v": 5}})", "/views/v"},
+        {R"({"model": "tri.obj", "views": {"v": {"eye": [0, 0, 5], "target": [0, 0, 0], "fov_y_deg": "60"}}})",
+         "/views/v/fov_y_deg"},
+        {R"({"model": "tri.obj", "views": {"v": {"eye": [0, 0, 5], "target": [0, 0, 0], "z_far": "inf"}}})",
+         "/views/v/z_far"},
+        {R"({"model": "tri.obj", "views": {"v": {"eye": [0, 0, 5], "target": [0, 0, 0], "fov": 60}}})", "unknown key 'fov'"},
+        {R"({"model": "tri.obj", "lights": [{"type": "point", "position": [0, 1, 0], "power": 3}]})", "unknown key 'power'"},
+    };
+    for (const auto& [text, field] : typeErrors) {
+        writeText(dir / "s6.json", text);
+        const std::string m = message([&] { render::loadScene((dir / "s6.json").string()); });
+        EXPECT_NE(m.find("s6.json"), std::string::npos) << m;
+        EXPECT_NE(m.find(field), std::string::npos) << text << " -> " << m;
+        EXPECT_EQ(m.find("[json.exception"), std::string::npos) << m;
+    }
 }
 
 TEST(RenderImport, SharedModelsLoad) {

@@ -50,6 +50,10 @@ std::vector<std::uint8_t> readFile(const std::string& path, std::uint64_t maxByt
 //! stays intact on failure, links are followed, devices and FIFOs written into, "-" is stdout.
 void writeFileAtomic(const std::string& path, std::span<const std::uint8_t> bytes);
 
+//! Creates the output directory `dir` (and its parents) unless it exists; an ssfx::Error
+//! naming it when it is a file or cannot be created (a user's mistake: exit 2, not 1).
+void makeDirectories(const std::string& dir);
+
 //! An output written piece by piece with the same guarantee: the pieces go to a temporary
 //! file beside `path`, commit() syncs it and renames it over `path`; destroyed without a
 //! commit (an error on the way), it removes the temporary and `path` is untouched. What
