@@ -86,11 +86,21 @@ void run(const AaOptions& o) {
     const std::vector<std::uint8_t> bytes = io::readFile(o.input, io::kMaxImageFileBytes, "PNG", io::kPngMagic);
     if (io::isApng(bytes)) {
         io::Animation anim = io::decodeApng(bytes, o.input);
-        for (io::Frame& f : anim.frames) f.image = m.run(f.image.view(), settings, exec);
+        for (std::size_t i = 0; i < anim.frames.size(); ++i) try {
+                anim.frames[i].image = m.run(anim.frames[i].image.view(), settings, exec);
+            } catch (const Error& e) {  // e.g. a resolve's size rule: say which file and frame
+                throw Error(fmt::format("{} (frame {}): {}", o.input, i, e.what()));
+            }
         io::writeApng(o.output, anim);
     } else {
         const ImageRgba8 in = io::decodePng(bytes, o.input);
-        io::writePng(o.output, m.run(in.view(), settings, exec).view());
+        ImageRgba8 out;
+        try {
+            out = m.run(in.view(), settings, exec);
+        } catch (const Error& e) {
+            throw Error(fmt::format("{}: {}", o.input, e.what()));
+        }
+        io::writePng(o.output, out.view());
     }
 }
 

@@ -97,6 +97,11 @@ void run(const AoOptions& o) {
         if (o.camera.empty()) throw Error("--depth needs --camera FILE (JSON: fov_y_deg, z_near, z_far)");
         cam = io::readCameraJson(o.camera);
         depth = io::readExr(o.depth);
+        try {  // the depth's values, checked here so that a bad one is named with its file
+            ao::depthToZ(depth.view(), cam, exec);
+        } catch (const Error& e) {
+            throw Error(fmt::format("{}: {}", o.depth, e.what()));
+        }
     } else {
         scene = eval::analyticSceneByName(o.scene);
         const auto [w, h] = parseSize(o.size);

@@ -4,6 +4,8 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <cstring>
+#include <utility>
 #include <nlohmann/json.hpp>
 #include <numbers>
 
@@ -43,7 +45,22 @@ ao::Camera parseCameraJson(const std::string& text, const std::string& name) {
                                     "guard, projection, view are ignored)", name, key));
         }
     }
-    ao::projection(c, 1, 1);  // validates, with a message naming the field
+    // Every camera key is required: defaults would silently describe another camera.
+    for (const char* key : {"fov_y_deg", "z_near", "z_far"})
+        if (!j.contains(key))
+            throw Error(fmt::format("{}: missing key '{}' (a camera needs fov_y_deg, z_near and z_far; z_far null for "
+                                    "an infinite far plane)",
+                                    name, key));
+    try {
+        ao::projection(c, 1, 1);  // validates
+    } catch (const Error& e) {
+        // The library names the fields as the struct does (zNear); the file has z_near.
+        std::string m = e.what();
+        for (const auto& [from, to] : {std::pair{"zNear", "z_near"}, {"zFar", "z_far"}, {"fovY", "fov_y_deg"}})
+            for (std::size_t at; (at = m.find(from)) != std::string::npos;) m.replace(at, std::strlen(from), to);
+        if (m.rfind("camera: ", 0) == 0) m = m.substr(8);
+        throw Error(fmt::format("{}: {}", name, m));
+    }
     return c;
 }
 

@@ -69,7 +69,9 @@ Scene importModel(const std::string& path, double scale) {
         path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_GenSmoothNormals |
                   aiProcess_PreTransformVertices | aiProcess_FlipUVs | aiProcess_SortByPType | aiProcess_ValidateDataStructure);
     if (!ai || (ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !ai->mRootNode)
-        throw Error(fmt::format("model '{}': cannot import ({})", path, importer.GetErrorString()));
+        throw Error(fmt::format("model '{}': cannot import ({})", path,
+                                *importer.GetErrorString() ? importer.GetErrorString()
+                                                           : "no complete scene: no meshes, or an unsupported file"));
     Scene s;
     s.name = fs::path(path).stem().string();
     const fs::path dir = fs::path(path).parent_path();

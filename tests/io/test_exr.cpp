@@ -52,9 +52,22 @@ TEST(Camera, JsonRoundTripAndErrors) {
     EXPECT_NEAR(back.fovY, 0.8, 1e-9);
     EXPECT_EQ(back.zNear, -0.25);
     EXPECT_EQ(back.zFar, -300);
-    EXPECT_TRUE(std::isinf(io::parseCameraJson(R"({"z_far": null})", "c").zFar));
-    EXPECT_TRUE(std::isinf(io::parseCameraJson(R"({"z_far": "-inf"})", "c").zFar));
+    EXPECT_TRUE(std::isinf(io::parseCameraJson(R"({"fov_y_deg": 60, "z_near": -0.1, "z_far": null})", "c").zFar));
+    EXPECT_TRUE(std::isinf(io::parseCameraJson(R"({"fov_y_deg": 60, "z_near": -0.1, "z_far": "-inf"})", "c").zFar));
     for (const char* bad : {"[1]", "{", R"({"fov": 60})", R"({"z_near": 0.1})", R"({"fov_y_deg": 200})",
-                            R"({"z_near": "a"})", R"({"z_near": -1, "z_far": -0.5})"})
+                            R"({"z_near": "a"})", R"({"z_near": -1, "z_far": -0.5})", "{}",
+                            R"({"fov_y_deg": 60, "z_near": -0.1})"})
         EXPECT_THROW(io::parseCameraJson(bad, "c.json"), Error) << bad;
+    // Messages name the file and the key as the file spells it.
+    auto message = [](const char* text) {
+        try {
+            io::parseCameraJson(text, "cam.json");
+        } catch (const Error& e) {
+            return std::string(e.what());
+        }
+        return std::string("(no error)");
+    };
+    EXPECT_NE(message("{}").find("cam.json: missing key 'fov_y_deg'"), std::string::npos) << message("{}");
+    const std::string near = message(R"({"fov_y_deg": 60, "z_near": 0.1, "z_far": null})");
+    EXPECT_NE(near.find("cam.json: z_near"), std::string::npos) << near;
 }
