@@ -53,10 +53,51 @@ private:
     std::uint64_t pos_ = 0;
 };
 
+// The header's attributes checked against the file before OpenEXR reads them (OpenEXR
+// allocates what an attribute's size field claims: 5 KB of file could ask for 2 GiB). The
+// layout (OpenEXR file layout, "Header"): magic, version (bit 12: multi-part), then per
+// header a list of attributes, name\0 type\0 int32 size, value, ended by an empty name;
+// a multi-part file has headers until an empty one.
+void checkHeaderSizes(std::span<const std::uint8_t> b, const std::string& name) {
+    if (b.size() < 8 || std::memcmp(b.data(), kExrMagic, 4) != 0)
+        throw Error(fmt::format("{}: not an EXR file (wrong signature)", name));
+    const bool multiPart = (b[5] & 0x10) != 0;  // version field bit 12
+    std::size_t pos = 8;
+    auto string = [&](const char* what) {
+        const std::size_t start = pos;
+        while (pos < b.size() && b[pos] != 0) ++pos;
+        if (pos >= b.size()) throw Error(fmt::format("{}: file is truncated (in the header's {})", name, what));
+        return std::string(reinterpret_cast<const char*>(&b[start]), pos++ - start);
+    };
+    for (int header = 0;; ++header) {
+        if (pos >= b.size()) throw Error(fmt::format("{}: file is truncated (in the header)", name));
+        if (b[pos] == 0) {  // an empty header ends a multi-part file's list
+            if (multiPart && header > 0) return;
+            throw Error(fmt::format("{}: corrupt EXR (an empty header)", name));
+        }
+        while (true) {
+            const std::string attr = string("attribute name");
+            if (attr.empty()) break;
+            const std::string type = string("attribute type");
+            if (b.size() - pos < 4) throw Error(fmt::format("{}: file is truncated (in attribute '{}')", name, attr));
+            const std::int32_t size = std::int32_t(std::uint32_t(b[pos]) | std::uint32_t(b[pos + 1]) << 8 |
+                                                   std::uint32_t(b[pos + 2]) << 16 | std::uint32_t(b[pos + 3]) << 24);
+            pos += 4;
+            if (size < 0 || std::uint64_t(size) > b.size() - pos)
+                throw Error(fmt::format("{}: header attribute '{}' ({}) claims {} bytes, more than the {} left in the "
+                                        "file",
+                                        name, attr, type, size, b.size() - pos));
+            pos += std::size_t(size);
+        }
+        if (!multiPart) return;
+    }
+}
+
 }  // namespace
 
 ImageF decodeExr(std::span<const std::uint8_t> bytes, const std::string& name, const std::string& channel,
                  std::string* channelUsed) {
+    checkHeaderSizes(bytes, name);
     try {
         MemoryIStream stream(bytes, name);
         Imf::InputFile file(stream);

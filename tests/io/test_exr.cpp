@@ -1,6 +1,8 @@
 // EXR and camera JSON files.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 
 #include "ssfx/io/camera.hpp"
@@ -41,6 +43,30 @@ TEST(Exr, TruncatedAndCorruptFilesAreErrorsNamingTheFile) {
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find("flip.exr"), std::string::npos);
     }
+}
+
+TEST(Exr, AHeaderAttributeClaimingMoreThanTheFileIsRefusedBeforeOpenExrAllocates) {
+    // A valid file with one attribute's size field patched to 2 GiB - 1: OpenEXR would
+    // allocate that before finding the file truncated; the header check refuses it first.
+    ImageF img(8, 8, 0.5f);
+    auto bytes = io::encodeExr(img.view(), "Z");
+    const std::string attr = "compression";
+    const auto at = std::search(bytes.begin(), bytes.end(), attr.begin(), attr.end());
+    ASSERT_NE(at, bytes.end());
+    std::size_t p = std::size_t(at - bytes.begin()) + attr.size() + 1;  // past "compression\0"
+    while (bytes[p] != 0) ++p;                                             // past the type name
+    ++p;
+    for (int i = 0; i < 4; ++i) bytes[p + std::size_t(i)] = i == 3 ? 0x7F : 0xFF;  // int32 0x7FFFFFFF
+    try {
+        io::decodeExr(bytes, "claim.exr");
+        ADD_FAILURE() << "no error";
+    } catch (const Error& e) {
+        const std::string m = e.what();
+        EXPECT_NE(m.find("claim.exr"), std::string::npos) << m;
+        EXPECT_NE(m.find("'compression'"), std::string::npos) << m;
+        EXPECT_NE(m.find("2147483647 bytes"), std::string::npos) << m;
+    }
+    EXPECT_EQ(io::decodeExr(io::encodeExr(img.view(), "Z"), "ok.exr"), img);  // an intact file still reads
 }
 
 TEST(Camera, JsonRoundTripAndErrors) {
