@@ -47,8 +47,24 @@ void writeAo(const std::string& path, const ImageF& a) {
     }
 }
 
-void run(const AoOptions& o) {
+void run(const AoOptions& o, const CLI::App& cmd) {
     if (o.output.empty() && o.saveDepth.empty()) throw Error("no output file given (use -o FILE)");
+    // Options that do not apply to the input chosen are refused, not ignored.
+    const bool analyticScene = o.scene == "corner" || o.scene == "room";
+    if (!o.depth.empty())
+        for (const char* opt : {"--size", "--fov", "--view", "--device"})
+            if (cmd.count(opt)) throw Error(fmt::format("{} does not apply to --depth (the depth file has its size and camera)", opt));
+    if (analyticScene)
+        for (const char* opt : {"--view", "--device"})
+            if (cmd.count(opt)) throw Error(fmt::format("{} does not apply to the analytic scene '{}'", opt, o.scene));
+    if (!o.scene.empty() && !analyticScene && cmd.count("--fov"))
+        throw Error("--fov does not apply to a rendered scene (its views have their own)");
+    if (cmd.count("--rays") && o.method != "raytraced") throw Error("--rays applies to -m raytraced only");
+    if (!o.output.empty()) {  // the output format, before any work
+        const std::string ext = std::filesystem::path(o.output).extension().string();
+        if (ext != ".png" && ext != ".exr")
+            throw Error(fmt::format("output '{}': use a .png (8-bit) or .exr (float) file name", o.output));
+    }
     if (o.method != "sao" && o.method != "alchemy" && o.method != "raytraced")
         throw Error(fmt::format("unknown AO method '{}' (sao, alchemy, raytraced)", o.method));
     if (o.scene.empty() == o.depth.empty()) throw Error("give either --depth FILE (with --camera) or --scene NAME");
@@ -73,6 +89,8 @@ void run(const AoOptions& o) {
         else if (name == "radius") rp.radius = float(value);
         else if (name != "guardBand") throw Error(fmt::format("raytraced: unknown parameter '{}' (radius, guardBand)", name));
     }
+    if (o.method == "sao") ao::validate(sp);  // every parameter before any work
+    if (o.method == "alchemy") ao::validate(ap);
     ao::Camera cam;
     ImageF depth;
     std::optional<eval::AnalyticScene> scene;
@@ -95,8 +113,18 @@ void run(const AoOptions& o) {
     } else if (!o.depth.empty()) {
         if (o.method == "raytraced") throw Error("raytraced needs the geometry: use --scene");
         if (o.camera.empty()) throw Error("--depth needs --camera FILE (JSON: fov_y_deg, z_near, z_far)");
-        cam = io::readCameraJson(o.camera);
+        io::CameraBuffer stated;
+        cam = io::readCameraJson(o.camera, &stated);
         depth = io::readExr(o.depth);
+        if (stated.stated) {  // the camera describes a buffer: it must be this one
+            if (depth.width() != stated.width + 2 * stated.guard || depth.height() != stated.height + 2 * stated.guard)
+                throw Error(fmt::format("{} is {}x{}, but {} describes {}x{} with a guard band of {} ({}x{} in all)",
+                                        o.depth, depth.width(), depth.height(), o.camera, stated.width, stated.height,
+                                        stated.guard, stated.width + 2 * stated.guard, stated.height + 2 * stated.guard));
+            if (guard != stated.guard)
+                throw Error(fmt::format("-p guardBand={} but {} has a guard band of {} (give -p guardBand={})", guard,
+                                        o.camera, stated.guard, stated.guard));
+        }
         try {  // the depth's values, checked here so that a bad one is named with its file
             ao::depthToZ(depth.view(), cam, exec);
         } catch (const Error& e) {
@@ -164,7 +192,7 @@ void addAoCommand(CLI::App& app) {
                 "  ssfx ao --preset released --depth d.exr --camera c.json -p guardBand=64 -o released.png\n"
                 "  ssfx ao -m raytraced --scene scenes/sponza.json --size 480x270 --rays 256 -o truth.exr\n"
                 "  ssfx ao -m alchemy --depth d.exr --camera c.json -p guardBand=64 -o alchemy.exr");
-    cmd->callback([o] { run(*o); });
+    cmd->callback([o, cmd] { run(*o, *cmd); });
 }
 
 }  // namespace ssfx::cli

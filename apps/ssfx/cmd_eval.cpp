@@ -284,6 +284,13 @@ void addReport(CLI::App& eval) {
     cmd->add_flag("--no-render", *noRender,
                   "Leave out what needs the Vulkan renderer: the atrium in the quality table, adaptive supersampling");
     cmd->callback([o, threads, scenes, noRender] {
+        // --reference must name the data, and is not silently dropped by --quick.
+        if (!o->referenceDir.empty() && !std::filesystem::is_directory(o->referenceDir))
+            throw Error(fmt::format("--reference {}: no such directory (the DDAA author's data, e.g. "
+                                    "../shared/reference/ppaa)",
+                                    o->referenceDir));
+        if (!o->referenceDir.empty() && o->quick)
+            throw Error("--reference with --quick: the quick report leaves the paper's rows out; drop one of them");
         if (!(scenes->size() == 1 && scenes->front() == "none")) o->renderedScenes = renderedAoScenes(*scenes);
 #ifdef SSFX_HAVE_RENDER
         // The atrium's nave, forward-shaded at 1x..8x, joins the quality table (like the paper's sponza).

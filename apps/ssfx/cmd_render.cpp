@@ -1,6 +1,8 @@
 // ssfx render: depth buffers, G-buffers and forward-shaded colour of a scene (Vulkan).
 #include <fmt/format.h>
 
+#include <cmath>
+
 #include <filesystem>
 #include <optional>
 
@@ -70,6 +72,7 @@ void run(const RenderOptions& o) {
     }
     if (o.out.empty()) throw Error("no output folder given (--out DIR)");
     render::View view = o.view.empty() ? scene.views.at(0).second : scene.view(o.view);
+    if (!(std::isfinite(o.near) && o.near >= 0)) throw Error(fmt::format("--near {}: a finite distance > 0 (m)", o.near));
     if (o.near > 0) view.zNear = o.near;
     if (!o.far.empty()) {
         if (o.far == "inf") {

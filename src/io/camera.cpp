@@ -13,7 +13,7 @@
 
 namespace ssfx::io {
 
-ao::Camera parseCameraJson(const std::string& text, const std::string& name) {
+ao::Camera parseCameraJson(const std::string& text, const std::string& name, CameraBuffer* buffer) {
     nlohmann::json j;
     try {
         j = nlohmann::json::parse(text);
@@ -38,7 +38,15 @@ ao::Camera parseCameraJson(const std::string& text, const std::string& name) {
                 c.zFar = -INFINITY;
             else
                 c.zFar = number();
-        } else if (key == "width" || key == "height" || key == "guard" || key == "projection" || key == "view") {
+        } else if (key == "width" || key == "height" || key == "guard") {
+            const double v = number();
+            if (!(v == std::floor(v) && v >= (key == "guard" ? 0 : 1) && v <= kMaxDimension))
+                throw Error(fmt::format("{}: '{}' = {} is not a whole number of pixels", name, key, v));
+            if (buffer) {
+                (key == "width" ? buffer->width : key == "height" ? buffer->height : buffer->guard) = int(v);
+                buffer->stated = true;
+            }
+        } else if (key == "projection" || key == "view") {
             // Written by `ssfx render` for other consumers; the AO passes derive all from the three above.
         } else {
             throw Error(fmt::format("{}: unknown key '{}' (known: fov_y_deg, z_near, z_far; width, height, "
@@ -64,9 +72,9 @@ ao::Camera parseCameraJson(const std::string& text, const std::string& name) {
     return c;
 }
 
-ao::Camera readCameraJson(const std::string& path) {
+ao::Camera readCameraJson(const std::string& path, CameraBuffer* buffer) {
     const auto bytes = readFile(path, kMaxJsonFileBytes, "JSON");
-    return parseCameraJson(std::string(bytes.begin(), bytes.end()), path);
+    return parseCameraJson(std::string(bytes.begin(), bytes.end()), path, buffer);
 }
 
 std::string cameraJson(const ao::Camera& c) {

@@ -124,6 +124,16 @@ cmp -s "$OUT/ao.png" "$OUT/ao2.png" || { echo "FAIL ao_depth: SAO from the saved
 check ao_alchemy 0 "$SSFX" ao -m alchemy --depth "$OUT/d.exr" --camera "$OUT/c.json" -p guardBand=8 -o "$OUT/alch.exr"
 check ao_rt 0 "$SSFX" ao -m raytraced --scene corner --size 32x24 --rays 16 -o "$OUT/rt.png"
 check ao_rt_depth 2 "$SSFX" ao -m raytraced --depth "$OUT/d.exr" --camera "$OUT/c.json" -o "$OUT/x.png"
+# Options that do not apply are refused; a camera file must describe the depth buffer given.
+check ao_depth_size 2 "$SSFX" ao --depth "$OUT/d.exr" --camera "$OUT/c.json" --size 10x10 -o "$OUT/x.png"
+contains ao_depth_size "$OUT/ao_depth_size.err" "does not apply"
+check ao_corner_view 2 "$SSFX" ao --scene corner --view nope -o "$OUT/x.png"
+check ao_rt_jpg 2 "$SSFX" ao -m raytraced --scene corner --size 32x24 -o "$OUT/x.jpg"
+echo '{}' >"$OUT/empty_cam.json"
+check ao_empty_cam 2 "$SSFX" ao --depth "$OUT/d.exr" --camera "$OUT/empty_cam.json" -o "$OUT/x.png"
+contains ao_empty_cam "$OUT/ao_empty_cam.err" "missing key"
+check report_noref 2 "$SSFX" eval report --quick --no-ao --no-render --out "$OUT/rep" --reference "$OUT/no/such/dir"
+[ -e "$OUT/x.png" ] && { echo "FAIL: a refused run wrote x.png"; fail=1; }
 check ao_badparam 2 "$SSFX" ao --scene room --size 32x24 -p radius=-2 -o "$OUT/x.png"
 contains ao_badparam "$OUT/ao_badparam.err" "radius"
 check ao_unknown 2 "$SSFX" ao --scene room --size 32x24 -p nope=1 -o "$OUT/x.png"
