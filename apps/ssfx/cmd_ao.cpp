@@ -192,7 +192,11 @@ void addAoCommand(CLI::App& app) {
                 "  ssfx ao --preset released --depth d.exr --camera c.json -p guardBand=64 -o released.png\n"
                 "  ssfx ao -m raytraced --scene scenes/sponza.json --size 480x270 --rays 256 -o truth.exr\n"
                 "  ssfx ao -m alchemy --depth d.exr --camera c.json -p guardBand=64 -o alchemy.exr");
-    cmd->callback([o, cmd] { run(*o, *cmd); });
+    cmd->callback([o, cmd] {
+        io::OutputSet outputs;  // -o, --save-depth and --save-camera: all or none
+        run(*o, *cmd);
+        outputs.commit();
+    });
 }
 
 }  // namespace ssfx::cli

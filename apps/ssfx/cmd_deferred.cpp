@@ -110,7 +110,11 @@ void addDeferredCommand(CLI::App& app) {
     cmd->add_option("--threads", o->threads, "Worker threads (0 = all)")->check(CLI::Range(0, 1024));
     cmd->footer("docs/methods/adaptive.md. Example:\n"
                 "  ssfx deferred --scene atrium --view nave --size 1024x768 -m 4 --reference --out out/deferred");
-    cmd->callback([o] { run(*o); });
+    cmd->callback([o] {
+        io::OutputSet outputs;  // the images, the heat maps and the numbers: all or none
+        run(*o);
+        outputs.commit();
+    });
 }
 
 }  // namespace ssfx::cli

@@ -2,6 +2,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <tuple>
 
 #include <filesystem>
 #include <optional>
@@ -85,11 +86,31 @@ void run(const RenderOptions& o) {
     }
     const auto [w, h] = parseSize(o.size);
     const ao::DepthFormat format = parseDepthFormat(o.depthFormat);
-    // Everything is rendered before anything is written.
+    // Everything is rendered before anything is written, and every size is checked before
+    // anything is rendered (the pixel limit, the device's largest attachment).
     render::Renderer renderer({o.device, o.validation});
+    {
+        std::vector<std::tuple<std::int64_t, std::int64_t, std::string>> sizes;
+        if (o.aaSet) {
+            sizes.emplace_back(std::int64_t(w) * 8, std::int64_t(h) * 8, "the x8 colour image of --aa-set");
+        } else {
+            sizes.emplace_back(std::int64_t(w) + 2 * o.guard, std::int64_t(h) + 2 * o.guard, "the depth buffer (with --guard)");
+            sizes.emplace_back(std::int64_t(w) * o.scale, std::int64_t(h) * o.scale, "the colour image (with --scale)");
+            if (o.gbuffer > 0)
+                sizes.emplace_back(std::int64_t(w) * o.gbuffer, std::int64_t(h) * o.gbuffer, "the G-buffer (with --gbuffer)");
+        }
+        for (const auto& [bw, bh, what] : sizes) {
+            checkDimensions(bw, bh, what);
+            if (bw > renderer.device().maxImageDimension2D || bh > renderer.device().maxImageDimension2D)
+                throw Error(fmt::format("{} would be {}x{}, above the device's limit of {} pixels per side", what, bw,
+                                        bh, renderer.device().maxImageDimension2D));
+        }
+    }
+    io::OutputSet outputs;  // depth.exr, z.exr, camera.json, color.png, gbuffer.exr: all or none
     if (o.aaSet) {
         io::makeDirectories(o.out);
         render::writeAaRenderSet(renderer, scene, view, w, h, o.out, scene.name);
+        outputs.commit();
         fmt::print("{}: {}.png, {}x2.png, {}x4.png, {}x8.png -> {}\n", scene.name, scene.name, scene.name, scene.name,
                    scene.name, o.out);
         return;
@@ -107,6 +128,7 @@ void run(const RenderOptions& o) {
     writeText((dir / "camera.json").string(), render::cameraSetupJson(depth.camera));
     io::writePng((dir / "color.png").string(), color.color.view());
     if (gbuffer) writeGBuffer((dir / "gbuffer.exr").string(), *gbuffer);
+    outputs.commit();
     fmt::print("{} / {}: {} triangles, {}x{} + guard {} on {}: depth ({}) {:.2f} ms, colour x{} {:.2f} ms", scene.name,
                o.view.empty() ? scene.views.at(0).first : o.view, scene.triangleCount(), w, h, o.guard,
                renderer.device().name, o.depthFormat, depth.gpuMs, o.scale, color.gpuMs);

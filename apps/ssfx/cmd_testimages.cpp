@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <filesystem>
+#include <memory>
 
 #include "commands.hpp"
 #include "ssfx/eval/test_images.hpp"
@@ -32,6 +33,7 @@ void addTestimagesCommand(CLI::App& app) {
         if (names.empty())
             for (const auto& t : eval::testImages()) names.emplace_back(t.name);
         io::makeDirectories(o->out);
+        io::OutputSet outputs;  // every image, or none
         for (const auto& name : names) {
             const eval::TestImageInfo& info = eval::testImageByName(name);
             for (int scale : o->scales) {
@@ -43,12 +45,20 @@ void addTestimagesCommand(CLI::App& app) {
                     io::writePng(file, eval::drawTestImage(name, scale).view());
                     continue;
                 }
-                io::Animation anim;
-                for (int f = 0; f < info.frames; ++f)
-                    anim.frames.push_back({eval::drawTestImage(name, scale, f), 1, std::uint16_t(info.fps)});
-                io::writeApng(file, anim);
+                // Written a frame at a time: one frame in memory (the x8 'animated' is 92 MB a
+                // frame, 3 GB whole).
+                std::unique_ptr<io::ApngWriter> anim;
+                for (int f = 0; f < info.frames; ++f) {
+                    const ImageRgba8 frame = eval::drawTestImage(name, scale, f);
+                    if (!anim)
+                        anim = std::make_unique<io::ApngWriter>(file, frame.width(), frame.height(),
+                                                                std::uint32_t(info.frames));
+                    anim->add(frame.view(), 1, std::uint16_t(info.fps));
+                }
+                anim->commit();
             }
         }
+        outputs.commit();
     });
 }
 

@@ -21,12 +21,16 @@ void addTestsceneCommand(CLI::App& app) {
     cmd->add_option("--width", o->width, "Width at 1x (default 1920)")->check(CLI::Range(1, 8192));
     cmd->add_option("--height", o->height, "Height at 1x (default 1080)")->check(CLI::Range(1, 8192));
     cmd->callback([o] {
+        // The largest image first (refused before any file is drawn), and all three or none.
+        checkDimensions(std::int64_t(o->width) * 4, std::int64_t(o->height) * 4, "the 4x drawing (scenex4.png)");
         io::makeDirectories(o->out);
+        io::OutputSet outputs;
         for (int scale : {1, 2, 4}) {
             const std::string name = scale == 1 ? "scene.png" : fmt::format("scenex{}.png", scale);
             io::writePng((std::filesystem::path(o->out) / name).string(),
                          eval::syntheticScene(o->width, o->height, scale).view());
         }
+        outputs.commit();
     });
 }
 

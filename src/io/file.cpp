@@ -208,6 +208,39 @@ void AtomicFile::write(std::span<const std::uint8_t> bytes) {
         throw Error(fmt::format("{}: write failed ({})", path_, std::strerror(errno)));
 }
 
+namespace {
+thread_local OutputSet* gOpenSet = nullptr;
+}  // namespace
+
+OutputSet::OutputSet() : outer_(gOpenSet) {
+    if (!outer_) gOpenSet = this;
+}
+
+OutputSet::~OutputSet() {
+    if (outer_) return;
+    gOpenSet = nullptr;
+    for (const Pending& p : pending_) {  // not committed: none of them appears
+        std::remove(p.tmp.c_str());
+        unregisterTemp(p.slot);
+    }
+}
+
+void OutputSet::commit() {
+    if (outer_) return;  // the outer set commits
+    gOpenSet = nullptr;
+    std::vector<Pending> todo;
+    todo.swap(pending_);
+    for (std::size_t i = 0; i < todo.size(); ++i) {
+        std::error_code ec;
+        fs::rename(todo[i].tmp, todo[i].target, ec);
+        unregisterTemp(todo[i].slot);
+        if (ec) {
+            for (std::size_t k = i; k < todo.size(); ++k) std::remove(todo[k].tmp.c_str()), unregisterTemp(todo[k].slot);
+            throw Error(fmt::format("{}: cannot move output into place ({})", todo[i].path, ec.message()));
+        }
+    }
+}
+
 void AtomicFile::commit() {
     if (!file_) throw Error(fmt::format("{}: committed twice", path_));
     if (direct_) {
@@ -224,6 +257,10 @@ void AtomicFile::commit() {
         std::remove(tmp_.c_str());
         unregisterTemp(slot_);
         throw Error(fmt::format("{}: write failed ({})", path_, std::strerror(errno)));
+    }
+    if (gOpenSet) {  // part of a set: moved into place with the others
+        gOpenSet->pending_.push_back({tmp_, target_, path_, slot_});
+        return;
     }
     std::error_code ec;
     fs::rename(tmp_, target_, ec);

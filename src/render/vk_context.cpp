@@ -104,6 +104,7 @@ std::vector<DeviceInfo> enumerateDevices(const vk::raii::Instance& instance) {
         d.api = fmt::format("{}.{}.{}", VK_API_VERSION_MAJOR(p.apiVersion), VK_API_VERSION_MINOR(p.apiVersion),
                             VK_API_VERSION_PATCH(p.apiVersion));
         d.usable = usable(devices[i]);
+        d.maxImageDimension2D = int(p.limits.maxImageDimension2D);
         out.push_back(d);
     }
     return out;

@@ -132,6 +132,11 @@ check ao_rt_jpg 2 "$SSFX" ao -m raytraced --scene corner --size 32x24 -o "$OUT/x
 echo '{}' >"$OUT/empty_cam.json"
 check ao_empty_cam 2 "$SSFX" ao --depth "$OUT/d.exr" --camera "$OUT/empty_cam.json" -o "$OUT/x.png"
 contains ao_empty_cam "$OUT/ao_empty_cam.err" "missing key"
+# All or nothing: what is refused is refused before any work, and nothing is written.
+check testscene_big 2 "$SSFX" testscene --out "$OUT/big_scene" --width 5000 --height 5000
+[ -z "$(ls -A "$OUT/big_scene" 2>/dev/null)" ] || { echo "FAIL testscene_big: files were written"; fail=1; }
+check ao_save_badparam 2 "$SSFX" ao --scene room --size 32x24 --save-depth "$OUT/sd.exr" -p radius=-1 -o "$OUT/x.png"
+[ -e "$OUT/sd.exr" ] && { echo "FAIL ao_save_badparam: --save-depth was written"; fail=1; }
 check report_noref 2 "$SSFX" eval report --quick --no-ao --no-render --out "$OUT/rep" --reference "$OUT/no/such/dir"
 [ -e "$OUT/x.png" ] && { echo "FAIL: a refused run wrote x.png"; fail=1; }
 check ao_badparam 2 "$SSFX" ao --scene room --size 32x24 -p radius=-2 -o "$OUT/x.png"
@@ -190,6 +195,9 @@ if "$SSFX" --help 2>/dev/null | grep -qE '^ +render '; then
   check render_ao 0 "$SSFX" ao --depth "$OUT/r/depth.exr" --camera "$OUT/r/camera.json" -p guardBand=8 -o "$OUT/r_ao.png"
   check ao_rendered 0 $VK "$SSFX" ao --scene cornell --size 48x32 -p guardBand=8 -o "$OUT/ao_cornell.png"
   check ao_rendered_rt 0 $VK "$SSFX" ao -m raytraced --scene cornell --view corner --size 24x16 --rays 8 -o "$OUT/ao_rt.exr"
+  check render_gbuffer_big 2 $VK "$SSFX" render cornell --size 8192x8192 --gbuffer 4 --out "$OUT/rbig"
+  contains render_gbuffer_big "$OUT/render_gbuffer_big.err" "G-buffer"
+  [ -z "$(ls -A "$OUT/rbig" 2>/dev/null)" ] || { echo "FAIL render_gbuffer_big: files were written"; fail=1; }
   check render_noscene 2 $VK "$SSFX" render --out "$OUT/x"
   check render_badscene 2 $VK "$SSFX" render nosuchscene --out "$OUT/x"
   contains render_badscene "$OUT/render_badscene.err" "not a built-in scene"

@@ -213,3 +213,34 @@ TEST(PixelLimit, ALowerLimitRefusesFromTheHeaderAndIsRestored) {
     EXPECT_EQ(io::decodePng(png, "four.png").width(), 4);
     EXPECT_EQ(io::maxPixels(), kMaxPixels);
 }
+
+TEST(OutputSet, FilesOfASetAppearTogetherOrNotAtAll) {
+    const fs::path d = freshDir("output_set");
+    io::writeFileAtomic((d / "a.txt").string(), bytesOf("old a"));
+    try {
+        io::OutputSet set;
+        io::writeFileAtomic((d / "a.txt").string(), bytesOf("new a"));
+        io::writeFileAtomic((d / "b.txt").string(), bytesOf("new b"));
+        EXPECT_EQ(contents(d / "a.txt"), "old a");  // nothing moves before the set's commit
+        EXPECT_FALSE(fs::exists(d / "b.txt"));
+        throw Error("a late failure");
+    } catch (const Error&) {
+    }
+    EXPECT_EQ(contents(d / "a.txt"), "old a");
+    EXPECT_FALSE(fs::exists(d / "b.txt"));
+    EXPECT_EQ(temporaries(d), 0);
+    {
+        io::OutputSet set;
+        io::writeFileAtomic((d / "a.txt").string(), bytesOf("new a"));
+        {
+            io::OutputSet inner;  // joins the outer set
+            io::writeFileAtomic((d / "b.txt").string(), bytesOf("new b"));
+            inner.commit();
+        }
+        EXPECT_FALSE(fs::exists(d / "b.txt"));
+        set.commit();
+    }
+    EXPECT_EQ(contents(d / "a.txt"), "new a");
+    EXPECT_EQ(contents(d / "b.txt"), "new b");
+    EXPECT_EQ(temporaries(d), 0);
+}

@@ -54,6 +54,30 @@ void writeFileAtomic(const std::string& path, std::span<const std::uint8_t> byte
 //! naming it when it is a file or cannot be created (a user's mistake: exit 2, not 1).
 void makeDirectories(const std::string& dir);
 
+//! Outputs that belong together (a render's depth.exr, z.exr, camera.json, color.png,
+//! gbuffer.exr): while a set is open on this thread, each AtomicFile's commit() finishes
+//! its temporary but leaves it beside its target; the set's commit() moves them all into
+//! place at the end, and a set destroyed without commit() (an error on the way) removes
+//! them, so a failed run leaves none of its new files and every old one intact. Sets do not
+//! nest: an inner set joins the outer one.
+class OutputSet {
+public:
+    OutputSet();
+    ~OutputSet();
+    OutputSet(const OutputSet&) = delete;
+    OutputSet& operator=(const OutputSet&) = delete;
+    void commit();
+
+private:
+    friend class AtomicFile;
+    struct Pending {
+        std::string tmp, target, path;
+        int slot;
+    };
+    std::vector<Pending> pending_;
+    OutputSet* outer_ = nullptr;
+};
+
 //! An output written piece by piece with the same guarantee: the pieces go to a temporary
 //! file beside `path`, commit() syncs it and renames it over `path`; destroyed without a
 //! commit (an error on the way), it removes the temporary and `path` is untouched. What

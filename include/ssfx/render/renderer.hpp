@@ -22,6 +22,7 @@ struct DeviceInfo {
     std::string type;   //!< discrete, integrated, virtual, cpu, other
     std::string api;    //!< supported Vulkan version, e.g. "1.3.230"
     bool usable = false;  //!< supports Vulkan 1.3 with dynamic rendering
+    int maxImageDimension2D = 0;  //!< the largest attachment side it renders (VkPhysicalDeviceLimits)
 };
 
 struct RendererOptions {
