@@ -229,6 +229,11 @@ TEST(RenderImport, BadInputsGiveClearErrors) {
         {R"({"model": "tri.obj", "views": {"v": {"eye": [0, 0, 5], "target": [0, 0, 0], "fov": 60}}})", "unknown key 'fov'"},
         {R"({"model": "tri.obj", "lights": [{"type": "point", "position": [0, 1, 0], "power": 3}]})", "unknown key 'power'"},
     };
+    // A glTF with no meshes: says what is missing (Assimp gives no text of its own).
+    writeText(dir / "empty.gltf", R"({"asset": {"version": "2.0"}, "scenes": [{"nodes": []}], "scene": 0})");
+    const std::string empty = message([&] { render::importModel((dir / "empty.gltf").string()); });
+    EXPECT_NE(empty.find("empty.gltf"), std::string::npos) << empty;
+    EXPECT_EQ(empty.find("()"), std::string::npos) << empty;
     for (const auto& [text, field] : typeErrors) {
         writeText(dir / "s6.json", text);
         const std::string m = message([&] { render::loadScene((dir / "s6.json").string()); });
