@@ -124,7 +124,8 @@ TEST(ApngStream, ReaderGivesTheWholeFileReadersFramesFromMemoryAndFromAFile) {
     }
     // A still PNG is one frame.
     const auto img = test::noise(5, 3, 2);
-    io::ApngReader still(io::encodePng(img.view()), "still");
+    const auto stillBytes = io::encodePng(img.view());  // a memory reader reads them as it goes
+    io::ApngReader still(stillBytes, "still");
     EXPECT_FALSE(still.animated());
     const io::Frame* f = still.next();
     ASSERT_NE(f, nullptr);

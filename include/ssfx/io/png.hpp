@@ -165,6 +165,7 @@ inline constexpr std::uint32_t kMaxApngFrames = 100000;
 class ApngReader {
 public:
     explicit ApngReader(const std::string& path);
+    //! From memory: the bytes are read as the frames are asked for, so they must outlive the reader.
     ApngReader(std::span<const std::uint8_t> bytes, const std::string& name);
     ~ApngReader();
     ApngReader(ApngReader&&) noexcept;
