@@ -79,11 +79,7 @@ void run(const AoOptions& o, const CLI::App& cmd) {
     int guard = 0;
     for (const auto& text : o.params) {
         const auto [name, value] = parseParam(text);
-        if (name == "guardBand") {
-            if (!(std::isfinite(value) && value == std::floor(value) && value >= 0 && value <= 4096))
-                throw Error(fmt::format("guardBand = {} is not an integer in [0, 4096]", value));
-            guard = rp.guardBand = int(value);
-        }
+        if (name == "guardBand") guard = rp.guardBand = wholeNumber(value, "guardBand", 0, 4096);
         if (o.method == "sao") ao::setParam(sp, name, value);
         else if (o.method == "alchemy") ao::setParam(ap, name, value);
         else if (name == "radius") rp.radius = float(value);

@@ -32,11 +32,7 @@ void setParam(deferred::AdaptiveParams& p, const std::string& name, double v) {
     else if (name == "tEdge") p.tEdge = f;
     else if (name == "specular") p.shading.specular = f;
     else if (name == "shininess") p.shading.shininess = f;
-    else if (name == "maxAnisotropy") {
-        if (!(std::isfinite(v) && v == std::floor(v) && std::fabs(v) < 2147483648.0))  // the range: shading's check
-            throw Error(fmt::format("deferred: maxAnisotropy = {} is not an integer", v));
-        p.shading.maxAnisotropy = int(v);
-    }
+    else if (name == "maxAnisotropy") p.shading.maxAnisotropy = wholeNumber(v, "deferred: maxAnisotropy");  // range: shading's check
     else
         throw Error(fmt::format("deferred: unknown parameter '{}' (cDepth, cNormal, cShading, tMin, tEdge, specular, "
                                 "shininess, maxAnisotropy)", name));

@@ -33,9 +33,7 @@ inline bool boolParam(const char* method, const std::string& name, double v) {
 //! An integer parameter given as a number: a finite whole number in int's range, anything
 //! else (10.4, nan, 4294967297) is an error naming it, never rounded, truncated or wrapped.
 inline int intParam(const char* method, const std::string& name, double v) {
-    if (!(std::isfinite(v) && v == std::floor(v) && v >= -2147483648.0 && v <= 2147483647.0))
-        throw Error(fmt::format("{}: {} = {} is not an integer", method, name, v));
-    return int(v);
+    return wholeNumber(v, fmt::format("{}: {}", method, name));
 }
 
 //! Sets a BlurParams field by name; false for a name that is not one of them.

@@ -39,11 +39,9 @@ ao::Camera parseCameraJson(const std::string& text, const std::string& name, Cam
             else
                 c.zFar = number();
         } else if (key == "width" || key == "height" || key == "guard") {
-            const double v = number();
-            if (!(v == std::floor(v) && v >= (key == "guard" ? 0 : 1) && v <= kMaxDimension))
-                throw Error(fmt::format("{}: '{}' = {} is not a whole number of pixels", name, key, v));
+            const int v = wholeNumber(number(), fmt::format("{}: '{}'", name, key), key == "guard" ? 0 : 1, kMaxDimension);
             if (buffer) {
-                (key == "width" ? buffer->width : key == "height" ? buffer->height : buffer->guard) = int(v);
+                (key == "width" ? buffer->width : key == "height" ? buffer->height : buffer->guard) = v;
                 buffer->stated = true;
             }
         } else if (key == "projection" || key == "view") {

@@ -14,6 +14,11 @@ public:
     explicit Error(const std::string& message) : std::runtime_error(message) {}
 };
 
+//! `v` as an int when it is a whole number in [lo, hi]: a parameter or file value that must be
+//! an integer is never rounded, truncated or wrapped (10.4, nan, 4294967297 are errors).
+//! Throws Error "WHAT = V is not an integer" (with " in [LO, HI]" when a range is given).
+int wholeNumber(double v, const std::string& what, double lo = -2147483648.0, double hi = 2147483647.0);
+
 [[noreturn]] void assertFailed(const char* expr, const char* file, int line);
 
 }  // namespace ssfx
