@@ -10,7 +10,8 @@ if ! command -v clang++ >/dev/null; then echo "fuzz: clang++ missing (run script
 cmake --preset fuzz >/dev/null
 cmake --build build/fuzz -j "$(nproc)" >/dev/null
 mkdir -p build/fuzz/crashes
-for t in png apng aa exr camera; do
+export LSAN_OPTIONS="suppressions=$PWD/fuzz/lsan.supp${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
+for t in png apng aa exr camera scene obj gltf; do
   # The APNG target takes inputs of up to 256 KiB, so that it can reach per-frame costs
   # (many frames, large ancillary chunks); the others keep libFuzzer's default.
   maxlen=(); [ "$t" = apng ] && maxlen=(-max_len=262144)

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <numbers>
+#include <span>
 
 #include "ssfx/core/error.hpp"
 #include "ssfx/io/camera.hpp"
@@ -228,12 +229,37 @@ TEST(RenderImport, BadInputsGiveClearErrors) {
          "/views/v/z_far"},
         {R"({"model": "tri.obj", "views": {"v": {"eye": [0, 0, 5], "target": [0, 0, 0], "fov": 60}}})", "unknown key 'fov'"},
         {R"({"model": "tri.obj", "lights": [{"type": "point", "position": [0, 1, 0], "power": 3}]})", "unknown key 'power'"},
+        // Views are checked on load (the renderer's own checks), not when first rendered.
+        {R"({"model": "tri.obj", "views": {"v": {"eye": [0, 0, 5], "target": [0, 0, 0], "fov_y_deg": 200}}})",
+         "view 'v': view: fov_y_deg 200"},
+        {R"({"model": "tri.obj", "views": {"v": {"eye": [0, 0, 5], "target": [0, 0, 5]}}})", "same point"},
+        {R"({"model": "tri.obj", "views": {"v": {"eye": [0, 0, 5], "target": [0, 0, 0], "z_near": 0}}})", "z_near 0"},
+        {R"({"model": "tri.obj", "views": {"v": {"eye": [0, 0, 5], "target": [0, 0, 0], "z_far": 0.05}}})", "z_far 0.05"},
+        {R"({"model": "tri.obj", "views": {"v": {"eye": [0, 0, 1e300], "target": [0, 0, 0]}}})", "'eye' must be finite"},
     };
     // A glTF with no meshes: says what is missing (Assimp gives no text of its own).
     writeText(dir / "empty.gltf", R"({"asset": {"version": "2.0"}, "scenes": [{"nodes": []}], "scene": 0})");
     const std::string empty = message([&] { render::importModel((dir / "empty.gltf").string()); });
     EXPECT_NE(empty.find("empty.gltf"), std::string::npos) << empty;
     EXPECT_EQ(empty.find("()"), std::string::npos) << empty;
+    // Files that crash Debian's Assimp 5.2.5 (found by fuzz_gltf): an error naming the file,
+    // and this process lives on (the importer runs in a child process).
+    for (const char* crasher : {"gltf-assimp-null-mime.gltf", "gltf-assimp-bvh-overread.gltf"}) {
+        const fs::path file = fs::path(SSFX_SOURCE_DIR) / "fuzz" / "regressions" / crasher;
+        const std::string m = message([&] { render::importModel(file.string()); });
+        EXPECT_NE(m.find(std::string("model '") + file.string() + "'"), std::string::npos) << m;
+        EXPECT_TRUE(m.find("stopped abnormally") != std::string::npos || m.find("cannot import") != std::string::npos) << m;
+    }
+    // The format is the extension's; none, or one that no importer claims, is refused.
+    writeText(dir / "tri_noext", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    EXPECT_NE(message([&] { render::importModel((dir / "tri_noext").string()); }).find("no file extension"),
+              std::string::npos);
+    writeText(dir / "tri.xyzw", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    EXPECT_NE(message([&] { render::importModel((dir / "tri.xyzw").string()); }).find("'.xyzw' is not a model format"),
+              std::string::npos);
+    writeText(dir / "inf.obj", "v 0 0 0\nv 1e39 0 0\nv 0 1 0\nf 1 2 3\n");
+    EXPECT_NE(message([&] { render::importModel((dir / "inf.obj").string()); }).find("vertex 1 of mesh 0 has a non-finite"),
+              std::string::npos);
     for (const auto& [text, field] : typeErrors) {
         writeText(dir / "s6.json", text);
         const std::string m = message([&] { render::loadScene((dir / "s6.json").string()); });
@@ -241,6 +267,81 @@ TEST(RenderImport, BadInputsGiveClearErrors) {
         EXPECT_NE(m.find(field), std::string::npos) << text << " -> " << m;
         EXPECT_EQ(m.find("[json.exception"), std::string::npos) << m;
     }
+}
+
+TEST(RenderImport, ModelFromMemory) {
+    const std::string obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 3 4\n";
+    const auto bytes = std::span(reinterpret_cast<const std::uint8_t*>(obj.data()), obj.size());
+    const auto s = render::importModelFromMemory(bytes, "obj", "mem", 2.0);
+    EXPECT_EQ(s.name, "mem");
+    EXPECT_EQ(s.triangleCount(), 2u);
+    EXPECT_EQ(s.bounds().second, glm::vec3(2.0f, 2.0f, 2.0f));
+    // The same bytes from a file give the same scene.
+    const fs::path dir = scratch("memory");
+    writeText(dir / "mem.obj", obj);
+    const auto fromFile = render::importModel((dir / "mem.obj").string(), 2.0);
+    ASSERT_EQ(fromFile.vertices.size(), s.vertices.size());
+    for (std::size_t i = 0; i < fromFile.vertices.size(); ++i) EXPECT_EQ(fromFile.vertices[i].position, s.vertices[i].position);
+    EXPECT_EQ(fromFile.indices, s.indices);
+    auto message = [](auto&& f) {
+        try {
+            f();
+        } catch (const Error& e) {
+            return std::string(e.what());
+        }
+        return std::string("(no error)");
+    };
+    // An external texture cannot be opened from memory: named, with the reason.
+    const std::string textured = R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+      "nodes": [{"mesh": 0}],
+      "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "TEXCOORD_0": 2}, "indices": 1, "material": 0}]}],
+      "materials": [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}],
+      "textures": [{"source": 0}], "images": [{"uri": "far.png"}],
+      "buffers": [{"byteLength": 68, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAAABAAIAAAAAAAAAAAAAAAAAgD8AAAAAAAAAAAAAgD8="}],
+      "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 6},
+                      {"buffer": 0, "byteOffset": 44, "byteLength": 24}],
+      "accessors": [
+        {"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [0, 0, 0], "max": [1, 1, 0]},
+        {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"},
+        {"bufferView": 2, "componentType": 5126, "count": 3, "type": "VEC2"}]})";
+    const std::string ext = message([&] {
+        render::importModelFromMemory(std::span(reinterpret_cast<const std::uint8_t*>(textured.data()), textured.size()),
+                                      "gltf", "texmem");
+    });
+    EXPECT_NE(ext.find("model 'texmem'"), std::string::npos) << ext;
+    EXPECT_NE(ext.find("far.png"), std::string::npos) << ext;
+    EXPECT_NE(ext.find("embedded"), std::string::npos) << ext;
+    EXPECT_NE(message([&] { render::importModelFromMemory({}, "obj", "none"); }).find("no bytes"), std::string::npos);
+    EXPECT_NE(message([&] { render::importModelFromMemory(bytes, "../x", "bad"); }).find("file extension"),
+              std::string::npos);
+    EXPECT_NE(message([&] { render::importModelFromMemory(bytes, "obj", "neg", 0.0); }).find("scale"), std::string::npos);
+    const std::string junk = "\x01\x02 not a model";
+    EXPECT_NE(message([&] {
+                  render::importModelFromMemory(std::span(reinterpret_cast<const std::uint8_t*>(junk.data()), junk.size()),
+                                                "gltf", "junk");
+              }).find("model 'junk'"),
+              std::string::npos);
+}
+
+TEST(RenderImport, SceneTextWithAnyModelLoader) {
+    // The scene file's model path is resolved against the file's directory and handed to the
+    // loader with the scale; everything else is the file's.
+    std::string seen;
+    double seenScale = 0;
+    const auto loader = [&](const std::string& path, double scale) {
+        seen = path;
+        seenScale = scale;
+        return render::cornellBox();
+    };
+    const auto s = render::parseSceneFile(R"({"model": "m/x.obj", "scale": 0.5,
+        "views": {"v": {"eye": [0, 1, 4], "target": [0, 1, 0]}}})",
+                                          "/some/dir/s.json", loader);
+    EXPECT_EQ(fs::path(seen), fs::path("/some/dir/m/x.obj"));
+    EXPECT_EQ(seenScale, 0.5);
+    EXPECT_EQ(s.name, "s");
+    ASSERT_EQ(s.views.size(), 1u);
+    EXPECT_EQ(s.views[0].first, "v");
+    EXPECT_THROW(render::parseSceneFile("[1]", "/x.json", loader), Error);
 }
 
 TEST(RenderImport, SharedModelsLoad) {

@@ -9,6 +9,9 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
+#include <span>
+#include <string_view>
 #include <glm/glm.hpp>
 #include <limits>
 #include <string>
@@ -93,6 +96,13 @@ Scene atrium();
 //! corrupt model and for a missing texture.
 Scene importModel(const std::string& path, double scale = 1.0);
 
+//! The same from bytes in memory. `format` is the file extension Assimp would choose the
+//! importer by ("obj", "gltf", "glb", ...); `name` names the scene and the messages. Such a
+//! model cannot open other files, so its textures must be embedded (a glTF's data URIs or
+//! a GLB's buffer views); an external one is an error naming it.
+Scene importModelFromMemory(std::span<const std::uint8_t> bytes, const std::string& format, const std::string& name,
+                            double scale = 1.0);
+
 //! A scene file (JSON):
 //!   {"model": "relative/or/absolute/path.obj", "scale": 1, "ambient": [r, g, b],
 //!    "background": [r, g, b],
@@ -102,6 +112,13 @@ Scene importModel(const std::string& path, double scale = 1.0);
 //!                        "fov_y_deg": 60, "z_near": 0.1, "z_far": null}}}
 //! The model path is relative to the scene file. Lights and views replace the model's defaults.
 Scene loadSceneFile(const std::string& path);
+
+//! Loads the model a scene file names (an absolute path, already resolved against the file's
+//! directory) at the given scale.
+using ModelLoader = std::function<Scene(const std::string& modelPath, double scale)>;
+//! A scene file's text, `path` naming it in messages and anchoring a relative model path;
+//! `loadModel` reads the model (importModel for loadSceneFile).
+Scene parseSceneFile(std::string_view text, const std::string& path, const ModelLoader& loadModel);
 
 //! A built-in name, a scene file (.json) or a model file.
 Scene loadScene(const std::string& nameOrPath);

@@ -1,0 +1,20 @@
+// Fuzzes model import through Assimp from memory (gltf): any bytes must give a valid scene
+// (Scene::validate passes, at least one triangle) or throw ssfx::Error.
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <string_view>
+
+#include "ssfx/core/error.hpp"
+#include "ssfx/render/scene.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    try {
+        const ssfx::render::Scene s = ssfx::render::importModelFromMemory(std::span(data, size), "gltf", "fuzz");
+        if (s.triangleCount() == 0) __builtin_trap();
+        s.validate();  // throws ssfx::Error: the import let an invalid scene through
+    } catch (const ssfx::Error& e) {
+        if (std::string_view(e.what()).starts_with("scene '")) __builtin_trap();  // validate() failed after import
+    }
+    return 0;
+}
