@@ -7,7 +7,6 @@
 
 #include <array>
 #include <cmath>
-#include <variant>
 
 #include "ssfx/aa/blur.hpp"
 #include "ssfx/aa/ddaa.hpp"
@@ -20,37 +19,10 @@ namespace {
 
 using namespace aa;
 
-// Binds a ParamInfo row to a params-struct member of the same name.
-template <class P>
-using Member = std::variant<float P::*, int P::*, bool P::*>;
-
+// A preset's params (or the defaults), then the named overrides through the method's table.
 template <class P, std::size_t N>
-P applySettings(std::string_view id, P params, const std::array<ParamInfo, N>& infos,
-                const std::array<Member<P>, N>& members, const MethodSettings& s) {
-    for (const auto& entry : s.params) {
-        const std::string& name = entry.first;  // no structured bindings: lambdas capture these
-        const double value = entry.second;
-        std::size_t i = 0;
-        while (i < N && infos[i].name != name) ++i;
-        if (i == N) {
-            std::string known;
-            for (const auto& p : infos) known += fmt::format("{}{}", known.empty() ? "" : ", ", p.name);
-            throw Error(fmt::format("{}: unknown parameter '{}' (parameters: {})", id, name,
-                                    known.empty() ? "none" : known));
-        }
-        const ParamInfo& info = infos[i];
-        if (!(value >= info.min && value <= info.max))
-            throw Error(fmt::format("{}: parameter {} = {} is outside the allowed range [{}, {}]", id, name, value,
-                                    info.min, info.max));
-        if (info.kind != ParamKind::Float && value != std::floor(value))
-            throw Error(fmt::format("{}: parameter {} = {} must be an integer", id, name, value));
-        std::visit(
-            [&](auto member) {
-                using T = std::remove_reference_t<decltype(params.*member)>;
-                params.*member = static_cast<T>(value);
-            },
-            members[i]);
-    }
+P applySettings(std::string_view id, P params, const std::array<ParamInfo, N>& table, const MethodSettings& s) {
+    for (const auto& [name, value] : s.params) setParam(table, &params, id, name, value);
     return params;
 }
 
@@ -61,62 +33,6 @@ void rejectParams(std::string_view id, const MethodSettings& s) {
 void rejectPreset(std::string_view id, const MethodSettings& s) {
     if (s.preset) throw Error(fmt::format("{}: this method has no edge-threshold presets", id));
 }
-
-// ---- parameter tables (names as in the params structs) ------------------------------
-constexpr ParamInfo kThrMin{"edgeThresholdMin", "luma", 0.0625, 0, 1, ParamKind::Float,
-                            "absolute luma contrast below which a pixel is left unchanged"};
-constexpr ParamInfo kThr{"edgeThreshold", "ratio", 0.166, 0, 1, ParamKind::Float,
-                         "contrast threshold relative to the local maximum luma"};
-
-constexpr ParamInfo kChroma{"chromaWeight", "", 0, 0, 4, ParamKind::Float,
-                            "opt-in colour-aware contrast: luma + chromaWeight * (max - min of RGB); 0 = luma"};
-
-constexpr std::array<ParamInfo, 1> kBlurInfo{{{"sigma", "px", 0.6, 0.05, 10, ParamKind::Float, "Gaussian sigma"}}};
-const std::array<Member<BlurParams>, 1> kBlurMembers{&BlurParams::sigma};
-
-constexpr std::array<ParamInfo, 5> kFxaa3cInfo{{
-    kThrMin, kThr,
-    {"edgeSharpness", "", 8, 1, 64, ParamKind::Float, "FXAA console sharpness (limits the long taps)"},
-    {"diagonalOffset", "px", 1, 1e-3, 2, ParamKind::Float, "offset of the diagonal reads (Lottes: 0.5)"},
-    kChroma,
-}};
-const std::array<Member<Fxaa3cParams>, 5> kFxaa3cMembers{
-    &Fxaa3cParams::edgeThresholdMin, &Fxaa3cParams::edgeThreshold, &Fxaa3cParams::edgeSharpness,
-    &Fxaa3cParams::diagonalOffset, &Fxaa3cParams::chromaWeight};
-
-constexpr std::array<ParamInfo, 5> kFxaa3dInfo{{
-    kThrMin, kThr,
-    {"subpix", "", 0.75, 0, 1, ParamKind::Float, "sub-pixel aliasing removal amount"},
-    {"paperSearchQuirk", "bool", 1, 0, 1, ParamKind::Bool,
-     "1: side 2 steps back after its first read, as in the paper's shader; 0: FXAA 3.11 as written"},
-    kChroma,
-}};
-const std::array<Member<Fxaa3dParams>, 5> kFxaa3dMembers{&Fxaa3dParams::edgeThresholdMin,
-                                                         &Fxaa3dParams::edgeThreshold, &Fxaa3dParams::subpix,
-                                                         &Fxaa3dParams::paperSearchQuirk, &Fxaa3dParams::chromaWeight};
-
-constexpr ParamInfo kStrength{"strength", "", 3, 0, 100, ParamKind::Float,
-                              "DDAA_STRENGTH: diffusion = min(1, strength * sqrt(|gradient|))"};
-constexpr ParamInfo kMaxDiff{"maxDiffusion", "px", 0.51, 0, 1, ParamKind::Float, "largest diffusion offset"};
-constexpr ParamInfo kRidge{"ridgeFactor", "", 10, 0, 1000, ParamKind::Float,
-                           "small-structure preservation: ridges/valleys diffuse less"};
-constexpr std::array<ParamInfo, 6> kDdaa1Info{{kThrMin, kThr, kStrength, kMaxDiff, kRidge, kChroma}};
-const std::array<Member<Ddaa1Params>, 6> kDdaa1Members{&Ddaa1Params::edgeThresholdMin, &Ddaa1Params::edgeThreshold,
-                                                       &Ddaa1Params::strength,         &Ddaa1Params::maxDiffusion,
-                                                       &Ddaa1Params::ridgeFactor,      &Ddaa1Params::chromaWeight};
-constexpr std::array<ParamInfo, 7> kDdaa2Info{
-    {kThrMin, kThr, kStrength, kMaxDiff, kRidge,
-     {"searchRounds", "", 5, 1, 5, ParamKind::Int, "edge-search rounds of 3 pixels per side"}, kChroma}};
-const std::array<Member<Ddaa2Params>, 7> kDdaa2Members{
-    &Ddaa2Params::edgeThresholdMin, &Ddaa2Params::edgeThreshold, &Ddaa2Params::strength,
-    &Ddaa2Params::maxDiffusion,     &Ddaa2Params::ridgeFactor,   &Ddaa2Params::searchRounds,
-    &Ddaa2Params::chromaWeight};
-
-constexpr std::array<ParamInfo, 2> kMitchellInfo{{
-    {"B", "", 1.0 / 3.0, 0, 1, ParamKind::Float, "Mitchell-Netravali B"},
-    {"C", "", 1.0 / 3.0, 0, 1, ParamKind::Float, "Mitchell-Netravali C"},
-}};
-const std::array<Member<MitchellParams>, 2> kMitchellMembers{&MitchellParams::B, &MitchellParams::C};
 
 template <class P>
 P withFiltering(P p, const MethodSettings& s) {
@@ -148,7 +64,7 @@ void intoNoaa(ImageView<const Rgba8> in, ImageView<Rgba8> out, const MethodSetti
 
 BlurParams blurParams(const MethodSettings& s) {
     rejectPreset("blur", s);
-    return applySettings("blur", BlurParams{}, kBlurInfo, kBlurMembers, s);
+    return applySettings("blur", BlurParams{}, kBlurParams, s);
 }
 void intoBlur(ImageView<const Rgba8> in, ImageView<Rgba8> out, const MethodSettings& s, const Exec& e) {
     blur(in, out, blurParams(s), e);
@@ -159,7 +75,7 @@ ImageRgba8 refBlur(ImageView<const Rgba8> in, const MethodSettings& s, const Exe
 
 Fxaa3cParams fxaa3cParams(const MethodSettings& s) {
     return applySettings("fxaa3c", withFiltering(fxaa3cParamsFor(s.preset.value_or(Preset::Medium)), s),
-                         kFxaa3cInfo, kFxaa3cMembers, s);
+                         kFxaa3cParams, s);
 }
 void intoFxaa3c(ImageView<const Rgba8> in, ImageView<Rgba8> out, const MethodSettings& s, const Exec& e) {
     fxaa3c(in, out, fxaa3cParams(s), e);
@@ -170,7 +86,7 @@ ImageRgba8 refFxaa3c(ImageView<const Rgba8> in, const MethodSettings& s, const E
 
 Fxaa3dParams fxaa3dParams(const MethodSettings& s) {
     return applySettings("fxaa3d", withFiltering(fxaa3dParamsFor(s.preset.value_or(Preset::Medium)), s),
-                         kFxaa3dInfo, kFxaa3dMembers, s);
+                         kFxaa3dParams, s);
 }
 void intoFxaa3d(ImageView<const Rgba8> in, ImageView<Rgba8> out, const MethodSettings& s, const Exec& e) {
     fxaa3d(in, out, fxaa3dParams(s), e);
@@ -180,8 +96,7 @@ ImageRgba8 refFxaa3d(ImageView<const Rgba8> in, const MethodSettings& s, const E
 }
 
 Ddaa1Params ddaa1Params(const MethodSettings& s) {
-    return applySettings("ddaa1", withFiltering(ddaa1ParamsFor(s.preset.value_or(Preset::Medium)), s), kDdaa1Info,
-                         kDdaa1Members, s);
+    return applySettings("ddaa1", withFiltering(ddaa1ParamsFor(s.preset.value_or(Preset::Medium)), s), kDdaa1Params, s);
 }
 void intoDdaa1(ImageView<const Rgba8> in, ImageView<Rgba8> out, const MethodSettings& s, const Exec& e) {
     ddaa1(in, out, ddaa1Params(s), e);
@@ -191,8 +106,7 @@ ImageRgba8 refDdaa1(ImageView<const Rgba8> in, const MethodSettings& s, const Ex
 }
 
 Ddaa2Params ddaa2Params(std::string_view id, const MethodSettings& s) {
-    return applySettings(id, withFiltering(ddaa2ParamsFor(s.preset.value_or(Preset::Medium)), s), kDdaa2Info,
-                         kDdaa2Members, s);
+    return applySettings(id, withFiltering(ddaa2ParamsFor(s.preset.value_or(Preset::Medium)), s), kDdaa2Params, s);
 }
 void intoDdaa2(ImageView<const Rgba8> in, ImageView<Rgba8> out, const MethodSettings& s, const Exec& e) {
     ddaa2(in, out, ddaa2Params("ddaa2", s), e);
@@ -219,7 +133,7 @@ ImageRgba8 refSsaax2(ImageView<const Rgba8> in, const MethodSettings& s, const E
 }
 MitchellParams mitchellParams(const MethodSettings& s) {
     rejectPreset("ssaax4", s);
-    return applySettings("ssaax4", MitchellParams{}, kMitchellInfo, kMitchellMembers, s);
+    return applySettings("ssaax4", MitchellParams{}, kMitchellParams, s);
 }
 void intoSsaax4(ImageView<const Rgba8> in, ImageView<Rgba8> out, const MethodSettings& s, const Exec& e) {
     ssaax4(in, out, mitchellParams(s), e);
@@ -236,21 +150,21 @@ const std::array<MethodInfo, 9> kMethods{{
     {"noaa", "ppaa", "no anti-aliasing: the input unchanged", "", {}, false, 1, allocating<intoNoaa, 1>, intoNoaa,
      allocating<intoNoaa, 1>},
     {"blur", "ppaa", "3x3 truncated Gaussian (sigma 0.6), the quality and speed baseline",
-     "DDAA paper section 3.1", kBlurInfo, false, 1, allocating<intoBlur, 1>, intoBlur, refBlur},
+     "DDAA paper section 3.1", kBlurParams, false, 1, allocating<intoBlur, 1>, intoBlur, refBlur},
     {"fxaa3c", "ppaa", "FXAA 3.11 console: direction from the diagonals, 4 taps, no edge search", kFxaaCite,
-     kFxaa3cInfo, true, 1, allocating<intoFxaa3c, 1>, intoFxaa3c, refFxaa3c},
-    {"fxaa3d", "ppaa", "FXAA 3.11 desktop: 12-step edge search with pixel skipping", kFxaaCite, kFxaa3dInfo, true, 1,
+     kFxaa3cParams, true, 1, allocating<intoFxaa3c, 1>, intoFxaa3c, refFxaa3c},
+    {"fxaa3d", "ppaa", "FXAA 3.11 desktop: 12-step edge search with pixel skipping", kFxaaCite, kFxaa3dParams, true, 1,
      allocating<intoFxaa3d, 1>, intoFxaa3d, refFxaa3d},
-    {"ddaa1", "ppaa", "DDAA 1: diffusion along the Scharr edge direction, no edge search", kDdaaCite, kDdaa1Info, true,
+    {"ddaa1", "ppaa", "DDAA 1: diffusion along the Scharr edge direction, no edge search", kDdaaCite, kDdaa1Params, true,
      1, allocating<intoDdaa1, 1>, intoDdaa1, refDdaa1},
     {"ddaa2", "ppaa", "DDAA 2: diffusion plus a clean batched edge search (the proposed method)", kDdaaCite,
-     kDdaa2Info, true, 1, allocating<intoDdaa2, 1>, intoDdaa2, refDdaa2},
+     kDdaa2Params, true, 1, allocating<intoDdaa2, 1>, intoDdaa2, refDdaa2},
     {"ssaax2", "resolve", "2x supersampling resolve: Mitchell filter in 12 bilinear reads (input: 2x render)",
      kMitchellCite, {}, false, 2, allocating<intoSsaax2, 2>, intoSsaax2, refSsaax2},
     {"ssaax4", "resolve", "4x supersampling resolve: direct Mitchell taps (input: 4x render)", kMitchellCite,
-     kMitchellInfo, false, 4, allocating<intoSsaax4, 4>, intoSsaax4, refSsaax4},
+     kMitchellParams, false, 4, allocating<intoSsaax4, 4>, intoSsaax4, refSsaax4},
     {"ddaa2p", "ppaa", "ddaa2 on the 2x render, then the ssaax2 resolve (input: 2x render)",
-     "DDAA paper section 4", kDdaa2Info, true, 2, allocating<intoDdaa2p, 2>, intoDdaa2p, refDdaa2p},
+     "DDAA paper section 4", kDdaa2Params, true, 2, allocating<intoDdaa2p, 2>, intoDdaa2p, refDdaa2p},
 }};
 
 }  // namespace

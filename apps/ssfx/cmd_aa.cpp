@@ -45,6 +45,15 @@ std::pair<std::string, double> parseParam(const std::string& text) {
     return {name, v};
 }
 
+std::pair<std::string, double> parseParam(const std::string& text, std::span<const ParamInfo> table,
+                                         std::string_view id) {
+    const auto eq = text.find('=');
+    if (eq == std::string::npos || eq == 0)
+        throw Error(fmt::format("parameter '{}' is not of the form NAME=VALUE", text));
+    const std::string name = text.substr(0, eq);
+    return {name, parseParamValue(findParam(table, id, name), std::string_view(text).substr(eq + 1), id)};
+}
+
 namespace {
 
 struct AaOptions {
@@ -79,7 +88,7 @@ void run(const AaOptions& o) {
         if (!settings.preset)
             throw Error(fmt::format("unknown preset '{}' (presets: low, medium, high, ultra, extreme)", o.preset));
     }
-    for (const auto& p : o.params) settings.params.push_back(parseParam(p));
+    for (const auto& p : o.params) settings.params.push_back(parseParam(p, methodById(o.method).params, o.method));
     if (o.filtering == "exact") settings.filtering = Filtering::Exact;
     const Exec exec{o.threads};
 

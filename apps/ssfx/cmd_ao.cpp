@@ -78,12 +78,14 @@ void run(const AoOptions& o, const CLI::App& cmd) {
     rp.raysPerPixel = o.rays;
     int guard = 0;
     for (const auto& text : o.params) {
-        const auto [name, value] = parseParam(text);
-        if (name == "guardBand") guard = rp.guardBand = wholeNumber(value, "guardBand", 0, 4096);
+        const std::span<const ParamInfo> table = o.method == "sao"       ? std::span<const ParamInfo>(ao::kSaoParams)
+                                                 : o.method == "alchemy" ? std::span<const ParamInfo>(ao::kAlchemyParams)
+                                                                         : std::span<const ParamInfo>(ao::kRaytracedParams);
+        const auto [name, value] = parseParam(text, table, o.method);
         if (o.method == "sao") ao::setParam(sp, name, value);
         else if (o.method == "alchemy") ao::setParam(ap, name, value);
-        else if (name == "radius") rp.radius = float(value);
-        else if (name != "guardBand") throw Error(fmt::format("raytraced: unknown parameter '{}' (radius, guardBand)", name));
+        else ssfx::setParam(ao::kRaytracedParams, &rp, "raytraced", name, value);
+        if (name == "guardBand") guard = int(value);  // checked by setParam: a whole number in range
     }
     if (o.method == "sao") ao::validate(sp);  // every parameter before any work
     if (o.method == "alchemy") ao::validate(ap);

@@ -23,21 +23,6 @@ struct DeferredOptions {
     bool reference = false;
 };
 
-void setParam(deferred::AdaptiveParams& p, const std::string& name, double v) {
-    const auto f = float(v);
-    if (name == "cDepth") p.cDepth = f;
-    else if (name == "cNormal") p.cNormal = f;
-    else if (name == "cShading") p.cShading = f;
-    else if (name == "tMin") p.tMin = f;
-    else if (name == "tEdge") p.tEdge = f;
-    else if (name == "specular") p.shading.specular = f;
-    else if (name == "shininess") p.shading.shininess = f;
-    else if (name == "maxAnisotropy") p.shading.maxAnisotropy = wholeNumber(v, "deferred: maxAnisotropy");  // range: shading's check
-    else
-        throw Error(fmt::format("deferred: unknown parameter '{}' (cDepth, cNormal, cShading, tMin, tEdge, specular, "
-                                "shininess, maxAnisotropy)", name));
-}
-
 void run(const DeferredOptions& o) {
     if (o.scene.empty()) throw Error("no scene given (--scene atrium | cornell | FILE.json | MODEL)");
     if (o.out.empty()) throw Error("no output folder given (--out DIR)");
@@ -45,8 +30,8 @@ void run(const DeferredOptions& o) {
     deferred::AdaptiveParams p;
     p.shading.stall = o.stall;
     for (const auto& text : o.params) {
-        const auto [name, value] = parseParam(text);
-        setParam(p, name, value);
+        const auto [name, value] = parseParam(text, deferred::kAdaptiveParams, "deferred");
+        ssfx::setParam(deferred::kAdaptiveParams, &p, "deferred", name, value);
     }
     deferred::validate(p);
     const render::Scene scene = render::loadScene(o.scene);

@@ -23,7 +23,7 @@ void addMethodsCommand(CLI::App& app) {
             if (!m.citation.empty()) notes += m.citation;
             if (!notes.empty()) fmt::print("         {}\n", notes);
             for (const ParamInfo& p : m.params)
-                fmt::print("         -p {}={:<8g} [{:g}, {:g}]{}{}  {}\n", p.name, p.defaultValue, p.min, p.max,
+                fmt::print("         -p {}={:<8} {}{}{}  {}\n", p.name, p.valueText(p.defaultValue()), p.rangeText(),
                            p.unit.empty() ? "" : " ", p.unit, p.doc);
         }
     });

@@ -1,6 +1,6 @@
 // The explicit method registry (STYLE.md section 2): one table in src/registry.cpp lists
 // every method with its stable id, parameters and run functions. The CLI, benchmarks,
-// evaluation and property tests iterate methods(); --help text is generated from ParamInfo.
+// evaluation and property tests iterate methods(); --help text is generated from the parameter tables (core/params.hpp).
 #pragma once
 
 #include <optional>
@@ -13,20 +13,10 @@
 #include "ssfx/aa/presets.hpp"
 #include "ssfx/core/image.hpp"
 #include "ssfx/core/parallel.hpp"
+#include "ssfx/core/params.hpp"
 #include "ssfx/core/sample.hpp"
 
 namespace ssfx {
-
-enum class ParamKind { Float, Int, Bool };
-
-struct ParamInfo {
-    std::string_view name;  //!< as in the params struct (paper's names)
-    std::string_view unit;
-    double defaultValue;
-    double min, max;  //!< allowed range, inclusive (values outside are rejected)
-    ParamKind kind;
-    std::string_view doc;
-};
 
 //! How a method is configured at run time: a preset (threshold methods), then named overrides.
 struct MethodSettings {

@@ -23,7 +23,7 @@ HWY_EXPORT(BlurRows);
 namespace detail {
 
 BlurWeights blurWeights(const BlurParams& p) {
-    checkParam("blur", "sigma", p.sigma, 0.05, 10.0);
+    validateParams(kBlurParams, &p, "blur");
     BlurWeights w;
     w.w1 = std::exp(-1.0f / (2.0f * p.sigma * p.sigma));  // sigma 0.6: 0.2493522
     w.w2 = w.w1 * w.w1;

@@ -19,21 +19,11 @@ HWY_EXPORT(Ddaa1RowSimd);
 }  // namespace detail
 
 namespace detail {
-
-void validateDdaa1(const char* method, const Ddaa1Params& p) {
-    checkParam(method, "edgeThresholdMin", p.edgeThresholdMin, 0.0, 1.0);
-    checkParam(method, "edgeThreshold", p.edgeThreshold, 0.0, 1.0);
-    checkParam(method, "strength", p.strength, 0.0, 100.0);
-    checkParam(method, "maxDiffusion", p.maxDiffusion, 0.0, 1.0);
-    checkParam(method, "ridgeFactor", p.ridgeFactor, 0.0, 1000.0);
-    checkParam(method, "chromaWeight", p.chromaWeight, 0.0, 4.0);
-}
-
 namespace {
 void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Ddaa1Params& p, const Exec& exec, bool reference) {
     checkInput("ddaa1", in);
     checkOutput("ddaa1", in, out);
-    validateDdaa1("ddaa1", p);
+    validateParams(kDdaa1Params, &p, "ddaa1");
     const Texture tex(in, p.filtering);
     // The colour-aware measure (chromaWeight > 0) runs the scalar kernel, on all threads.
     const bool scalar = reference || p.chromaWeight != 0.0f;

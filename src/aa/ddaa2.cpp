@@ -140,10 +140,7 @@ bool searchReadsArePairReads(const Texture& tex, int rounds) {
 
 namespace {
 
-void validate(const Ddaa2Params& p) {
-    validateDdaa1("ddaa2", p);
-    checkParam("ddaa2", "searchRounds", p.searchRounds, 1, 5);
-}
+void validate(const Ddaa2Params& p) { validateParams(kDdaa2Params, &p, "ddaa2"); }
 
 void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Ddaa2Params& p, const Exec& exec, bool reference) {
     checkInput("ddaa2", in);

@@ -10,7 +10,6 @@
 
 namespace ssfx::aa::detail {
 
-void validateDdaa1(const char* method, const Ddaa1Params& p);
 
 //! True when every read of ddaa2's edge search on an image of this size equals a pair-plane
 //! value (then the vector kernel runs; otherwise the scalar one). In ddaa2.cpp.

@@ -23,13 +23,7 @@ namespace {
 Rgb scale(const Rgb& a, float k) { return {a.r * k, a.g * k, a.b * k}; }
 Rgb add(const Rgb& a, const Rgb& b) { return {a.r + b.r, a.g + b.g, a.b + b.b}; }
 
-void validate(const Fxaa3cParams& p) {
-    checkParam("fxaa3c", "edgeThresholdMin", p.edgeThresholdMin, 0.0, 1.0);
-    checkParam("fxaa3c", "edgeThreshold", p.edgeThreshold, 0.0, 1.0);
-    checkParam("fxaa3c", "edgeSharpness", p.edgeSharpness, 1.0, 64.0);
-    checkParam("fxaa3c", "diagonalOffset", p.diagonalOffset, 1e-3, 2.0);
-    checkParam("fxaa3c", "chromaWeight", p.chromaWeight, 0.0, 4.0);
-}
+void validate(const Fxaa3cParams& p) { validateParams(kFxaa3cParams, &p, "fxaa3c"); }
 
 void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Fxaa3cParams& p, const Exec& exec, bool reference) {
     checkInput("fxaa3c", in);

@@ -137,12 +137,7 @@ Rgb fxaa3dPixel(const Texture& tex, int x, int y, const Luma3x3& n, float range,
     return s.horizontal ? tex.sample(u, v + offset * lengthSign) : tex.sample(u + offset * lengthSign, v);
 }
 
-void validate(const Fxaa3dParams& p) {
-    checkParam("fxaa3d", "edgeThresholdMin", p.edgeThresholdMin, 0.0, 1.0);
-    checkParam("fxaa3d", "edgeThreshold", p.edgeThreshold, 0.0, 1.0);
-    checkParam("fxaa3d", "subpix", p.subpix, 0.0, 1.0);
-    checkParam("fxaa3d", "chromaWeight", p.chromaWeight, 0.0, 4.0);
-}
+void validate(const Fxaa3dParams& p) { validateParams(kFxaa3dParams, &p, "fxaa3d"); }
 
 void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Fxaa3dParams& p, const Exec& exec, bool reference) {
     checkInput("fxaa3d", in);

@@ -16,13 +16,6 @@
 
 namespace ssfx::aa::detail {
 
-//! Rejects (never clamps) a parameter outside [lo, hi]; NaN is outside every range.
-inline void checkParam(const char* method, const char* name, double value, double lo, double hi) {
-    if (!(value >= lo && value <= hi))
-        throw Error(fmt::format("{}: parameter {} = {} is outside the allowed range [{}, {}]", method, name, value,
-                                lo, hi));
-}
-
 inline void checkInput(const char* method, ImageView<const Rgba8> in) {
     checkDimensions(in.width(), in.height(), fmt::format("{} input", method));
 }

@@ -28,10 +28,7 @@ float mitchell(float t, float B, float C) {
 
 namespace {
 
-void checkMitchell(const char* method, const MitchellParams& p) {
-    detail::checkParam(method, "B", p.B, 0.0, 1.0);
-    detail::checkParam(method, "C", p.C, 0.0, 1.0);
-}
+void checkMitchell(const char* method, const MitchellParams& p) { validateParams(kMitchellParams, &p, method); }
 
 // Tap offsets (source pixels) and weights of the 12-read x2 resolve (spec, B = C = 1/3).
 struct Tap2 {

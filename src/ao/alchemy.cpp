@@ -27,35 +27,12 @@ struct AlchemyEstimator {
 }  // namespace
 
 void validate(const AlchemyParams& p) {
-    detail::checkRange("alchemy", "radius", p.radius, 1e-6f, 100.0f);
-    detail::checkRange("alchemy", "sigma", p.sigma, 0.0f, 100.0f);
-    detail::checkRange("alchemy", "beta", p.beta, 0.0f, 1.0f);
-    detail::checkRange("alchemy", "epsilon", p.epsilon, 1e-9f, 1.0f);
-    detail::checkRange("alchemy", "k", p.k, 0.0f, 10.0f);
-    detail::checkRange("alchemy", "numSamples", p.numSamples, 1, 64);
-    detail::checkRange("alchemy", "numSpiralTurns", p.numSpiralTurns, 1, 64);
-    detail::checkRange("alchemy", "guardBand", p.guardBand, 0, 4096);
-    SaoParams blurCheck;
-    blurCheck.blur = p.blur;
-    validate(blurCheck);
+    validateParams(kAlchemyParams, &p, "alchemy");
+    detail::checkBilateral("alchemy", p.blur);
 }
 
 void setParam(AlchemyParams& p, const std::string& name, double v) {
-    const auto f = float(v);
-    auto i = [&] { return detail::intParam("alchemy", name, v); };
-    if (name == "radius") p.radius = f;
-    else if (name == "sigma") p.sigma = f;
-    else if (name == "beta") p.beta = f;
-    else if (name == "epsilon") p.epsilon = f;
-    else if (name == "k") p.k = f;
-    else if (name == "numSamples") p.numSamples = i();
-    else if (name == "numSpiralTurns") p.numSpiralTurns = i();
-    else if (detail::setBlurParam("alchemy", p.blur, name, v)) return;
-    else if (name == "guardBand") p.guardBand = i();
-    else
-        throw Error(fmt::format("alchemy: unknown parameter '{}' (radius, sigma, beta, epsilon, k, numSamples, "
-                                "numSpiralTurns, {}, guardBand)",
-                                name, detail::kBlurParamNames));
+    ssfx::setParam(kAlchemyParams, &p, "alchemy", name, v);
 }
 
 namespace {

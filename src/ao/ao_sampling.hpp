@@ -18,40 +18,11 @@
 
 namespace ssfx::ao::detail {
 
-//! Throws ssfx::Error "METHOD: NAME = V is not in [LO, HI]" (NaN fails too).
-template <class T>
-void checkRange(const char* method, const char* name, T v, T lo, T hi) {
-    if (!(v >= lo && v <= hi)) throw Error(fmt::format("{}: {} = {} is not in [{}, {}]", method, name, v, lo, hi));
+//! The bilateral blur's rule across fields (the table checks each field's range).
+inline void checkBilateral(const char* method, const BilateralParams& b) {
+    if (b.blurReleasedWeights && b.blurRadius > 4)
+        throw Error(fmt::format("{}: blurReleasedWeights has weights for blurRadius <= 4 (got {})", method, b.blurRadius));
 }
-
-//! A boolean parameter given as a number: 0 or 1, anything else is an error naming it.
-inline bool boolParam(const char* method, const std::string& name, double v) {
-    if (v != 0.0 && v != 1.0) throw Error(fmt::format("{}: {} = {} is not 0 or 1", method, name, v));
-    return v != 0.0;
-}
-
-//! An integer parameter given as a number: a finite whole number in int's range, anything
-//! else (10.4, nan, 4294967297) is an error naming it, never rounded, truncated or wrapped.
-inline int intParam(const char* method, const std::string& name, double v) {
-    return wholeNumber(v, fmt::format("{}: {}", method, name));
-}
-
-//! Sets a BlurParams field by name; false for a name that is not one of them.
-inline bool setBlurParam(const char* method, BlurParams& b, const std::string& name, double v) {
-    if (name == "blurRadius") b.blurRadius = intParam(method, name, v);
-    else if (name == "blurStride") b.blurStride = intParam(method, name, v);
-    else if (name == "blurSigma") b.blurSigma = float(v);
-    else if (name == "edgeSharpness") b.edgeSharpness = float(v);
-    else if (name == "blurReleasedWeights") b.blurReleasedWeights = boolParam(method, name, v);
-    else if (name == "blurZeroOutside") b.blurZeroOutside = boolParam(method, name, v);
-    else if (name == "blurEpsilon") b.blurEpsilon = float(v);
-    else return false;
-    return true;
-}
-
-//! The blur parameters' names, for the unknown-parameter messages.
-inline constexpr const char* kBlurParamNames =
-    "blurRadius, blurStride, blurSigma, edgeSharpness, blurReleasedWeights, blurZeroOutside, blurEpsilon";
 
 inline Vec3 sub(Vec3 a, Vec3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
 inline float dot(Vec3 a, Vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }

@@ -46,12 +46,12 @@ Vec3d primaryRay(const Projection& proj, float px, float py) {
     return normalize({p.x, p.y, p.z});
 }
 
+void validate(const RaytracedParams& p) { validateParams(kRaytracedParams, &p, "raytraced"); }
+
 ImageF raytraced(const RayScene& scene, const Camera& camera, int width, int height, const RaytracedParams& p,
                  const Exec& exec) {
-    if (!(p.radius > 0 && p.radius <= 100)) throw Error(fmt::format("raytraced: radius {} is not in (0, 100]", p.radius));
-    if (p.raysPerPixel < 1 || p.raysPerPixel > 65536)
-        throw Error(fmt::format("raytraced: raysPerPixel {} is not in [1, 65536]", p.raysPerPixel));
-    if (p.guardBand < 0 || width <= 2 * p.guardBand || height <= 2 * p.guardBand)
+    validate(p);
+    if ( width <= 2 * p.guardBand || height <= 2 * p.guardBand)
         throw Error(fmt::format("raytraced: no pixels inside a guard band of {} in {}x{}", p.guardBand, width, height));
     const Projection proj = projection(camera, width, height);
     const int g = p.guardBand, w = width - 2 * g, h = height - 2 * g;

@@ -57,26 +57,9 @@ float hashAngle(int x, int y) {
 }
 
 void validate(const SaoParams& p) {
-    detail::checkRange("sao", "radius", p.radius, 1e-6f, 100.0f);
-    detail::checkRange("sao", "bias", p.bias, 0.0f, 1.0f);
-    detail::checkRange("sao", "epsilon", p.epsilon, 1e-9f, 1.0f);
-    detail::checkRange("sao", "intensity", p.intensity, 0.0f, 10.0f);
-    detail::checkRange("sao", "numSamples", p.numSamples, 1, 64);
-    detail::checkRange("sao", "numSpiralTurns", p.numSpiralTurns, 1, 64);
-    detail::checkRange("sao", "logQ", p.logQ, 0, 8);
-    detail::checkRange("sao", "maxMip", p.maxMip, 0, 16);
-    detail::checkRange("sao", "quadThreshold", p.quadThreshold, 0.0f, 10.0f);
-    detail::checkRange("sao", "blurRadius", p.blur.blurRadius, 0, 8);
-    detail::checkRange("sao", "blurStride", p.blur.blurStride, 1, 8);
-    detail::checkRange("sao", "blurSigma", p.blur.blurSigma, 1e-3f, 16.0f);
-    detail::checkRange("sao", "edgeSharpness", p.blur.edgeSharpness, 0.0f, 1e6f);
-    detail::checkRange("sao", "blurEpsilon", p.blur.blurEpsilon, 0.0f, 1.0f);
-    if (p.blur.blurReleasedWeights && p.blur.blurRadius > 4)
-        throw Error(fmt::format("sao: blurReleasedWeights has weights for blurRadius <= 4 (got {})", p.blur.blurRadius));
-    detail::checkRange("sao", "guardBand", p.guardBand, 0, 4096);
-    detail::checkRange("sao", "packZMin", p.packZMin, -1e5f, -1e-3f);
+    validateParams(kSaoParams, &p, "sao");
+    detail::checkBilateral("sao", p.blur);
     if (p.releasedPacking && !p.packBlurInput) throw Error("sao: releasedPacking needs packBlurInput = 1");
-    detail::checkRange("sao", "spiralTurnAngle", p.spiralTurnAngle, 6.0, 6.5);
 }
 
 SaoParams saoPreset(const std::string& name) {
@@ -123,35 +106,7 @@ float packZ(float z, float zMin) {
     return k * zMin;
 }
 
-void setParam(SaoParams& p, const std::string& name, double v) {
-    const auto f = float(v);
-    auto i = [&] { return detail::intParam("sao", name, v); };
-    auto flag = [&] { return detail::boolParam("sao", name, v); };
-    if (name == "radius") p.radius = f;
-    else if (name == "bias") p.bias = f;
-    else if (name == "epsilon") p.epsilon = f;
-    else if (name == "intensity") p.intensity = f;
-    else if (name == "numSamples") p.numSamples = i();
-    else if (name == "numSpiralTurns") p.numSpiralTurns = i();
-    else if (name == "logQ") p.logQ = i();
-    else if (name == "maxMip") p.maxMip = i();
-    else if (name == "usePyramid") p.usePyramid = flag();
-    else if (name == "quadThreshold") p.quadThreshold = f;
-    else if (detail::setBlurParam("sao", p.blur, name, v)) return;
-    else if (name == "guardBand") p.guardBand = i();
-    else if (name == "packBlurInput") p.packBlurInput = flag();
-    else if (name == "packZMin") p.packZMin = f;
-    else if (name == "releasedPacking") p.releasedPacking = flag();
-    else if (name == "spiralTurnAngle") p.spiralTurnAngle = v;
-    else if (name == "spinInFloat") p.spinInFloat = flag();
-    else if (name == "linearIntensity") p.linearIntensity = flag();
-    else
-        throw Error(fmt::format("sao: unknown parameter '{}' (radius, bias, epsilon, intensity, numSamples, "
-                                "numSpiralTurns, logQ, maxMip, usePyramid, quadThreshold, {}, guardBand, "
-                                "packBlurInput, packZMin, releasedPacking, spiralTurnAngle, spinInFloat, "
-                                "linearIntensity)",
-                                name, detail::kBlurParamNames));
-}
+void setParam(SaoParams& p, const std::string& name, double v) { ssfx::setParam(kSaoParams, &p, "sao", name, v); }
 
 namespace {
 void samplePassImpl(const ZPyramid& pyramid, const Projection& proj, Region region, const SaoParams& p,
@@ -250,14 +205,14 @@ void quadBilateral(ImageF& a, ImageView<const float> z, Region region, float thr
     });
 }
 
-ImageF bilateralPass(const ImageF& a, ImageView<const float> z, Region region, const BlurParams& p, bool horizontal,
+ImageF bilateralPass(const ImageF& a, ImageView<const float> z, Region region, const BilateralParams& p, bool horizontal,
                      const Exec& exec) {
     ImageF out;
     bilateralPass(a, z, region, p, horizontal, out, exec);
     return out;
 }
 
-void bilateralPass(const ImageF& a, ImageView<const float> z, Region region, const BlurParams& p, bool horizontal,
+void bilateralPass(const ImageF& a, ImageView<const float> z, Region region, const BilateralParams& p, bool horizontal,
                    ImageF& out, const Exec& exec) {
     // Section 2.4: spatial weights times max(0, 1 - k |dz|); sky does not contribute. Taps in
     // summation order with their spatial weights: t = -R..R with exp(-t^2 / (2 sigma^2)) (the

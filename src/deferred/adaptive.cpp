@@ -29,13 +29,7 @@ float lumaOf(const glm::vec3& c) {
 
 }  // namespace
 
-void validate(const AdaptiveParams& p) {
-    for (auto [name, v] : {std::pair{"cDepth", p.cDepth}, {"cNormal", p.cNormal}, {"cShading", p.cShading}})
-        if (!(v >= 0.0f && v <= 1e9f)) throw Error(fmt::format("adaptive: {} = {} is not in [0, 1e9]", name, v));
-    for (auto [name, v] : {std::pair{"tMin", p.tMin}, {"tEdge", p.tEdge}})
-        if (!(v >= 0.0f && v <= 1.0f)) throw Error(fmt::format("adaptive: {} = {} is not in [0, 1]", name, v));
-    validate(p.shading);
-}
+void validate(const AdaptiveParams& p) { validateParams(kAdaptiveParams, &p, "adaptive"); }
 
 std::vector<int> ditherMatrix(int m) {
     // Bayer (1973) index matrices as printed in the paper's Figure 3 (rows top to bottom).

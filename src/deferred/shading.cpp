@@ -43,12 +43,13 @@ ImageF absoluteError(const ImageRgbF& a, const ImageRgbF& b) {
 }
 
 void validate(const ShadingParams& p) {
-    if (!(p.specular >= 0.0f && p.specular <= 1.0f)) throw Error(fmt::format("shading: specular {} is not in [0, 1]", p.specular));
-    if (!(p.shininess >= 1.0f && p.shininess <= 10000.0f))
-        throw Error(fmt::format("shading: shininess {} is not in [1, 10000]", p.shininess));
-    if (p.maxAnisotropy < 1 || p.maxAnisotropy > 16)
-        throw Error(fmt::format("shading: maxAnisotropy {} is not in [1, 16]", p.maxAnisotropy));
-    if (p.stall < 0 || p.stall > 10'000'000) throw Error(fmt::format("shading: stall {} is not in [0, 10^7]", p.stall));
+    // The shading rows alone: a table over a struct that only holds a ShadingParams.
+    struct Only {
+        ShadingParams shading;
+    };
+    static constexpr auto kRows = shadingRows<&Only::shading>();
+    const Only only{p};
+    validateParams(kRows, &only, "shading");
 }
 
 SampleShader::SampleShader(const render::Scene& scene, const render::GBuffer& g, const ShadingParams& params)

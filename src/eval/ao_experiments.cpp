@@ -158,7 +158,7 @@ std::string releasedComparison(const std::vector<AoRenderedScene>& entries, int 
     configs[2].p.radius = 1.0f;
     {
         const ao::SaoParams r = ao::saoPreset("released");
-        ao::BlurParams& b = configs[3].p.blur;
+        ao::BilateralParams& b = configs[3].p.blur;
         b = r.blur;
         b.edgeSharpness = r.blur.edgeSharpness / -r.packZMin;  // per key unit -> per metre
     }

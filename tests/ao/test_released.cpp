@@ -120,7 +120,7 @@ TEST(Released, BlurWeightsZeroOutsideAndEpsilonByHand) {
     ImageF a(5, 1), z(5, 1, -2.0f);
     const float av[5] = {0.2f, 0.0f, 1.0f, 0.0f, 0.4f};
     for (int i = 0; i < 5; ++i) a(i, 0) = av[i];
-    BlurParams p;
+    BilateralParams p;
     p.blurRadius = 1, p.blurStride = 1, p.blurReleasedWeights = true, p.blurEpsilon = 1e-4f;
     const float w0 = 0.153170f, w1 = 0.3f + 0.144893f;  // centre gaussian[0], taps 0.3 + gaussian[1]
     // Centre first, then t = -1, +1 (the released loop's order), in float.
@@ -157,7 +157,7 @@ TEST(Released, BlurWeightsZeroOutsideAndEpsilonByHand) {
         const float lv[5] = {164, 254, 242, 58, 12};
         ImageF a2(5, 1), z2(5, 1, -2.0f);
         for (int i = 0; i < 5; ++i) a2(i, 0) = lv[i] / 255.0f;
-        BlurParams q;
+        BilateralParams q;
         q.blurRadius = 2, q.blurStride = 1, q.blurReleasedWeights = true, q.blurEpsilon = 1e-4f;
         const float w2 = 0.3f + 0.122649f;
         const float wt[5] = {w2, w1, w0, w1, w2};

@@ -412,7 +412,7 @@ TEST(Sao, BlurPassIsThePerPixelFormula) {
     for (float k : {0.0f, 300.0f, 2048.0f})
         for (int radius : {0, 1, 3, 8})
             for (bool horizontal : {true, false}) {
-                BlurParams p;
+                BilateralParams p;
                 p.blurRadius = radius;
                 p.blurStride = radius == 8 ? 5 : 3;
                 p.edgeSharpness = k;

@@ -9,6 +9,7 @@
 #include "ssfx/core/error.hpp"
 #include "ssfx/deferred/adaptive.hpp"
 #include "ssfx/deferred/sampler.hpp"
+#include "support/param_tables.hpp"
 
 namespace ssfx::test {
 namespace {
@@ -143,6 +144,11 @@ TEST(Adaptive, FlatRegionsShadeOneSample) {
     for (auto k : a.samples.pixels()) EXPECT_EQ(k, 1);
     EXPECT_EQ(a.shaded, 8 * 6);
     EXPECT_DOUBLE_EQ(a.shadedPercent(), 100.0 / 16.0);
+}
+
+TEST(Adaptive, ParamTable) {
+    checkParamTable<deferred::AdaptiveParams>(deferred::kAdaptiveParams, "adaptive",
+                                              [](const deferred::AdaptiveParams& p) { deferred::validate(p); });
 }
 
 TEST(Adaptive, BadParametersAreRejected) {

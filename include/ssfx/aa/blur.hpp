@@ -2,13 +2,20 @@
 // ppaa.md "blur"). Speed reports normalise to it (blur = 100).
 #pragma once
 
+#include <array>
+
 #include "ssfx/core/image.hpp"
+#include "ssfx/core/params.hpp"
 #include "ssfx/core/parallel.hpp"
 
 namespace ssfx::aa {
 
 struct BlurParams {
-    float sigma = 0.6f;  //!< Gaussian sigma in pixels, (0.05, 10]; 0.6 gives w1 = 0.2493522
+    float sigma = 0.6f;  //!< Gaussian sigma in pixels; 0.6 gives w1 = 0.2493522
+};
+//! BlurParams' table (params.hpp): ranges, docs; defaults are the initialisers above.
+inline constexpr std::array kBlurParams{
+    real<&BlurParams::sigma>("sigma", "px", 0.05, 10, "Gaussian sigma"),
 };
 
 //! Blurs RGB; alpha is copied from the centre pixel. Clamp-to-edge at the borders.

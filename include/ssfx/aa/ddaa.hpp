@@ -4,7 +4,10 @@
 // 2x render followed by the ssaax2 resolve (section 4). Semantics: spec ppaa.md section 2.
 #pragma once
 
+#include <array>
+
 #include "ssfx/aa/presets.hpp"
+#include "ssfx/core/params.hpp"
 #include "ssfx/core/image.hpp"
 #include "ssfx/core/parallel.hpp"
 #include "ssfx/core/sample.hpp"
@@ -12,23 +15,42 @@
 namespace ssfx::aa {
 
 struct Ddaa1Params {
-    float edgeThresholdMin = 0.0625f;  //!< [0, 1] absolute luma contrast needed (preset "medium")
-    float edgeThreshold = 0.166f;      //!< [0, 1] contrast relative to the local max luma
-    float strength = 3.0f;             //!< [0, 100] DDAA_STRENGTH: diffusion = min(1, strength*sqrt(|e|))
-    float maxDiffusion = 0.51f;        //!< [0, 1] px; largest sample offset (paper Fig. 5: ~half a pixel)
-    float ridgeFactor = 10.0f;         //!< [0, 1000] small-structure preservation (section 2.2)
-    //! [0, 4] opt-in colour-aware contrast (our extension, spec section 4): edges are found on
-    //! luma + chromaWeight * chroma (ssfx::edgeLuma) so equal-luma colours differ. 0 = the
-    //! paper's luma (default, outputs unchanged). Non-zero runs the scalar kernel.
-    float chromaWeight = 0.0f;
+    float edgeThresholdMin = 0.0625f;  //!< absolute luma contrast needed (preset "medium")
+    float edgeThreshold = 0.166f;      //!< contrast relative to the local max luma
+    float strength = 3.0f;             //!< DDAA_STRENGTH: diffusion = min(1, strength*sqrt(|e|))
+    float maxDiffusion = 0.51f;        //!< px; largest sample offset (paper Fig. 5: ~half a pixel)
+    float ridgeFactor = 10.0f;         //!< small-structure preservation (section 2.2)
+    float chromaWeight = 0.0f;         //!< as Fxaa3cParams::chromaWeight
     Filtering filtering = Filtering::Gpu;
 };
 
 struct Ddaa2Params : Ddaa1Params {
     //! Edge search: samples per round (EDGE_STEP_LIST = [3,3,3,3,3], 15 px per side). The
     //! batch of 3 is the paper's tuned value (section 2.5); rounds set the reach.
-    int searchRounds = 5;  //!< [1, 5]
+    int searchRounds = 5;
 };
+namespace detail {
+// P is Ddaa1Params or Ddaa2Params: the rows bind Ddaa1Params' members in a P (and read P's
+// defaults).
+template <class P>
+constexpr std::array<ParamInfo, 5> ddaa1Rows() {
+    return {{
+        realIn<P, &Ddaa1Params::edgeThresholdMin>("edgeThresholdMin", "luma", 0, 1, kEdgeThresholdMinDoc),
+        realIn<P, &Ddaa1Params::edgeThreshold>("edgeThreshold", "ratio", 0, 1, kEdgeThresholdDoc),
+        realIn<P, &Ddaa1Params::strength>("strength", "", 0, 100,
+                                             "DDAA_STRENGTH: diffusion = min(1, strength * sqrt(|gradient|))"),
+        realIn<P, &Ddaa1Params::maxDiffusion>("maxDiffusion", "px", 0, 1, "largest diffusion offset"),
+        realIn<P, &Ddaa1Params::ridgeFactor>("ridgeFactor", "", 0, 1000,
+                                                "small-structure preservation: ridges/valleys diffuse less"),
+    }};
+}
+}  // namespace detail
+//! Ddaa1Params' and Ddaa2Params' tables (params.hpp); the defaults are the initialisers above.
+inline constexpr auto kDdaa1Params = concat(detail::ddaa1Rows<Ddaa1Params>(), std::array{
+    real<&Ddaa1Params::chromaWeight>("chromaWeight", "", 0, 4, kChromaWeightDoc)});
+inline constexpr auto kDdaa2Params = concat(detail::ddaa1Rows<Ddaa2Params>(), std::array{
+    integer<&Ddaa2Params::searchRounds>("searchRounds", "", 1, 5, "edge-search rounds of 3 pixels per side"),
+    realIn<Ddaa2Params, &Ddaa1Params::chromaWeight>("chromaWeight", "", 0, 4, kChromaWeightDoc)});
 
 Ddaa1Params ddaa1ParamsFor(Preset p);
 Ddaa2Params ddaa2ParamsFor(Preset p);

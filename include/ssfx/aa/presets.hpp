@@ -32,6 +32,12 @@ inline constexpr std::array<PresetInfo, 5> kPresets = {{
     {Preset::Extreme, "extreme", {0.0078f, 0.031f}, "every edge; slowest"},
 }};
 
+//! The docs of the threshold parameters, shared by the four methods' tables.
+inline constexpr std::string_view kEdgeThresholdMinDoc = "absolute luma contrast below which a pixel is left unchanged";
+inline constexpr std::string_view kEdgeThresholdDoc = "contrast threshold relative to the local maximum luma";
+inline constexpr std::string_view kChromaWeightDoc =
+    "opt-in colour-aware contrast: luma + chromaWeight * (max - min of RGB); 0 = luma";
+
 inline constexpr EdgeThresholds thresholdsFor(Preset p) {
     for (const auto& i : kPresets)
         if (i.preset == p) return i.thresholds;

@@ -3,15 +3,23 @@
 // way the DDAA paper's reference shaders do (spec ppaa.md, "ssaax2, ssaax4" and "Upsampling").
 #pragma once
 
+#include <array>
+
 #include "ssfx/core/image.hpp"
+#include "ssfx/core/params.hpp"
 #include "ssfx/core/parallel.hpp"
 #include "ssfx/core/sample.hpp"
 
 namespace ssfx::aa {
 
 struct MitchellParams {
-    float B = 1.0f / 3.0f;  //!< [0, 1] Mitchell-Netravali B (blur); 1/3 is their recommendation
-    float C = 1.0f / 3.0f;  //!< [0, 1] Mitchell-Netravali C (ringing)
+    float B = 1.0f / 3.0f;  //!< Mitchell-Netravali B (blur); 1/3 is their recommendation
+    float C = 1.0f / 3.0f;  //!< Mitchell-Netravali C (ringing)
+};
+//! MitchellParams' table (params.hpp); the defaults are the initialisers above.
+inline constexpr std::array kMitchellParams{
+    real<&MitchellParams::B>("B", "", 0, 1, "Mitchell-Netravali B"),
+    real<&MitchellParams::C>("C", "", 0, 1, "Mitchell-Netravali C"),
 };
 
 //! The 1-D Mitchell-Netravali kernel k(t) (support |t| < 2).

@@ -15,16 +15,30 @@
 namespace ssfx::ao {
 
 struct AlchemyParams {
-    float radius = 1.0f;     //!< (0, 100] m: world-space sample radius
-    float sigma = 1.0f;      //!< [0, 100]: sigma, intensity scale ("chosen for aesthetics")
-    float beta = 1e-4f;      //!< [0, 1]: bias per metre of depth (z_C beta), AlchemyAO's 10^-4
-    float epsilon = 1e-4f;   //!< (0, 1] m^2: AlchemyAO's 0.0001
-    float k = 1.0f;          //!< [0, 10]: contrast exponent
-    int numSamples = 12;     //!< [1, 64]: s (AlchemyAO: 12)
-    int numSpiralTurns = 5;  //!< [1, 64]: spiralTurnsFor(12)
-    BlurParams blur;
-    int guardBand = 0;       //!< [0, 4096] px on each side not output
+    float radius = 1.0f;     //!< m: world-space sample radius
+    float sigma = 1.0f;      //!< sigma, intensity scale ("chosen for aesthetics")
+    float beta = 1e-4f;      //!< bias per metre of depth (z_C beta), AlchemyAO's 10^-4
+    float epsilon = 1e-4f;   //!< m^2: AlchemyAO's 0.0001
+    float k = 1.0f;          //!< contrast exponent
+    int numSamples = 12;     //!< s (AlchemyAO: 12)
+    int numSpiralTurns = 5;  //!< spiralTurnsFor(12)
+    BilateralParams blur;
+    int guardBand = 0;       //!< px on each side not output
 };
+//! AlchemyParams' table (core/params.hpp); the defaults are the initialisers.
+inline constexpr auto kAlchemyParams = concat(
+    std::array{
+        real<&AlchemyParams::radius>("radius", "m", 1e-6, 100, "world-space sample radius"),
+        real<&AlchemyParams::sigma>("sigma", "", 0, 100, "intensity scale"),
+        real<&AlchemyParams::beta>("beta", "1/m", 0, 1, "bias per metre of depth (z_C beta)"),
+        real<&AlchemyParams::epsilon>("epsilon", "m^2", 1e-9, 1, "keeps the estimator finite"),
+        real<&AlchemyParams::k>("k", "", 0, 10, "contrast exponent"),
+        integer<&AlchemyParams::numSamples>("numSamples", "", 1, 64, "s, taps per pixel"),
+        integer<&AlchemyParams::numSpiralTurns>("numSpiralTurns", "", 1, 64, "turns of the tap spiral"),
+    },
+    concat(bilateralRows<&AlchemyParams::blur>(),
+           std::array{integer<&AlchemyParams::guardBand>("guardBand", "px", 0, 4096,
+                                                         "guard band on each side, not output")}));
 
 void validate(const AlchemyParams& p);
 //! Sets a field by name (blur fields as for SaoParams); throws ssfx::Error for an unknown one.

@@ -11,6 +11,9 @@
 // Geometry must therefore have d < 1, which a rasteriser guarantees (d = 1 is clipped).
 #pragma once
 
+#include <array>
+#include <string_view>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -77,6 +80,9 @@ enum class PyramidFilter {
     Min,           //!< most negative z of the block (farthest)
     Max,           //!< least negative z (nearest)
 };
+//! The filters' names, in the enum's order (SaoParams::pyramidFilter's choices).
+inline constexpr std::array<std::string_view, 5> kPyramidFilterNames{"rotated-grid", "mean", "harmonic-mean", "min",
+                                                                     "max"};
 
 //! Levels 0..maxMip: level 0 is `z`, each next level half the size (rounding down, at
 //! least 1). Reads beyond the previous level's edge are clamped.

@@ -11,9 +11,12 @@
 // Embree meshes with the scene renderer.
 #pragma once
 
+#include <array>
+
 #include <cstdint>
 
 #include "ssfx/ao/depth.hpp"
+#include "ssfx/core/params.hpp"
 #include "ssfx/core/image.hpp"
 #include "ssfx/core/parallel.hpp"
 
@@ -42,10 +45,18 @@ public:
 };
 
 struct RaytracedParams {
-    float radius = 1.0f;        //!< (0, 100] m: r, as SAO's
-    int raysPerPixel = 256;     //!< [1, 65536] cosine-weighted rays per pixel
-    int guardBand = 0;          //!< [0, 4096] px on each side not output (as SAO's)
+    float radius = 1.0f;        //!< m: r, as SAO's
+    int raysPerPixel = 256;     //!< cosine-weighted rays per pixel
+    int guardBand = 0;          //!< px on each side not output (as SAO's)
 };
+//! RaytracedParams' table (core/params.hpp); the defaults are the initialisers.
+inline constexpr std::array kRaytracedParams{
+    real<&RaytracedParams::radius>("radius", "m", 1e-6, 100, "occlusion radius r, as SAO's"),
+    integer<&RaytracedParams::raysPerPixel>("raysPerPixel", "", 1, 65536, "cosine-weighted rays per pixel"),
+    integer<&RaytracedParams::guardBand>("guardBand", "px", 0, 4096, "guard band on each side, not output"),
+};
+//! Throws ssfx::Error naming the first field outside its range (kRaytracedParams).
+void validate(const RaytracedParams& p);
 
 //! A for every pixel of the inner region of a width x height image seen by `camera`.
 //! Sky pixels (no primary hit, or the hit at or beyond a finite far plane, where a

@@ -18,17 +18,28 @@ namespace ssfx::deferred {
 struct AdaptiveParams {
     //! Metric constants c (paper section 3.1; scene dependent). Depth is camera-space
     //! distance in metres (background: kBackgroundDepth), so cDepth is per square metre.
-    float cDepth = 16.0f;    //!< [0, 1e9]: a 1 m step between half the samples gives k = 4
-    float cNormal = 24.0f;   //!< [0, 1e9]
-    float cShading = 64.0f;  //!< [0, 1e9]
+    float cDepth = 16.0f;    //!< a 1 m step between half the samples gives k = 4
+    float cNormal = 24.0f;
+    float cShading = 64.0f;
     //! The shading metric's early exit, FXAA's medium preset (ppaa.md section 1).
-    float tMin = 0.0625f;   //!< [0, 1] EDGE_THRESHOLD_MIN
-    float tEdge = 0.166f;   //!< [0, 1] EDGE_THRESHOLD_MAX
+    float tMin = 0.0625f;   //!< EDGE_THRESHOLD_MIN
+    float tEdge = 0.166f;   //!< EDGE_THRESHOLD_MAX
     ShadingParams shading;
     //! The paper's future work: shade per 8x8 tile with the pixels grouped by sample count
     //! (same result, another order; measured by ssfx eval deferred).
     bool tiled = false;
 };
+//! AdaptiveParams' table (core/params.hpp); the defaults are the initialisers.
+inline constexpr auto kAdaptiveParams = concat(
+    std::array{
+        real<&AdaptiveParams::cDepth>("cDepth", "1/m^2", 0, 1e9, "depth metric constant (section 3.1)"),
+        real<&AdaptiveParams::cNormal>("cNormal", "", 0, 1e9, "normal metric constant (section 3.1)"),
+        real<&AdaptiveParams::cShading>("cShading", "", 0, 1e9, "shading metric constant (section 3.1)"),
+        real<&AdaptiveParams::tMin>("tMin", "luma", 0, 1, "shading metric's early exit: EDGE_THRESHOLD_MIN"),
+        real<&AdaptiveParams::tEdge>("tEdge", "ratio", 0, 1, "shading metric's early exit: EDGE_THRESHOLD_MAX"),
+        boolean<&AdaptiveParams::tiled>("tiled", "shade per 8x8 tile grouped by sample count (same result)"),
+    },
+    shadingRows<&AdaptiveParams::shading>());
 void validate(const AdaptiveParams& p);
 
 //! Depth that background samples count with in the depth metric: any window mixing

@@ -5,11 +5,14 @@
 // sample stands for; and an optional artificial cost per sample ("stall").
 #pragma once
 
+#include <array>
+
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <vector>
 
 #include "ssfx/ao/depth.hpp"
+#include "ssfx/core/params.hpp"
 #include "ssfx/core/image.hpp"
 #include "ssfx/render/renderer.hpp"
 
@@ -33,11 +36,22 @@ double mse(const ImageRgbF& a, const ImageRgbF& b);
 ImageF absoluteError(const ImageRgbF& a, const ImageRgbF& b);
 
 struct ShadingParams {
-    float specular = 0.25f;   //!< [0, 1]: Blinn-Phong specular colour (white, times the light)
-    float shininess = 40.0f;  //!< [1, 10000]: Blinn-Phong exponent
-    int maxAnisotropy = 16;   //!< [1, 16]: probes of the anisotropic lookup
-    int stall = 0;            //!< [0, 10^7]: extra dependent integer operations per shaded sample
+    float specular = 0.25f;   //!< Blinn-Phong specular colour (white, times the light)
+    float shininess = 40.0f;  //!< Blinn-Phong exponent
+    int maxAnisotropy = 16;   //!< probes of the anisotropic lookup
+    int stall = 0;            //!< extra dependent integer operations per shaded sample
 };
+//! The shading rows of a table, for an Owner whose member `Shading` is a ShadingParams.
+template <auto Shading>
+constexpr std::array<ParamInfo, 4> shadingRows() {
+    return {{
+        real<Shading, &ShadingParams::specular>("specular", "", 0, 1, "Blinn-Phong specular colour (white x light)"),
+        real<Shading, &ShadingParams::shininess>("shininess", "", 1, 10000, "Blinn-Phong exponent"),
+        integer<Shading, &ShadingParams::maxAnisotropy>("maxAnisotropy", "", 1, 16, "probes of the anisotropic lookup"),
+        integer<Shading, &ShadingParams::stall>("stall", "ops", 0, 1e7,
+                                                "extra dependent integer operations per shaded sample"),
+    }};
+}
 //! Throws ssfx::Error naming the parameter when one is out of range.
 void validate(const ShadingParams& p);
 
