@@ -146,25 +146,48 @@ constexpr std::string_view kDdaaCite = "A. Klein, Directional Diffusion Anti-Ali
 constexpr std::string_view kFxaaCite = "T. Lottes, FXAA 3.11, NVIDIA 2011 (as compared in the DDAA paper)";
 constexpr std::string_view kMitchellCite = "Mitchell & Netravali, SIGGRAPH 1988; DDAA paper section 3";
 
+// The preset names of the threshold methods, "medium" (the default) first.
+constexpr std::array<std::string_view, 5> kThresholdPresets{"medium", "low", "high", "ultra", "extreme"};
+constexpr std::string_view kImage = "an RGBA8 image";
+constexpr std::string_view kImage2x = "an RGBA8 image: the scene rendered at 2x";
+constexpr std::string_view kImage4x = "an RGBA8 image: the scene rendered at 4x";
+
+struct Text {
+    std::string_view id, summary, citation, inputs;
+};
+MethodInfo entry(Text t, std::span<const ParamInfo> params, std::string_view kind, bool presets, int scale, RunFn run,
+                 RunIntoFn into, RunFn ref) {
+    MethodInfo m{};
+    m.id = t.id, m.family = "aa", m.summary = t.summary, m.citation = t.citation, m.inputs = t.inputs;
+    m.params = params;
+    if (presets) m.presets = kThresholdPresets;
+    m.backends = kCpuBackend;
+    m.kind = kind, m.usesPresets = presets, m.inputScale = scale, m.run = run, m.runInto = into, m.reference = ref;
+    return m;
+}
+
 const std::array<MethodInfo, 9> kMethods{{
-    {"noaa", "ppaa", "no anti-aliasing: the input unchanged", "", {}, false, 1, allocating<intoNoaa, 1>, intoNoaa,
-     allocating<intoNoaa, 1>},
-    {"blur", "ppaa", "3x3 truncated Gaussian (sigma 0.6), the quality and speed baseline",
-     "DDAA paper section 3.1", kBlurParams, false, 1, allocating<intoBlur, 1>, intoBlur, refBlur},
-    {"fxaa3c", "ppaa", "FXAA 3.11 console: direction from the diagonals, 4 taps, no edge search", kFxaaCite,
-     kFxaa3cParams, true, 1, allocating<intoFxaa3c, 1>, intoFxaa3c, refFxaa3c},
-    {"fxaa3d", "ppaa", "FXAA 3.11 desktop: 12-step edge search with pixel skipping", kFxaaCite, kFxaa3dParams, true, 1,
-     allocating<intoFxaa3d, 1>, intoFxaa3d, refFxaa3d},
-    {"ddaa1", "ppaa", "DDAA 1: diffusion along the Scharr edge direction, no edge search", kDdaaCite, kDdaa1Params, true,
-     1, allocating<intoDdaa1, 1>, intoDdaa1, refDdaa1},
-    {"ddaa2", "ppaa", "DDAA 2: diffusion plus a clean batched edge search (the proposed method)", kDdaaCite,
-     kDdaa2Params, true, 1, allocating<intoDdaa2, 1>, intoDdaa2, refDdaa2},
-    {"ssaax2", "resolve", "2x supersampling resolve: Mitchell filter in 12 bilinear reads (input: 2x render)",
-     kMitchellCite, {}, false, 2, allocating<intoSsaax2, 2>, intoSsaax2, refSsaax2},
-    {"ssaax4", "resolve", "4x supersampling resolve: direct Mitchell taps (input: 4x render)", kMitchellCite,
-     kMitchellParams, false, 4, allocating<intoSsaax4, 4>, intoSsaax4, refSsaax4},
-    {"ddaa2p", "ppaa", "ddaa2 on the 2x render, then the ssaax2 resolve (input: 2x render)",
-     "DDAA paper section 4", kDdaa2Params, true, 2, allocating<intoDdaa2p, 2>, intoDdaa2p, refDdaa2p},
+    entry({"noaa", "no anti-aliasing: the input unchanged", "", kImage}, {}, "ppaa", false, 1,
+          allocating<intoNoaa, 1>, intoNoaa, allocating<intoNoaa, 1>),
+    entry({"blur", "3x3 truncated Gaussian (sigma 0.6), the quality and speed baseline", "DDAA paper section 3.1",
+           kImage},
+          kBlurParams, "ppaa", false, 1, allocating<intoBlur, 1>, intoBlur, refBlur),
+    entry({"fxaa3c", "FXAA 3.11 console: direction from the diagonals, 4 taps, no edge search", kFxaaCite, kImage},
+          kFxaa3cParams, "ppaa", true, 1, allocating<intoFxaa3c, 1>, intoFxaa3c, refFxaa3c),
+    entry({"fxaa3d", "FXAA 3.11 desktop: 12-step edge search with pixel skipping", kFxaaCite, kImage}, kFxaa3dParams,
+          "ppaa", true, 1, allocating<intoFxaa3d, 1>, intoFxaa3d, refFxaa3d),
+    entry({"ddaa1", "DDAA 1: diffusion along the Scharr edge direction, no edge search", kDdaaCite, kImage},
+          kDdaa1Params, "ppaa", true, 1, allocating<intoDdaa1, 1>, intoDdaa1, refDdaa1),
+    entry({"ddaa2", "DDAA 2: diffusion plus a clean batched edge search (the proposed method)", kDdaaCite, kImage},
+          kDdaa2Params, "ppaa", true, 1, allocating<intoDdaa2, 1>, intoDdaa2, refDdaa2),
+    entry({"ssaax2", "2x supersampling resolve: Mitchell filter in 12 bilinear reads (input: 2x render)",
+           kMitchellCite, kImage2x},
+          {}, "resolve", false, 2, allocating<intoSsaax2, 2>, intoSsaax2, refSsaax2),
+    entry({"ssaax4", "4x supersampling resolve: direct Mitchell taps (input: 4x render)", kMitchellCite, kImage4x},
+          kMitchellParams, "resolve", false, 4, allocating<intoSsaax4, 4>, intoSsaax4, refSsaax4),
+    entry({"ddaa2p", "ddaa2 on the 2x render, then the ssaax2 resolve (input: 2x render)", "DDAA paper section 4",
+           kImage2x},
+          kDdaa2Params, "ppaa", true, 2, allocating<intoDdaa2p, 2>, intoDdaa2p, refDdaa2p),
 }};
 
 }  // namespace

@@ -7,9 +7,7 @@
 #include <optional>
 
 #include "commands.hpp"
-#include "ssfx/ao/alchemy.hpp"
-#include "ssfx/ao/raytraced.hpp"
-#include "ssfx/ao/sao.hpp"
+#include "ssfx/ao/registry.hpp"
 #include "ssfx/eval/ao_scenes.hpp"
 #include "ssfx/io/camera.hpp"
 #include "ssfx/io/exr.hpp"
@@ -59,36 +57,26 @@ void run(const AoOptions& o, const CLI::App& cmd) {
             if (cmd.count(opt)) throw Error(fmt::format("{} does not apply to the analytic scene '{}'", opt, o.scene));
     if (!o.scene.empty() && !analyticScene && cmd.count("--fov"))
         throw Error("--fov does not apply to a rendered scene (its views have their own)");
-    if (cmd.count("--rays") && o.method != "raytraced") throw Error("--rays applies to -m raytraced only");
+    const ao::AoMethodInfo& method = ao::aoMethodById(o.method);
+    if (cmd.count("--rays") && !method.needsGeometry) throw Error("--rays applies to -m raytraced only");
     if (!o.output.empty()) {  // the output format, before any work
         const std::string ext = std::filesystem::path(o.output).extension().string();
         if (ext != ".png" && ext != ".exr")
             throw Error(fmt::format("output '{}': use a .png (8-bit) or .exr (float) file name", o.output));
     }
-    if (o.method != "sao" && o.method != "alchemy" && o.method != "raytraced")
-        throw Error(fmt::format("unknown AO method '{}' (sao, alchemy, raytraced)", o.method));
     if (o.scene.empty() == o.depth.empty()) throw Error("give either --depth FILE (with --camera) or --scene NAME");
     const Exec exec{o.threads};
-    if (!o.preset.empty() && o.method != "sao")
-        throw Error(fmt::format("--preset: {} has no presets (sao: {})", o.method, fmt::join(ao::saoPresetNames(), ", ")));
-    // The preset first, then the -p overrides.
-    ao::SaoParams sp = o.preset.empty() ? ao::SaoParams{} : ao::saoPreset(o.preset);
-    ao::AlchemyParams ap;
-    ao::RaytracedParams rp;
-    rp.raysPerPixel = o.rays;
-    int guard = 0;
+    if (!o.preset.empty() && method.presets.empty())
+        throw Error(fmt::format("--preset: {} has no presets", o.method));
+    // The preset first, then the -p overrides, every one checked before any work.
+    ao::AoParams params = method.defaults(o.preset);
+    if (method.needsGeometry) std::get<ao::RaytracedParams>(params).raysPerPixel = o.rays;
     for (const auto& text : o.params) {
-        const std::span<const ParamInfo> table = o.method == "sao"       ? std::span<const ParamInfo>(ao::kSaoParams)
-                                                 : o.method == "alchemy" ? std::span<const ParamInfo>(ao::kAlchemyParams)
-                                                                         : std::span<const ParamInfo>(ao::kRaytracedParams);
-        const auto [name, value] = parseParam(text, table, o.method);
-        if (o.method == "sao") ao::setParam(sp, name, value);
-        else if (o.method == "alchemy") ao::setParam(ap, name, value);
-        else ssfx::setParam(ao::kRaytracedParams, &rp, "raytraced", name, value);
-        if (name == "guardBand") guard = int(value);  // checked by setParam: a whole number in range
+        const auto [name, value] = parseParam(text, method.params, o.method);
+        ao::setParam(method, params, name, value);
     }
-    if (o.method == "sao") ao::validate(sp);  // every parameter before any work
-    if (o.method == "alchemy") ao::validate(ap);
+    method.validate(params);
+    const int guard = ao::guardBandOf(params);
     ao::Camera cam;
     ImageF depth;
     std::optional<eval::AnalyticScene> scene;
@@ -104,12 +92,12 @@ void run(const AoOptions& o, const CLI::App& cmd) {
         auto r = renderer.renderDepth(rs, view, w, h, ao::DepthFormat::D32F, guard);
         depth = std::move(r.depth);
         cam = r.camera.camera;
-        if (o.method == "raytraced") meshScene = render::cameraSpaceRayScene(rs, r.camera);
+        if (method.needsGeometry) meshScene = render::cameraSpaceRayScene(rs, r.camera);
 #else
         throw Error(fmt::format("scene '{}': this ssfx was built without the renderer (analytic scenes: corner, room)", o.scene));
 #endif
     } else if (!o.depth.empty()) {
-        if (o.method == "raytraced") throw Error("raytraced needs the geometry: use --scene");
+        if (method.needsGeometry) throw Error(fmt::format("{} needs the geometry: use --scene", o.method));
         if (o.camera.empty()) throw Error("--depth needs --camera FILE (JSON: fov_y_deg, z_near, z_far)");
         io::CameraBuffer stated;
         cam = io::readCameraJson(o.camera, &stated);
@@ -137,15 +125,9 @@ void run(const AoOptions& o, const CLI::App& cmd) {
     if (!o.saveDepth.empty()) io::writeExr(o.saveDepth, depth.view(), "Z");
     if (!o.saveCamera.empty()) io::writeCameraJson(o.saveCamera, cam);
     if (o.output.empty()) return;
-    ImageF a;
-    if (o.method == "sao") {
-        a = ao::sao(depth.view(), cam, sp, exec);
-    } else if (o.method == "alchemy") {
-        a = ao::alchemy(depth.view(), cam, ap, exec);
-    } else {
-        const ao::RayScene& geometry = meshScene ? *meshScene : static_cast<const ao::RayScene&>(*scene);
-        a = ao::raytraced(geometry, cam, depth.width(), depth.height(), rp, exec);
-    }
+    ao::AoInput input{depth.view(), cam, nullptr};
+    if (method.needsGeometry) input.geometry = meshScene ? meshScene.get() : static_cast<const ao::RayScene*>(&*scene);
+    const ImageF a = method.run(input, params, exec);
     writeAo(o.output, a);
 }
 
@@ -154,7 +136,9 @@ void run(const AoOptions& o, const CLI::App& cmd) {
 void addAoCommand(CLI::App& app) {
     auto o = std::make_shared<AoOptions>();
     auto* cmd = app.add_subcommand("ao", "Ambient obscurance: SAO, the AlchemyAO baseline, or ray-traced ground truth");
-    cmd->add_option("-m,--method", o->method, "sao (default), alchemy, raytraced");
+    std::string ids;
+    for (const ao::AoMethodInfo& m : ao::aoMethods()) ids += fmt::format("{}{}", ids.empty() ? "" : ", ", m.id);
+    cmd->add_option("-m,--method", o->method, ids + " (default sao)");
     cmd->add_option("--depth", o->depth, "Depth buffer (EXR; channel Z, Y, R or the only one; values in [0, 1])");
     cmd->add_option("--camera", o->camera, "Camera JSON of the depth buffer: {\"fov_y_deg\", \"z_near\", \"z_far\"}");
     cmd->add_option("--scene", o->scene,
@@ -172,12 +156,13 @@ void addAoCommand(CLI::App& app) {
                     "June 2012: 11 taps, 6.28 per turn, spin summed in float, linear intensity, r 0.7 m, bias "
                     "0.012 m, intensity 0.7, 9-tap stride-2 blur, RGB8 storage; docs/methods/sao.md); -p "
                     "overrides it");
+    std::string names;  // from the registry's tables
+    for (const ao::AoMethodInfo& m : ao::aoMethods()) {
+        names += fmt::format("{}{}:", names.empty() ? "" : "; ", m.id);
+        for (const ParamInfo& p : m.params) names += " " + std::string(p.name);
+    }
     cmd->add_option("-p,--param", o->params,
-                    "NAME=VALUE (repeatable): sao: radius bias epsilon intensity numSamples numSpiralTurns logQ "
-                    "maxMip usePyramid quadThreshold blurRadius blurStride blurSigma edgeSharpness "
-                    "blurReleasedWeights blurZeroOutside blurEpsilon guardBand packBlurInput packZMin "
-                    "releasedPacking spiralTurnAngle spinInFloat linearIntensity; "
-                    "alchemy: radius sigma beta epsilon k numSamples numSpiralTurns blur...; raytraced: radius");
+                    "NAME=VALUE (repeatable; ranges and defaults: ssfx methods --family ao): " + names);
     cmd->add_option("--rays", o->rays, "raytraced: rays per pixel (default 256)")->check(CLI::Range(1, 65536));
     cmd->add_option("--save-depth", o->saveDepth, "Also write the depth buffer used (EXR, channel Z)");
     cmd->add_option("--save-camera", o->saveCamera, "Also write its camera (JSON)");

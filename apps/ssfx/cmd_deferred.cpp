@@ -7,7 +7,7 @@
 
 #include "commands.hpp"
 #include "ssfx/core/error.hpp"
-#include "ssfx/deferred/adaptive.hpp"
+#include "ssfx/deferred/registry.hpp"
 #include "ssfx/eval/plot.hpp"
 #include "ssfx/io/png.hpp"
 #include "ssfx/render/renderer.hpp"
@@ -27,13 +27,15 @@ void run(const DeferredOptions& o) {
     if (o.scene.empty()) throw Error("no scene given (--scene atrium | cornell | FILE.json | MODEL)");
     if (o.out.empty()) throw Error("no output folder given (--out DIR)");
     const auto [w, h] = parseSize(o.size, "--size", 8192);
-    deferred::AdaptiveParams p;
-    p.shading.stall = o.stall;
+    const deferred::DeferredMethodInfo& method = deferred::deferredMethodById("adaptive");
+    deferred::DeferredParams params = method.defaults();
+    std::get<deferred::AdaptiveParams>(params).shading.stall = o.stall;
     for (const auto& text : o.params) {
-        const auto [name, value] = parseParam(text, deferred::kAdaptiveParams, "deferred");
-        ssfx::setParam(deferred::kAdaptiveParams, &p, "deferred", name, value);
+        const auto [name, value] = parseParam(text, method.params, method.id);
+        deferred::setParam(method, params, name, value);
     }
-    deferred::validate(p);
+    method.validate(params);
+    const deferred::AdaptiveParams& p = std::get<deferred::AdaptiveParams>(params);
     const render::Scene scene = render::loadScene(o.scene);
     const render::View& view = o.view.empty() ? scene.views.at(0).second : scene.view(o.view);
     render::Renderer renderer({o.device, false});
@@ -77,20 +79,22 @@ void addDeferredCommand(CLI::App& app) {
     cmd->add_option("--scene", o->scene, "atrium, cornell, a scene .json or a model file");
     cmd->add_option("--view", o->view, "Named viewpoint (default: the scene's first)");
     cmd->add_option("--size", o->size, "Final image size WxH (default 1024x768)");
-    cmd->add_option("-m", o->m, "Supersampling m (the G-buffer has m x m samples per pixel; 1..4, default 4)")
+    cmd->add_option("--ss", o->m, "Supersampling M: the G-buffer has M x M samples per pixel (1..4, default 4)")
         ->check(CLI::Range(1, 4));
     cmd->add_option("--stall", o->stall, "Extra dependent operations per shaded sample (emulates a heavy shader)")
         ->check(CLI::Range(0, 10000000));
     cmd->add_flag("--reference", o->reference, "Also shade every sample; write reference.png and error.png, print MSE/PSNR");
+    std::string names;  // from the registry's table
+    for (const ParamInfo& p : deferred::deferredMethodById("adaptive").params)
+        names += fmt::format(" {} ({})", p.name, p.valueText(p.defaultValue()));
     cmd->add_option("-p,--param", o->params,
-                    "NAME=VALUE (repeatable): cDepth (16) cNormal (24) cShading (64) tMin (0.0625) tEdge (0.166) "
-                    "specular (0.25) shininess (40) maxAnisotropy (16)");
+                    "NAME=VALUE (repeatable; ranges: ssfx methods --family deferred):" + names);
     cmd->add_option("--out", o->out, "Output folder: image.png, samples.png (k heat map), k_depth/k_normal/k_shading.png "
                                      "(each metric's k), with --reference reference.png, error.png (|error| 0..0.05)");
     cmd->add_option("--device", o->device, "Vulkan device index or part of its name");
     cmd->add_option("--threads", o->threads, "Worker threads (0 = all)")->check(CLI::Range(0, 1024));
     cmd->footer("docs/methods/adaptive.md. Example:\n"
-                "  ssfx deferred --scene atrium --view nave --size 1024x768 -m 4 --reference --out out/deferred");
+                "  ssfx deferred --scene atrium --view nave --size 1024x768 --ss 4 --reference --out out/deferred");
     cmd->callback([o] {
         io::OutputSet outputs;  // the images, the heat maps and the numbers: all or none
         run(*o);

@@ -12,6 +12,7 @@
 
 #include "ssfx/aa/presets.hpp"
 #include "ssfx/core/image.hpp"
+#include "ssfx/core/method.hpp"
 #include "ssfx/core/parallel.hpp"
 #include "ssfx/core/params.hpp"
 #include "ssfx/core/sample.hpp"
@@ -31,12 +32,10 @@ using RunFn = ImageRgba8 (*)(ImageView<const Rgba8> input, const MethodSettings&
 using RunIntoFn = void (*)(ImageView<const Rgba8> input, ImageView<Rgba8> output, const MethodSettings& settings,
                            const Exec& exec);
 
-struct MethodInfo {
-    std::string_view id;        //!< stable public name (CLI, files, reports, spec)
-    std::string_view family;    //!< "ppaa", "resolve", ...
-    std::string_view summary;   //!< one line
-    std::string_view citation;  //!< paper and section
-    std::span<const ParamInfo> params;
+//! The nine image-to-image methods: family "aa" (MethodDesc), kind "ppaa" (post-process
+//! anti-aliasing) or "resolve" (supersampling resolves).
+struct MethodInfo : MethodDesc {
+    std::string_view kind;
     bool usesPresets;  //!< accepts the edge-threshold presets
     //! The input is the scene rendered at this scale (1; 2 for ssaax2/ddaa2p; 4 for ssaax4);
     //! the output is always at scale 1.

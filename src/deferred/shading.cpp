@@ -42,15 +42,7 @@ ImageF absoluteError(const ImageRgbF& a, const ImageRgbF& b) {
     return e;
 }
 
-void validate(const ShadingParams& p) {
-    // The shading rows alone: a table over a struct that only holds a ShadingParams.
-    struct Only {
-        ShadingParams shading;
-    };
-    static constexpr auto kRows = shadingRows<&Only::shading>();
-    const Only only{p};
-    validateParams(kRows, &only, "shading");
-}
+void validate(const ShadingParams& p) { validateParams(kShadingParams, &p, "shading"); }
 
 SampleShader::SampleShader(const render::Scene& scene, const render::GBuffer& g, const ShadingParams& params)
     : scene_(scene), g_(g), p_(params) {
@@ -65,6 +57,16 @@ SampleShader::SampleShader(const render::Scene& scene, const render::GBuffer& g,
         if (g.layer[i] >= int(scene.textures.layers.size()))
             throw Error(fmt::format("deferred: G-buffer sample {} names texture layer {} of {}", i, g.layer[i],
                                     scene.textures.layers.size()));
+        // Values a caller's (or a file's) G-buffer may carry: named by sample, never shaded.
+        const int sx = int(i % std::size_t(g.sampleWidth())), sy = int(i / std::size_t(g.sampleWidth()));
+        const float d = g.depth.data()[i];
+        if (!(d >= 0.0f && d <= 1.0f))
+            throw Error(fmt::format("deferred: G-buffer sample ({}, {}) has depth {} (not in [0, 1])", sx, sy, d));
+        const glm::vec3& nrm = g.normal[i];
+        const glm::vec2& uv = g.uv[i];
+        const glm::vec4& gr = g.uvGrad[i];
+        if (!std::isfinite(nrm.x + nrm.y + nrm.z) || !std::isfinite(uv.x + uv.y) || !std::isfinite(gr.x + gr.y + gr.z + gr.w))
+            throw Error(fmt::format("deferred: G-buffer sample ({}, {}) has a non-finite normal, uv or uv gradient", sx, sy));
     }
     proj_ = ao::projection(g.camera.camera, g.sampleWidth(), g.sampleHeight());
     const glm::dmat4& v = g.camera.view;

@@ -217,12 +217,12 @@ if "$SSFX" --help 2>/dev/null | grep -qE '^ +render '; then
   [ ! -e "$OUT/x" ] || { echo "FAIL render: a failed run left $OUT/x"; fail=1; }
   # Adaptive supersampling on a rendered G-buffer, with its reference; the Table 1 experiment.
   check help_deferred 0 $VK "$SSFX" deferred --help
-  check deferred 0 $VK "$SSFX" deferred --scene atrium --size 64x48 -m 3 --reference --stall 10 --out "$OUT/d"
+  check deferred 0 $VK "$SSFX" deferred --scene atrium --size 64x48 --ss 3 --reference --stall 10 --out "$OUT/d"
   for f in image.png samples.png k_depth.png k_normal.png k_shading.png reference.png error.png; do
     [ -s "$OUT/d/$f" ] || { echo "FAIL deferred: no $f"; fail=1; }
   done
   contains deferred "$OUT/deferred.out" "PSNR"
-  check deferred_m 2 $VK "$SSFX" deferred --scene atrium -m 5 --out "$OUT/y"
+  check deferred_m 2 $VK "$SSFX" deferred --scene atrium --ss 5 --out "$OUT/y"
   check deferred_param 2 $VK "$SSFX" deferred --scene atrium --size 32x24 -p cDepth=-1 --out "$OUT/y"
   contains deferred_param "$OUT/deferred_param.err" "cDepth"
   check deferred_unknown 2 $VK "$SSFX" deferred --scene atrium --size 32x24 -p nope=1 --out "$OUT/y"

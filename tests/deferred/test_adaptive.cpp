@@ -8,6 +8,7 @@
 #include "../render/render_fixture.hpp"
 #include "ssfx/core/error.hpp"
 #include "ssfx/deferred/adaptive.hpp"
+#include "ssfx/deferred/registry.hpp"
 #include "ssfx/deferred/sampler.hpp"
 #include "support/param_tables.hpp"
 
@@ -174,6 +175,41 @@ TEST(Adaptive, BadParametersAreRejected) {
     g = handMade(scene, 4, 4, 2, false);
     g.material[3] = 999;
     EXPECT_THROW(referenceSupersampling(scene, g, {}), Error);
+}
+
+// Properties of every method of the deferred registry (new ones are covered automatically):
+// the same bytes for any thread count, every parameter outside its range refused, a NaN in
+// the G-buffer refused with an error naming the sample.
+TEST_F(RenderTest, EveryDeferredMethodIsDeterministicAndRefusesBadInput) {
+    const render::Scene scene = render::cornellBox();
+    const render::GBuffer g = renderer().renderGBuffer(scene, scene.views.at(0).second, 40, 70, 2);  // several row blocks
+    for (const deferred::DeferredMethodInfo& m : deferred::deferredMethods()) {
+        SCOPED_TRACE(std::string(m.id));
+        const deferred::DeferredParams p = m.defaults();
+        const auto one = m.run(scene, g, p, Exec{1});
+        EXPECT_EQ(m.run(scene, g, p, Exec{2}).image, one.image);
+        EXPECT_EQ(m.run(scene, g, p, Exec{8}).image, one.image);
+        EXPECT_GT(one.shaded, 0);
+        for (const ParamInfo& row : m.params) {
+            deferred::DeferredParams q = m.defaults();
+            EXPECT_THROW(deferred::setParam(m, q, row.name, row.max + std::max(1.0, row.max * 1e-3)), Error) << row.name;
+            EXPECT_THROW(deferred::setParam(m, q, row.name, std::nan("")), Error) << row.name;
+        }
+        for (int plane = 0; plane < 3; ++plane) {
+            render::GBuffer bad = g;
+            const std::size_t i = bad.index(7, 5);
+            if (plane == 0) bad.depth.data()[i] = std::nanf("");
+            if (plane == 1) bad.normal[i].y = std::nanf("");
+            if (plane == 2) bad.uv[i].x = INFINITY;
+            try {
+                m.run(scene, bad, p, Exec{1});
+                ADD_FAILURE() << "plane " << plane << ": a NaN was shaded";
+            } catch (const Error& e) {
+                EXPECT_NE(std::string(e.what()).find("(7, 5)"), std::string::npos) << e.what();
+            }
+        }
+    }
+    EXPECT_THROW(deferred::deferredMethodById("taa"), Error);
 }
 
 TEST_F(RenderTest, AdaptiveOnARenderedGBufferIsCloseToTheReferenceWithFewerSamples) {

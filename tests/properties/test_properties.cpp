@@ -98,7 +98,7 @@ class SymmetricMethod : public MethodProperty {};
 
 TEST_P(SymmetricMethod, HorizontalFlipCommutes) {
     const MethodInfo& m = *GetParam();
-    const int tolerance = m.family == "resolve" ? 1 : 0;
+    const int tolerance = m.kind == "resolve" ? 1 : 0;
     const auto in = test::noise(40 * m.inputScale, 9 * m.inputScale, 5);
     const auto a = flipX(m.run(in.view(), {}, {}));
     const auto b = m.run(flipX(in).view(), {}, {});

@@ -41,17 +41,20 @@ struct ShadingParams {
     int maxAnisotropy = 16;   //!< probes of the anisotropic lookup
     int stall = 0;            //!< extra dependent integer operations per shaded sample
 };
-//! The shading rows of a table, for an Owner whose member `Shading` is a ShadingParams.
-template <auto Shading>
+//! The shading rows of a table: ShadingParams' own (no Path), or an owner's whose member at
+//! Path is a ShadingParams.
+template <auto... Path>
 constexpr std::array<ParamInfo, 4> shadingRows() {
     return {{
-        real<Shading, &ShadingParams::specular>("specular", "", 0, 1, "Blinn-Phong specular colour (white x light)"),
-        real<Shading, &ShadingParams::shininess>("shininess", "", 1, 10000, "Blinn-Phong exponent"),
-        integer<Shading, &ShadingParams::maxAnisotropy>("maxAnisotropy", "", 1, 16, "probes of the anisotropic lookup"),
-        integer<Shading, &ShadingParams::stall>("stall", "ops", 0, 1e7,
+        real<Path..., &ShadingParams::specular>("specular", "", 0, 1, "Blinn-Phong specular colour (white x light)"),
+        real<Path..., &ShadingParams::shininess>("shininess", "", 1, 10000, "Blinn-Phong exponent"),
+        integer<Path..., &ShadingParams::maxAnisotropy>("maxAnisotropy", "", 1, 16, "probes of the anisotropic lookup"),
+        integer<Path..., &ShadingParams::stall>("stall", "ops", 0, 1e7,
                                                 "extra dependent integer operations per shaded sample"),
     }};
 }
+//! ShadingParams' table (core/params.hpp); the defaults are the initialisers.
+inline constexpr auto kShadingParams = shadingRows<>();
 //! Throws ssfx::Error naming the parameter when one is out of range.
 void validate(const ShadingParams& p);
 

@@ -1,0 +1,112 @@
+// Properties every registered AO method must have, through the AO registry (new methods are
+// covered automatically): the same bytes for any thread count, every parameter outside its
+// range refused, NaN depth refused with an error naming it.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+
+#include "ssfx/ao/registry.hpp"
+#include "ssfx/core/error.hpp"
+#include "ssfx/eval/ao_scenes.hpp"
+
+using namespace ssfx;
+
+namespace {
+
+class AoProperty : public ::testing::TestWithParam<const ao::AoMethodInfo*> {};
+
+std::string name(const ::testing::TestParamInfo<const ao::AoMethodInfo*>& i) { return std::string(i.param->id); }
+
+std::vector<const ao::AoMethodInfo*> all() {
+    std::vector<const ao::AoMethodInfo*> v;
+    for (const auto& m : ao::aoMethods()) v.push_back(&m);
+    return v;
+}
+
+// The analytic room: its depth buffer, and the room itself for the ray-traced truth.
+struct Room {
+    eval::AnalyticScene scene = eval::analyticSceneByName("room");
+    ao::Camera camera;
+    ImageF depth;
+    Room(int w, int h) { depth = eval::castGeometry(scene, camera, w, h, Exec{1}).depth; }
+    ao::AoInput input() const { return {depth.view(), camera, &scene}; }
+};
+
+ao::AoParams small(const ao::AoMethodInfo& m) {
+    ao::AoParams p = m.defaults("");
+    if (m.needsGeometry) ao::setParam(m, p, "raysPerPixel", 8);  // the property, not the noise
+    return p;
+}
+
+bool sameBytes(const ImageF& a, const ImageF& b) {
+    return a.width() == b.width() && a.height() == b.height() &&
+           std::memcmp(a.data(), b.data(), std::size_t(a.width()) * std::size_t(a.height()) * sizeof(float)) == 0;
+}
+
+}  // namespace
+
+TEST_P(AoProperty, SameBytesForAnyThreadCount) {
+    const ao::AoMethodInfo& m = *GetParam();
+    const Room room(96, 70);  // 70 rows: several row blocks
+    const ao::AoParams p = small(m);
+    const ImageF one = m.run(room.input(), p, Exec{1});
+    EXPECT_TRUE(sameBytes(m.run(room.input(), p, Exec{2}), one));
+    EXPECT_TRUE(sameBytes(m.run(room.input(), p, Exec{8}), one));
+    // And something was computed: the room's corners are occluded.
+    float lo = 1;
+    for (int y = 0; y < one.height(); ++y)
+        for (int x = 0; x < one.width(); ++x) lo = std::min(lo, one(x, y));
+    EXPECT_LT(lo, 0.9f);
+}
+
+TEST_P(AoProperty, EveryParameterOutsideItsRangeIsRefused) {
+    const ao::AoMethodInfo& m = *GetParam();
+    for (const ParamInfo& row : m.params) {
+        ao::AoParams p = m.defaults("");
+        const double step = std::max(1.0, std::abs(row.max) * 1e-3);  // beyond a float's rounding
+        for (const double bad : {row.max + step, row.min - step, std::nan("")}) {
+            EXPECT_THROW(ao::setParam(m, p, row.name, bad), Error) << m.id << " " << row.name << " = " << bad;
+            // A library caller's struct with the bad value is refused by the method too.
+            ao::AoParams direct = m.defaults("");
+            std::visit([&](auto& v) { row.set(&v, bad); }, direct);
+            if (row.kind == ParamKind::Real) {
+                EXPECT_THROW(m.validate(direct), Error) << m.id << " " << row.name;
+            }
+        }
+    }
+}
+
+TEST_P(AoProperty, NanDepthIsRefused) {
+    const ao::AoMethodInfo& m = *GetParam();
+    if (m.needsGeometry) GTEST_SKIP() << m.id << " reads the geometry, not the depth values";
+    Room room(32, 24);
+    room.depth(5, 7) = std::nanf("");
+    try {
+        m.run(room.input(), small(m), Exec{1});
+        ADD_FAILURE() << m.id << " accepted a NaN depth";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("(5, 7)"), std::string::npos) << e.what();
+    }
+}
+
+TEST(AoRegistry, IdsPresetsAndErrors) {
+    std::vector<std::string> ids;
+    for (const auto& m : ao::aoMethods()) ids.emplace_back(m.id);
+    EXPECT_EQ(ids, (std::vector<std::string>{"sao", "alchemy", "raytraced"}));
+    EXPECT_THROW(ao::aoMethodById("hbao"), Error);
+    const auto& sao = ao::aoMethodById("sao");
+    EXPECT_EQ(std::get<ao::SaoParams>(sao.defaults("released")).numSamples, 11);
+    EXPECT_THROW(sao.defaults("nope"), Error);
+    EXPECT_THROW(ao::aoMethodById("alchemy").defaults("released"), Error);
+    // Parameters of one method are not another's.
+    ao::AoParams p = ao::aoMethodById("alchemy").defaults("");
+    EXPECT_THROW(ao::setParam(sao, p, "radius", 1), Error);
+    EXPECT_THROW(sao.validate(p), Error);
+    // The ray-traced truth without geometry: an error, not a crash.
+    const auto& rt = ao::aoMethodById("raytraced");
+    ImageF depth(8, 8);
+    EXPECT_THROW(rt.run({depth.view(), ao::Camera{}, nullptr}, rt.defaults(""), Exec{1}), Error);
+}
+
+INSTANTIATE_TEST_SUITE_P(All, AoProperty, ::testing::ValuesIn(all()), name);
