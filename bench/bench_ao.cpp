@@ -15,7 +15,7 @@ constexpr int kW = 1920, kH = 1080, kGuard = 192;
 
 const ssfx::eval::GeometryBuffer& room() {
     static const auto g =
-        ssfx::eval::castGeometry(ssfx::eval::roomScene(), ssfx::ao::Camera{}, kW + 2 * kGuard, kH + 2 * kGuard);
+        ssfx::eval::castGeometry(ssfx::eval::roomScene(), ssfx::Camera{}, kW + 2 * kGuard, kH + 2 * kGuard);
     return g;
 }
 
@@ -23,7 +23,7 @@ void saoFull(benchmark::State& state) {
     ssfx::ao::SaoParams p;
     p.guardBand = kGuard;
     for (auto _ : state) {
-        auto a = ssfx::ao::sao(room().depth.view(), ssfx::ao::Camera{}, p);
+        auto a = ssfx::ao::sao(room().depth.view(), ssfx::Camera{}, p);
         benchmark::DoNotOptimize(a.data());
     }
     state.SetItemsProcessed(state.iterations() * kW * kH);
@@ -31,8 +31,8 @@ void saoFull(benchmark::State& state) {
 
 // The sample pass over the visible region, on a prepared z pyramid (AlchemyAO reads its level 0).
 void samplePass(benchmark::State& state, bool sao, float radius) {
-    const ssfx::ao::Camera cam;
-    const auto proj = ssfx::ao::projection(cam, kW + 2 * kGuard, kH + 2 * kGuard);
+    const ssfx::Camera cam;
+    const auto proj = ssfx::projection(cam, kW + 2 * kGuard, kH + 2 * kGuard);
     const auto z = ssfx::ao::depthToZ(room().depth.view(), cam);
     // Built once, in the one-buffer layout the passes read: the timing is the pass alone.
     ssfx::ao::ZPyramid pyr;

@@ -9,7 +9,7 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     try {
         ssfx::io::CameraBuffer buffer;
-        const ssfx::ao::Camera c =
+        const ssfx::Camera c =
             ssfx::io::parseCameraJson(std::string(reinterpret_cast<const char*>(data), size), "fuzz", &buffer);
         if (!(c.zNear < 0) || !(c.zFar < c.zNear) || !(c.fovY > 0)) __builtin_trap();  // validated on the way
     } catch (const ssfx::Error&) {

@@ -6,7 +6,7 @@
 #include <string_view>
 
 #include "ssfx/core/error.hpp"
-#include "ssfx/render/scene.hpp"
+#include "ssfx/scene/scene.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     try {

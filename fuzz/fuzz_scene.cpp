@@ -8,8 +8,8 @@
 #include <string_view>
 
 #include "ssfx/core/error.hpp"
-#include "ssfx/render/camera.hpp"
-#include "ssfx/render/scene.hpp"
+#include "ssfx/scene/camera.hpp"
+#include "ssfx/scene/scene.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     static const ssfx::render::Scene model = ssfx::render::cornellBox();

@@ -13,7 +13,7 @@
 #include "ssfx/io/exr.hpp"
 #include "ssfx/io/png.hpp"
 #ifdef SSFX_HAVE_RENDER
-#include "ssfx/render/raytrace.hpp"
+#include "ssfx/scene/raytrace.hpp"
 #include "ssfx/render/renderer.hpp"
 #endif
 
@@ -77,7 +77,7 @@ void run(const AoOptions& o, const CLI::App& cmd) {
     }
     method.validate(params);
     const int guard = ao::guardBandOf(params);
-    ao::Camera cam;
+    Camera cam;
     ImageF depth;
     std::optional<eval::AnalyticScene> scene;
     std::unique_ptr<ao::RayScene> meshScene;  // a rendered scene's triangles (Embree)
@@ -89,7 +89,7 @@ void run(const AoOptions& o, const CLI::App& cmd) {
         const render::Scene rs = render::loadScene(o.scene);
         const render::View view = o.view.empty() ? rs.views.at(0).second : rs.view(o.view);
         render::Renderer renderer({o.device, false});
-        auto r = renderer.renderDepth(rs, view, w, h, ao::DepthFormat::D32F, guard);
+        auto r = renderer.renderDepth(rs, view, w, h, DepthFormat::D32F, guard);
         depth = std::move(r.depth);
         cam = r.camera.camera;
         if (method.needsGeometry) meshScene = render::cameraSpaceRayScene(rs, r.camera);

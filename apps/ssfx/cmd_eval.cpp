@@ -18,7 +18,7 @@
 #include "ssfx/io/png.hpp"
 #ifdef SSFX_HAVE_RENDER
 #include "ssfx/eval/deferred_experiment.hpp"
-#include "ssfx/render/raytrace.hpp"
+#include "ssfx/scene/raytrace.hpp"
 #include "ssfx/render/renderer.hpp"
 #endif
 
@@ -251,7 +251,7 @@ eval::AoSceneSource renderedAoScenes(const std::vector<std::string>& specs) {
             if (!renderer) renderer = std::make_unique<render::Renderer>();
             progressLine(fmt::format("ao: rendering {} on {}", spec, renderer->device().name));
             const render::View& view = viewName.empty() ? scene.views.at(0).second : scene.view(viewName);
-            auto r = renderer->renderDepth(scene, view, width, height, ao::DepthFormat::D32F, guard);
+            auto r = renderer->renderDepth(scene, view, width, height, DepthFormat::D32F, guard);
             out.push_back({scene.name, std::move(r.depth), r.camera.camera,
                            std::shared_ptr<const ao::RayScene>(render::cameraSpaceRayScene(scene, r.camera))});
         }

@@ -25,10 +25,10 @@ struct RenderOptions {
     bool listViews = false, listDevices = false, validation = false, aaSet = false;
 };
 
-ao::DepthFormat parseDepthFormat(const std::string& f) {
-    if (f == "d16") return ao::DepthFormat::D16;
-    if (f == "d24") return ao::DepthFormat::D24;
-    if (f == "d32f") return ao::DepthFormat::D32F;
+DepthFormat parseDepthFormat(const std::string& f) {
+    if (f == "d16") return DepthFormat::D16;
+    if (f == "d24") return DepthFormat::D24;
+    if (f == "d32f") return DepthFormat::D32F;
     throw Error(fmt::format("--depth-format '{}' (d16, d24, d32f)", f));
 }
 
@@ -85,7 +85,7 @@ void run(const RenderOptions& o) {
         }
     }
     const auto [w, h] = parseSize(o.size);
-    const ao::DepthFormat format = parseDepthFormat(o.depthFormat);
+    const DepthFormat format = parseDepthFormat(o.depthFormat);
     // Everything is rendered before anything is written, and every size is checked before
     // anything is rendered (the pixel limit, the device's largest attachment).
     render::Renderer renderer({o.device, o.validation});

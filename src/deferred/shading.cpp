@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ssfx/ao/depth.hpp"
 #include "ssfx/core/error.hpp"
 #include "ssfx/deferred/sampler.hpp"
 
@@ -68,7 +69,7 @@ SampleShader::SampleShader(const render::Scene& scene, const render::GBuffer& g,
         if (!std::isfinite(nrm.x + nrm.y + nrm.z) || !std::isfinite(uv.x + uv.y) || !std::isfinite(gr.x + gr.y + gr.z + gr.w))
             throw Error(fmt::format("deferred: G-buffer sample ({}, {}) has a non-finite normal, uv or uv gradient", sx, sy));
     }
-    proj_ = ao::projection(g.camera.camera, g.sampleWidth(), g.sampleHeight());
+    proj_ = ssfx::projection(g.camera.camera, g.sampleWidth(), g.sampleHeight());
     const glm::dmat4& v = g.camera.view;
     for (const auto& l : scene.lights) {
         if (l.type == render::Light::Type::Directional)

@@ -24,10 +24,10 @@ using Clock = std::chrono::steady_clock;
 
 namespace {
 
-const char* formatName(ao::DepthFormat f) {
-    return f == ao::DepthFormat::D16 ? "D16" : f == ao::DepthFormat::D24 ? "D24" : "D32F";
+const char* formatName(DepthFormat f) {
+    return f == DepthFormat::D16 ? "D16" : f == DepthFormat::D24 ? "D24" : "D32F";
 }
-constexpr ao::DepthFormat kFormats[] = {ao::DepthFormat::D16, ao::DepthFormat::D24, ao::DepthFormat::D32F};
+constexpr DepthFormat kFormats[] = {DepthFormat::D16, DepthFormat::D24, DepthFormat::D32F};
 
 void writeText(const fs::path& path, const std::string& text) {
     io::writeFileAtomic(path.string(), {reinterpret_cast<const std::uint8_t*>(text.data()), text.size()});
@@ -62,11 +62,11 @@ double mseF(const ImageF& a, const ImageF& b) {
 double psnrOf(double mse) { return mse <= 0 ? INFINITY : 10 * std::log10(1 / mse); }
 
 // Hardware depth of `g` stored in `format` (from the exact z, not from the float depth).
-ImageF depthIn(const GeometryBuffer& g, const ao::Camera& cam, ao::DepthFormat format) {
+ImageF depthIn(const GeometryBuffer& g, const Camera& cam, DepthFormat format) {
     ImageF d(g.z.width(), g.z.height());
     for (int y = 0; y < d.height(); ++y)
         for (int x = 0; x < d.width(); ++x)
-            d(x, y) = std::isinf(g.z(x, y)) ? 1.0f : float(ao::quantizeDepth(ao::zToDepth(g.z(x, y), cam), format));
+            d(x, y) = std::isinf(g.z(x, y)) ? 1.0f : float(ssfx::quantizeDepth(ao::zToDepth(g.z(x, y), cam), format));
     return d;
 }
 
@@ -100,9 +100,9 @@ struct FlatMask {
     std::vector<char> flat;  //!< inner region, row-major
     int w = 0, h = 0, count = 0;
 };
-FlatMask flatPixels(const GeometryBuffer& g, const ao::Camera& cam, int guard) {
+FlatMask flatPixels(const GeometryBuffer& g, const Camera& cam, int guard) {
     const int W = g.z.width(), H = g.z.height();
-    const ao::Projection proj = ao::projection(cam, W, H);
+    const Projection proj = ssfx::projection(cam, W, H);
     FlatMask m;
     m.w = W - 2 * guard, m.h = H - 2 * guard;
     m.flat.assign(std::size_t(m.w) * std::size_t(m.h), 0);
@@ -211,19 +211,19 @@ std::string releasedComparison(const std::vector<AoRenderedScene>& entries, int 
 ZPrecision zPrecisionExperiment() {
     ZPrecision r;
     for (int i = 0; i < 24; ++i) r.distances.push_back(0.2 * std::pow(2500.0, i / 23.0));  // 0.2 .. 500 m
-    for (ao::DepthFormat f : kFormats)
+    for (DepthFormat f : kFormats)
         for (bool infinite : {false, true}) {
-            ao::Camera cam;
+            Camera cam;
             cam.zNear = -0.1;
             cam.zFar = infinite ? -INFINITY : -1000.0;
-            const ao::Projection p = ao::projection(cam, 1, 1);
+            const Projection p = ssfx::projection(cam, 1, 1);
             r.series.push_back(fmt::format("{} {}", formatName(f), infinite ? "infinite" : "finite"));
             std::vector<double> errs;
             for (double d : r.distances) {
                 double worst = 0;
                 for (int k = 0; k < 256; ++k) {
                     const double z = -d * (1.0 + 0.1 * k / 255.0);
-                    const double dq = ao::quantizeDepth(ao::zToDepth(z, cam), f);
+                    const double dq = ssfx::quantizeDepth(ao::zToDepth(z, cam), f);
                     const double zr = p.c0 / (dq * p.c1 + p.c2);
                     worst = std::max(worst, std::abs(zr - z) * 1000.0);
                 }
@@ -243,7 +243,7 @@ std::string runAoExperiments(const AoExperimentOptions& o) {
     };
     nlohmann::ordered_json j;
     std::string md;
-    const ao::Camera cam;  // 60 degree vertical field of view, near 0.1 m, infinite far plane
+    const Camera cam;  // 60 degree vertical field of view, near 0.1 m, infinite far plane
 
     // ---- Figure 3: z precision ----------------------------------------------------------
     say("ao: z precision (Figure 3)");
@@ -282,13 +282,13 @@ std::string runAoExperiments(const AoExperimentOptions& o) {
     const AnalyticScene room = roomScene();
     {
         const GeometryBuffer g = castGeometry(room, cam, nw, nh, o.exec);
-        const ao::Projection proj = ao::projection(cam, nw, nh);
+        const Projection proj = ssfx::projection(cam, nw, nh);
         md += fmt::format("\n### Normal precision (paper Figure 4)\n\nAngle (degrees) between the face normal "
                           "reconstructed from z by quad-pair differences and the true normal, at {}x{} on the "
                           "analytic room, over pixels whose 2x2 quad lies within one face.\n\n",
                           nw, nh);
         md += mdHead({"depth format", "pixels", "mean", "99th percentile", "max"});
-        for (ao::DepthFormat f : kFormats) {
+        for (DepthFormat f : kFormats) {
             const ImageF z = ao::depthToZ(depthIn(g, cam, f).view(), cam, o.exec);
             const std::vector<ao::Vec3> n = ao::faceNormals(z.view(), proj, o.exec);
             std::vector<double> errs;
@@ -418,7 +418,7 @@ std::string runAoExperiments(const AoExperimentOptions& o) {
     std::vector<Series> timing{{"alchemy", {}}, {"sao, no pyramid", {}}, {"sao", {}}};
     {
         const GeometryBuffer g = castGeometry(room, cam, fw, fh, o.exec);
-        const ao::Projection proj = ao::projection(cam, fw, fh);
+        const Projection proj = ssfx::projection(cam, fw, fh);
         const ImageF z = ao::depthToZ(g.depth.view(), cam, o.exec);
         // The pyramid in one buffer, built once: each timing is the sample pass alone (every
         // method reads level 0 of the same buffer; "no pyramid" only ever reads level 0).

@@ -13,7 +13,7 @@
 
 namespace ssfx::io {
 
-ao::Camera parseCameraJson(const std::string& text, const std::string& name, CameraBuffer* buffer) {
+Camera parseCameraJson(const std::string& text, const std::string& name, CameraBuffer* buffer) {
     nlohmann::json j;
     try {
         j = nlohmann::json::parse(text);
@@ -21,7 +21,7 @@ ao::Camera parseCameraJson(const std::string& text, const std::string& name, Cam
         throw Error(fmt::format("{}: not valid JSON ({})", name, e.what()));
     }
     if (!j.is_object()) throw Error(fmt::format("{}: a camera must be a JSON object", name));
-    ao::Camera c;
+    Camera c;
     for (auto it = j.begin(); it != j.end(); ++it) {  // (not a structured binding: clang 14 lambdas)
         const std::string& key = it.key();
         const nlohmann::json& value = it.value();
@@ -58,7 +58,7 @@ ao::Camera parseCameraJson(const std::string& text, const std::string& name, Cam
                                     "an infinite far plane)",
                                     name, key));
     try {
-        ao::projection(c, 1, 1);  // validates
+        ssfx::projection(c, 1, 1);  // validates
     } catch (const Error& e) {
         // The library names the fields as the struct does (zNear); the file has z_near.
         std::string m = e.what();
@@ -70,12 +70,12 @@ ao::Camera parseCameraJson(const std::string& text, const std::string& name, Cam
     return c;
 }
 
-ao::Camera readCameraJson(const std::string& path, CameraBuffer* buffer) {
+Camera readCameraJson(const std::string& path, CameraBuffer* buffer) {
     const auto bytes = readFile(path, kMaxJsonFileBytes, "JSON");
     return parseCameraJson(std::string(bytes.begin(), bytes.end()), path, buffer);
 }
 
-std::string cameraJson(const ao::Camera& c) {
+std::string cameraJson(const Camera& c) {
     nlohmann::ordered_json j;
     j["fov_y_deg"] = std::round(c.fovY * 180.0 / std::numbers::pi * 1e9) / 1e9;  // no 59.99999999999999
     j["z_near"] = c.zNear;
@@ -83,7 +83,7 @@ std::string cameraJson(const ao::Camera& c) {
     return j.dump(2) + "\n";
 }
 
-void writeCameraJson(const std::string& path, const ao::Camera& c) {
+void writeCameraJson(const std::string& path, const Camera& c) {
     const std::string text = cameraJson(c);
     writeFileAtomic(path, {reinterpret_cast<const std::uint8_t*>(text.data()), text.size()});
 }

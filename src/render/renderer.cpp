@@ -52,11 +52,11 @@ constexpr std::array<vk::Format, 4> kGBufferFormats = {vk::Format::eR16G16B16A16
                                                        vk::Format::eR32G32B32A32Sfloat, vk::Format::eR16G16Uint};
 constexpr std::array<std::size_t, 4> kGBufferBytes = {8, 8, 16, 4};
 
-vk::Format vkDepthFormat(ao::DepthFormat f) {
+vk::Format vkDepthFormat(DepthFormat f) {
     switch (f) {
-        case ao::DepthFormat::D16: return vk::Format::eD16Unorm;
-        case ao::DepthFormat::D24: return vk::Format::eX8D24UnormPack32;
-        case ao::DepthFormat::D32F: return vk::Format::eD32Sfloat;
+        case DepthFormat::D16: return vk::Format::eD16Unorm;
+        case DepthFormat::D24: return vk::Format::eX8D24UnormPack32;
+        case DepthFormat::D32F: return vk::Format::eD32Sfloat;
     }
     return vk::Format::eD32Sfloat;
 }
@@ -362,7 +362,7 @@ std::vector<std::string> Renderer::validationMessages() const {
     return impl_->ctx.messages;
 }
 
-DepthRender Renderer::renderDepth(const Scene& scene, const View& view, int width, int height, ao::DepthFormat format,
+DepthRender Renderer::renderDepth(const Scene& scene, const View& view, int width, int height, DepthFormat format,
                                   int guard) {
     return guarded("rendering depth", [&] {
         DepthRender out;

@@ -14,10 +14,10 @@ using namespace ssfx;
 TEST(AoExperiments, QuantizeDepthByHand) {
     // 16-bit: 0.5 * 65535 = 32767.5 rounds to even, 32768; 24-bit: 0.25 * (2^24 - 1) =
     // 4194303.75 -> 4194304.
-    EXPECT_DOUBLE_EQ(ao::quantizeDepth(0.5, ao::DepthFormat::D16), 32768.0 / 65535.0);
-    EXPECT_DOUBLE_EQ(ao::quantizeDepth(0.25, ao::DepthFormat::D24), 4194304.0 / 16777215.0);
-    EXPECT_DOUBLE_EQ(ao::quantizeDepth(1.0 / 3.0, ao::DepthFormat::D32F), double(float(1.0 / 3.0)));
-    EXPECT_EQ(ao::quantizeDepth(1.5, ao::DepthFormat::D16), 1.0);
+    EXPECT_DOUBLE_EQ(ssfx::quantizeDepth(0.5, DepthFormat::D16), 32768.0 / 65535.0);
+    EXPECT_DOUBLE_EQ(ssfx::quantizeDepth(0.25, DepthFormat::D24), 4194304.0 / 16777215.0);
+    EXPECT_DOUBLE_EQ(ssfx::quantizeDepth(1.0 / 3.0, DepthFormat::D32F), double(float(1.0 / 3.0)));
+    EXPECT_EQ(ssfx::quantizeDepth(1.5, DepthFormat::D16), 1.0);
 }
 
 TEST(AoExperiments, ZPrecisionHasTheExpectedShape) {

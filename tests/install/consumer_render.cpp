@@ -1,8 +1,8 @@
 // A user of the installed renderer and adaptive supersampling libraries: build a scene, its
 // camera and the dither order (no Vulkan device needed).
 #include <ssfx/deferred/adaptive.hpp>
-#include <ssfx/render/camera.hpp>
-#include <ssfx/render/scene.hpp>
+#include <ssfx/scene/camera.hpp>
+#include <ssfx/scene/scene.hpp>
 
 #include <cstdio>
 

@@ -70,11 +70,11 @@ TEST(Exr, AHeaderAttributeClaimingMoreThanTheFileIsRefusedBeforeOpenExrAllocates
 }
 
 TEST(Camera, JsonRoundTripAndErrors) {
-    ao::Camera c;
+    Camera c;
     c.fovY = 0.8;
     c.zNear = -0.25;
     c.zFar = -300;
-    const ao::Camera back = io::parseCameraJson(io::cameraJson(c), "c.json");
+    const Camera back = io::parseCameraJson(io::cameraJson(c), "c.json");
     EXPECT_NEAR(back.fovY, 0.8, 1e-9);
     EXPECT_EQ(back.zNear, -0.25);
     EXPECT_EQ(back.zFar, -300);

@@ -67,15 +67,15 @@ Scene sphereScene(glm::vec3 centre, float radius, int segments) {
     return s;
 }
 
-double stepOf(ao::DepthFormat f, double d) {
+double stepOf(DepthFormat f, double d) {
     switch (f) {
-        case ao::DepthFormat::D16: return 1.0 / 65535.0;
-        case ao::DepthFormat::D24: return 1.0 / 16777215.0;
+        case DepthFormat::D16: return 1.0 / 65535.0;
+        case DepthFormat::D24: return 1.0 / 16777215.0;
         default: return std::ldexp(1.0, std::ilogb(std::max(d, 1e-30)) - 23);  // one float ulp
     }
 }
 
-const ao::DepthFormat kFormats[] = {ao::DepthFormat::D16, ao::DepthFormat::D24, ao::DepthFormat::D32F};
+const DepthFormat kFormats[] = {DepthFormat::D16, DepthFormat::D24, DepthFormat::D32F};
 const char* kFormatNames[] = {"D16", "D24", "D32F"};
 
 TEST_F(RenderTest, FrontoParallelPlaneHasTheAnalyticDepthInEveryFormat) {
@@ -111,7 +111,7 @@ TEST_F(RenderTest, ReconstructedPositionsLieOnATiltedPlane) {
     for (int f = 0; f < 3; ++f) {
         SCOPED_TRACE(kFormatNames[f]);
         const auto r = renderer().renderDepth(s, v, 80, 60, kFormats[f], 8);
-        const auto p = ao::projection(r.camera.camera, r.camera.bufferWidth(), r.camera.bufferHeight());
+        const auto p = ssfx::projection(r.camera.camera, r.camera.bufferWidth(), r.camera.bufferHeight());
         const ImageF z = ao::depthToZ(r.depth.view(), r.camera.camera);
         const glm::dmat4 toWorld = glm::inverse(r.camera.view);
         int hits = 0;
@@ -126,7 +126,7 @@ TEST_F(RenderTest, ReconstructedPositionsLieOnATiltedPlane) {
             }
         EXPECT_GT(hits, 80 * 60 / 3);
         // Relative to the distance: D16 at 30 m is the coarsest (z step ~ z^2 / (n 65535)).
-        EXPECT_LT(worst, kFormats[f] == ao::DepthFormat::D16 ? 0.15 : 2e-3);
+        EXPECT_LT(worst, kFormats[f] == DepthFormat::D16 ? 0.15 : 2e-3);
     }
 }
 
@@ -138,14 +138,14 @@ TEST_F(RenderTest, SphereDepthAndNormalsMatchTheAnalyticSphere) {
     for (int f = 0; f < 3; ++f) {
         SCOPED_TRACE(kFormatNames[f]);
         const auto d = renderer().renderDepth(s, v, 96, 96, kFormats[f]);
-        if (kFormats[f] == ao::DepthFormat::D32F) {
+        if (kFormats[f] == DepthFormat::D32F) {
             ASSERT_EQ(d.depth, g.depth);  // same rasterisation, same depth
         }
-        const auto p = ao::projection(d.camera.camera, 96, 96);
+        const auto p = ssfx::projection(d.camera.camera, 96, 96);
         const ImageF z = ao::depthToZ(d.depth.view(), d.camera.camera);
         // 128 segments: the chord lies at most 1 - cos(pi / 128) = 3e-4 inside the sphere; the
         // format adds its z step at ~5 m (D16: z^2 / (n (2^16 - 1)) = 3.8 mm; D24: 15 um).
-        const double tol = 1e-3 + (kFormats[f] == ao::DepthFormat::D16 ? 4e-3 : 0.0);
+        const double tol = 1e-3 + (kFormats[f] == DepthFormat::D16 ? 4e-3 : 0.0);
         int inside = 0;
         for (int y = 0; y < 96; ++y)
             for (int x = 0; x < 96; ++x) {
@@ -176,8 +176,8 @@ TEST_F(RenderTest, SphereDepthAndNormalsMatchTheAnalyticSphere) {
 TEST_F(RenderTest, GuardBandWidensTheViewWithoutMovingTheImage) {
     const Scene s = sphereScene({0.2f, 0.1f, -3.0f}, 1.0f, 64);
     const View v = originView(20.0);
-    const auto plain = renderer().renderDepth(s, v, 64, 40, ao::DepthFormat::D32F, 0);
-    const auto guarded = renderer().renderDepth(s, v, 64, 40, ao::DepthFormat::D32F, 12);
+    const auto plain = renderer().renderDepth(s, v, 64, 40, DepthFormat::D32F, 0);
+    const auto guarded = renderer().renderDepth(s, v, 64, 40, DepthFormat::D32F, 12);
     ASSERT_EQ(guarded.depth.width(), 64 + 24);
     ASSERT_EQ(guarded.depth.height(), 40 + 24);
     EXPECT_EQ(guarded.camera.guard, 12);
@@ -198,7 +198,7 @@ TEST_F(RenderTest, GBufferAtM2IsThe2xRenderAndAveragesToThe1xOne) {
     const View v = originView(20.0);
     const auto g2 = renderer().renderGBuffer(s, v, 48, 48, 2);
     const auto g1 = renderer().renderGBuffer(s, v, 48, 48, 1);
-    const auto d2 = renderer().renderDepth(s, v, 96, 96, ao::DepthFormat::D32F);
+    const auto d2 = renderer().renderDepth(s, v, 96, 96, DepthFormat::D32F);
     ASSERT_EQ(g2.sampleWidth(), 96);
     EXPECT_EQ(g2.depth, d2.depth);  // the supersampled G-buffer is a 2x render
     int compared = 0;
@@ -259,8 +259,8 @@ TEST_F(RenderTest, RenderingIsDeterministic) {
     const auto a = renderer().renderColor(s, s.view("colonnade"), 96, 64);
     const auto b = renderer().renderColor(s, s.view("colonnade"), 96, 64);
     EXPECT_EQ(a.color, b.color);
-    const auto da = renderer().renderDepth(s, s.view("nave"), 96, 64, ao::DepthFormat::D24, 8);
-    const auto db = renderer().renderDepth(s, s.view("nave"), 96, 64, ao::DepthFormat::D24, 8);
+    const auto da = renderer().renderDepth(s, s.view("nave"), 96, 64, DepthFormat::D24, 8);
+    const auto db = renderer().renderDepth(s, s.view("nave"), 96, 64, DepthFormat::D24, 8);
     EXPECT_EQ(da.depth, db.depth);
 }
 
@@ -269,7 +269,7 @@ TEST_F(RenderTest, BuiltInScenesRender) {
         const Scene s = render::builtinScene(name);
         for (const auto& [viewName, view] : s.views) {
             SCOPED_TRACE(name + "/" + viewName);
-            const auto d = renderer().renderDepth(s, view, 64, 36, ao::DepthFormat::D32F);
+            const auto d = renderer().renderDepth(s, view, 64, 36, DepthFormat::D32F);
             int geometry = 0;
             for (float x : d.depth.pixels()) geometry += x < 1.0f;
             EXPECT_GT(geometry, 64 * 36 / 4);  // every view looks at the scene
@@ -295,8 +295,8 @@ TEST_F(RenderTest, NothingDrawnIsSkyForSaoWithAFiniteFarPlane) {
     View finite = a.view("nave"), infinite = finite;
     finite.zFar = 60, infinite.zFar = INFINITY;
     const int w = 192, h = 108, g = 16;
-    const auto rf = renderer().renderDepth(a, finite, w, h, ao::DepthFormat::D32F, g);
-    const auto ri = renderer().renderDepth(a, infinite, w, h, ao::DepthFormat::D32F, g);
+    const auto rf = renderer().renderDepth(a, finite, w, h, DepthFormat::D32F, g);
+    const auto ri = renderer().renderDepth(a, infinite, w, h, DepthFormat::D32F, g);
     ao::SaoParams p;
     p.guardBand = g;
     const ImageF af = ao::sao(rf.depth.view(), rf.camera.camera, p), ai = ao::sao(ri.depth.view(), ri.camera.camera, p);

@@ -7,11 +7,12 @@
 #include <numbers>
 #include <span>
 
+#include "ssfx/ao/depth.hpp"
 #include "ssfx/core/error.hpp"
 #include "ssfx/io/camera.hpp"
 #include "ssfx/io/png.hpp"
-#include "ssfx/render/camera.hpp"
-#include "ssfx/render/scene.hpp"
+#include "ssfx/scene/camera.hpp"
+#include "ssfx/scene/scene.hpp"
 #include "support/test_support.hpp"
 
 namespace ssfx::test {
@@ -42,7 +43,7 @@ TEST(RenderCamera, ProjectionMapsNearToZeroAndFarToOne) {
     EXPECT_NEAR(clipDepth(infinite, -0.2), 0.0, 1e-15);
     EXPECT_NEAR(clipDepth(infinite, -1e12), 1.0, 1e-12);
     // It is the inverse of the SAO reconstruction (sao.md eq. 2) for both planes.
-    ao::Camera cam;
+    Camera cam;
     cam.zNear = -0.2;
     cam.zFar = -50.0;
     for (double z : {-0.3, -1.0, -7.5, -49.0}) EXPECT_NEAR(clipDepth(finite, z), ao::zToDepth(z, cam), 1e-14);
@@ -74,7 +75,7 @@ TEST(RenderCamera, LookAtAndGuardBand) {
     EXPECT_THROW(render::cameraSetup(v, 0, 10), Error);
     EXPECT_THROW(render::cameraSetup(v, 10, 10, -1), Error);
     // camera.json is readable by the AO tools.
-    const ao::Camera back = io::parseCameraJson(render::cameraSetupJson(s), "camera.json");
+    const Camera back = io::parseCameraJson(render::cameraSetupJson(s), "camera.json");
     EXPECT_NEAR(back.fovY, s.camera.fovY, 1e-9);
     EXPECT_EQ(back.zNear, s.camera.zNear);
     EXPECT_TRUE(std::isinf(back.zFar));

@@ -19,28 +19,11 @@
 #include <cstdint>
 #include <vector>
 
+#include "ssfx/core/camera.hpp"
 #include "ssfx/core/image.hpp"
 #include "ssfx/core/parallel.hpp"
 
 namespace ssfx::ao {
-
-//! A symmetric perspective camera for the *whole* depth buffer (guard band included).
-struct Camera {
-    double zNear = -0.1;                   //!< m, < 0: the near plane
-    double zFar = -INFINITY;               //!< m, < zNear, or -infinity (infinite far plane)
-    double fovY = 1.0471975511965976;      //!< rad, (0, pi): vertical field of view (default 60 deg)
-};
-
-//! What the passes need from a camera and a buffer size, derived once.
-struct Projection {
-    double c0, c1, c2;  //!< z(d) = c0 / (d * c1 + c2) (paper eq. 2)
-    float p00, p11;    //!< projection matrix P[0][0], P[1][1] (OpenGL convention)
-    int width, height;
-    float pixelsPerMeter;  //!< S: pixel size of a 1 m object at z = -1 m, h / (2 tan(fovY / 2)) (eq. 5)
-};
-
-//! Throws ssfx::Error for a camera that is not as documented or a non-positive size.
-Projection projection(const Camera& camera, int width, int height);
 
 //! Camera-space position of the point with depth z at (fractional) pixel position (px, py)
 //! (paper eq. 3 with y down): x = z / P00 * (1 - 2 px / w), y = z / P11 * (2 py / h - 1).
@@ -61,16 +44,6 @@ void depthToZ(ImageView<const float> depth, const Camera& camera, ImageView<floa
 
 //! The inverse, for tests and synthetic buffers: the depth a point at camera-space z gets.
 double zToDepth(double z, const Camera& camera);
-
-//! Depth buffer formats of the precision experiment (paper section 2.1, Figure 3).
-enum class DepthFormat {
-    D16,   //!< 16-bit unorm: round(d * 65535) / 65535
-    D24,   //!< 24-bit unorm: round(d * (2^24 - 1)) / (2^24 - 1)
-    D32F,  //!< 32-bit float: d rounded to float32
-};
-//! The value a depth buffer of `format` stores for the exact depth d, exactly (in double;
-//! a float32 view of a 24-bit value would add its own rounding).
-double quantizeDepth(double d, DepthFormat format);
 
 //! Pass 2 filters: the paper's default and its Table 1 alternatives.
 enum class PyramidFilter {

@@ -8,7 +8,7 @@
 
 #include <glm/glm.hpp>
 
-#include "ssfx/render/scene.hpp"
+#include "ssfx/scene/scene.hpp"
 
 namespace ssfx::deferred {
 

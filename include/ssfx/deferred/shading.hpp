@@ -11,10 +11,10 @@
 #include <glm/glm.hpp>
 #include <vector>
 
-#include "ssfx/ao/depth.hpp"
+#include "ssfx/core/camera.hpp"
 #include "ssfx/core/params.hpp"
 #include "ssfx/core/image.hpp"
-#include "ssfx/render/renderer.hpp"
+#include "ssfx/scene/gbuffer.hpp"
 
 namespace ssfx::deferred {
 
@@ -82,7 +82,7 @@ private:
     const render::Scene& scene_;
     const render::GBuffer& g_;
     ShadingParams p_;
-    ao::Projection proj_;
+    Projection proj_;
     std::vector<LightC> lights_;
 };
 

@@ -30,7 +30,7 @@ namespace ssfx::eval {
 struct AoRenderedScene {
     std::string name;
     ImageF depth;
-    ao::Camera camera;
+    Camera camera;
     std::shared_ptr<const ao::RayScene> geometry;
 };
 //! Called with the accuracy experiment's image size and guard band.

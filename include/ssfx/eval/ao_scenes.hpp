@@ -53,7 +53,7 @@ struct GeometryBuffer {
     ImageF depth, z;
     std::vector<ao::Vec3d> normals;  //!< row-major
 };
-GeometryBuffer castGeometry(const ao::RayScene& scene, const ao::Camera& camera, int width, int height,
+GeometryBuffer castGeometry(const ao::RayScene& scene, const Camera& camera, int width, int height,
                             const Exec& exec = {});
 
 }  // namespace ssfx::eval

@@ -10,7 +10,7 @@
 
 #include <string>
 
-#include "ssfx/ao/depth.hpp"
+#include "ssfx/core/camera.hpp"
 
 namespace ssfx::io {
 
@@ -21,9 +21,9 @@ struct CameraBuffer {
     bool stated = false;
 };
 
-ao::Camera parseCameraJson(const std::string& text, const std::string& name, CameraBuffer* buffer = nullptr);
-ao::Camera readCameraJson(const std::string& path, CameraBuffer* buffer = nullptr);
-std::string cameraJson(const ao::Camera& camera);
-void writeCameraJson(const std::string& path, const ao::Camera& camera);
+Camera parseCameraJson(const std::string& text, const std::string& name, CameraBuffer* buffer = nullptr);
+Camera readCameraJson(const std::string& path, CameraBuffer* buffer = nullptr);
+std::string cameraJson(const Camera& camera);
+void writeCameraJson(const std::string& path, const Camera& camera);
 
 }  // namespace ssfx::io

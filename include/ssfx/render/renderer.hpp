@@ -11,8 +11,9 @@
 
 #include "ssfx/ao/depth.hpp"
 #include "ssfx/core/image.hpp"
-#include "ssfx/render/camera.hpp"
-#include "ssfx/render/scene.hpp"
+#include "ssfx/scene/camera.hpp"
+#include "ssfx/scene/gbuffer.hpp"
+#include "ssfx/scene/scene.hpp"
 
 namespace ssfx::render {
 
@@ -42,25 +43,6 @@ struct DepthRender {
     double gpuMs = 0;      //!< the draw, from timestamp queries
 };
 
-//! A G-buffer at m x m supersampling: every buffer is (m width) x (m height) samples,
-//! row-major, the final pixel (x, y) owning samples [m x, m x + m) x [m y, m y + m).
-struct GBuffer {
-    static constexpr std::uint16_t kNoMaterial = 0xFFFF;  //!< background samples
-    int width = 0, height = 0, m = 1;
-    ImageF depth;                         //!< D32F, 1 = background
-    std::vector<glm::vec3> normal;        //!< camera space, towards the camera (16-bit snorm on the GPU); 0 on background
-    std::vector<glm::vec2> uv;            //!< texture coordinates (float32)
-    std::vector<glm::vec4> uvGrad;        //!< (du/dx, dv/dx, du/dy, dv/dy) per *final-image* pixel (float32)
-    std::vector<std::uint16_t> material;  //!< material index or kNoMaterial
-    std::vector<std::int16_t> layer;      //!< texture layer or -1
-    CameraSetup camera;                   //!< of the (m width) x (m height) sample grid
-    double gpuMs = 0;
-
-    int sampleWidth() const { return m * width; }
-    int sampleHeight() const { return m * height; }
-    std::size_t index(int sx, int sy) const { return std::size_t(sy) * std::size_t(sampleWidth()) + std::size_t(sx); }
-};
-
 struct ColorRender {
     ImageRgba8 color;  //!< diffuse x (ambient + lights), no anti-aliasing, linear values, alpha 255
     double gpuMs = 0;
@@ -81,7 +63,7 @@ public:
 
     //! Depth of `view` at width x height plus a guard band of `guard` pixels on each side.
     DepthRender renderDepth(const Scene& scene, const View& view, int width, int height,
-                            ao::DepthFormat format = ao::DepthFormat::D32F, int guard = 0);
+                            DepthFormat format = DepthFormat::D32F, int guard = 0);
     //! G-buffer at m x m supersampling (m = 1..4) of a width x height image.
     GBuffer renderGBuffer(const Scene& scene, const View& view, int width, int height, int m);
     //! Forward-shaded colour at (scale width) x (scale height).

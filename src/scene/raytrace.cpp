@@ -1,5 +1,5 @@
 // Embree 3 triangle scenes for the ray-traced AO ground truth (see raytrace.hpp).
-#include "ssfx/render/raytrace.hpp"
+#include "ssfx/scene/raytrace.hpp"
 
 #include <embree3/rtcore.h>
 #include <fmt/format.h>

@@ -12,8 +12,8 @@
 #include <glm/glm.hpp>
 #include <string>
 
-#include "ssfx/ao/depth.hpp"
-#include "ssfx/render/scene.hpp"
+#include "ssfx/core/camera.hpp"
+#include "ssfx/scene/scene.hpp"
 
 namespace ssfx::render {
 
@@ -22,7 +22,7 @@ struct CameraSetup {
     int guard = 0;              //!< pixels added on every side of the rendered buffer
     glm::dmat4 view{1.0};       //!< world -> camera space
     glm::dmat4 projection{1.0}; //!< camera -> Vulkan clip space, for the whole buffer
-    ao::Camera camera;          //!< z planes (negative) and the *whole buffer's* vertical fov
+    Camera camera;          //!< z planes (negative) and the *whole buffer's* vertical fov
 
     int bufferWidth() const { return width + 2 * guard; }
     int bufferHeight() const { return height + 2 * guard; }

@@ -5,7 +5,7 @@
 #include <functional>
 #include <numbers>
 
-#include "ssfx/render/scene.hpp"
+#include "ssfx/scene/scene.hpp"
 
 namespace ssfx::render {
 

@@ -22,8 +22,8 @@
 #include "ssfx/core/error.hpp"
 #include "ssfx/core/isolate.hpp"
 #include "ssfx/io/png.hpp"
-#include "ssfx/render/camera.hpp"
-#include "ssfx/render/scene.hpp"
+#include "ssfx/scene/camera.hpp"
+#include "ssfx/scene/scene.hpp"
 
 namespace ssfx::render {
 

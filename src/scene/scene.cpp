@@ -7,7 +7,7 @@
 #include <stb/stb_image_resize.h>
 
 #include "ssfx/core/error.hpp"
-#include "ssfx/render/scene.hpp"
+#include "ssfx/scene/scene.hpp"
 
 namespace ssfx::render {
 

@@ -1,5 +1,5 @@
 // Camera matrices in double precision (see camera.hpp).
-#include "ssfx/render/camera.hpp"
+#include "ssfx/scene/camera.hpp"
 
 #include <fmt/format.h>
 
@@ -74,7 +74,7 @@ CameraSetup cameraSetup(const View& view, int width, int height, int guard) {
     c.camera.zNear = -view.zNear;
     c.camera.zFar = std::isinf(view.zFar) ? -INFINITY : -view.zFar;
     c.camera.fovY = fovYBuffer;
-    ao::projection(c.camera, c.bufferWidth(), c.bufferHeight());  // the AO code's own validation
+    ssfx::projection(c.camera, c.bufferWidth(), c.bufferHeight());  // the AO code's own validation
     return c;
 }
 

@@ -6,8 +6,8 @@
 #include <memory>
 
 #include "ssfx/ao/raytraced.hpp"
-#include "ssfx/render/camera.hpp"
-#include "ssfx/render/scene.hpp"
+#include "ssfx/scene/camera.hpp"
+#include "ssfx/scene/scene.hpp"
 
 namespace ssfx::render {
 

@@ -1,0 +1,34 @@
+// The G-buffer the renderer writes and adaptive supersampling shades (scenes library:
+// no Vulkan needed to hold or shade one).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <vector>
+
+#include "ssfx/core/image.hpp"
+#include "ssfx/scene/camera.hpp"
+
+namespace ssfx::render {
+
+//! A G-buffer at m x m supersampling: every buffer is (m width) x (m height) samples,
+//! row-major, the final pixel (x, y) owning samples [m x, m x + m) x [m y, m y + m).
+struct GBuffer {
+    static constexpr std::uint16_t kNoMaterial = 0xFFFF;  //!< background samples
+    int width = 0, height = 0, m = 1;
+    ImageF depth;                         //!< D32F, 1 = background
+    std::vector<glm::vec3> normal;        //!< camera space, towards the camera (16-bit snorm on the GPU); 0 on background
+    std::vector<glm::vec2> uv;            //!< texture coordinates (float32)
+    std::vector<glm::vec4> uvGrad;        //!< (du/dx, dv/dx, du/dy, dv/dy) per *final-image* pixel (float32)
+    std::vector<std::uint16_t> material;  //!< material index or kNoMaterial
+    std::vector<std::int16_t> layer;      //!< texture layer or -1
+    CameraSetup camera;                   //!< of the (m width) x (m height) sample grid
+    double gpuMs = 0;
+
+    int sampleWidth() const { return m * width; }
+    int sampleHeight() const { return m * height; }
+    std::size_t index(int sx, int sy) const { return std::size_t(sy) * std::size_t(sampleWidth()) + std::size_t(sx); }
+};
+
+}  // namespace ssfx::render

@@ -1,0 +1,83 @@
+#!/usr/bin/env bash
+# The module rules (docs/architecture.md), checked on the sources and on the build's link
+# lines. Usage: check_modules.sh SOURCE_DIR LINKS_FILE
+#   includes: each module's folders (src/M, include/ssfx/M) include ssfx headers of the
+#             modules below it only, and none of the third-party libraries it must not link;
+#   links:    each library target's link libraries (LINKS_FILE, written by CMake) name none
+#             of the libraries it must not link.
+set -u
+src=$1
+links=$2
+fail=0
+bad() { echo "module rule: $*" >&2; fail=1; }
+
+# module -> the ssfx modules it may include (itself included)
+declare -A allowed=(
+  [core]="core"
+  [io]="core io"
+  [aa]="core aa"
+  [ao]="core io ao"
+  [scene]="core io ao scene"
+  [render]="core io ao scene render"
+  [deferred]="core io ao scene deferred"
+  [eval]="core io aa ao scene render deferred eval"
+)
+# module -> third-party headers it must not include (a regex on the include)
+declare -A forbidden=(
+  [core]="cairo|vulkan|assimp|embree|glm/|stb/"
+  [io]="cairo|vulkan|assimp|embree|glm/|stb/"
+  [aa]="cairo|vulkan|assimp|embree|glm/|stb/"
+  [ao]="cairo|vulkan|assimp|embree|glm/|stb/"
+  [scene]="cairo|vulkan"
+  [render]="cairo|assimp|embree"
+  [deferred]="cairo|vulkan|assimp|embree"
+  [eval]="vulkan/"
+)
+checked=0
+for m in "${!allowed[@]}"; do
+  for dir in "$src/src/$m" "$src/include/ssfx/$m"; do
+    [ -d "$dir" ] || continue
+    while IFS= read -r line; do
+      file=${line%%:*}
+      inc=$(sed -E 's/.*#include *[<"]([^>"]+)[>"].*/\1/' <<<"$line")
+      checked=$((checked + 1))
+      if [[ $inc =~ ^ssfx/([a-z_]+)/ ]]; then
+        dep=${BASH_REMATCH[1]}
+        [[ " ${allowed[$m]} " == *" $dep "* ]] || bad "$file ($m) includes $inc ($dep is not below $m)"
+      elif [[ $inc == ssfx/registry.hpp ]]; then
+        [[ " ${allowed[$m]} " == *" aa "* ]] || bad "$file ($m) includes $inc (the aa registry)"
+      elif [[ $inc =~ ^src/([a-z_]+)/ ]]; then
+        # Private headers are their module's; core's SIMD helpers serve the whole ssfx library.
+        dep=${BASH_REMATCH[1]}
+        [ "$dep" = "$m" ] || { [ "$dep" = core ] && [[ " core io aa ao " == *" $m "* ]]; } ||
+          bad "$file ($m) includes another module's private header $inc"
+      elif grep -Eq "^(${forbidden[$m]})" <<<"$inc"; then
+        bad "$file ($m) includes $inc"
+      fi
+    done < <(grep -rHE '^#include' "$dir" --include=*.cpp --include=*.hpp --include=*.h)
+  done
+done
+# The aa registry lives at the top of the tree (src/registry.cpp, include/ssfx/registry.hpp).
+for file in "$src/src/registry.cpp" "$src/include/ssfx/registry.hpp"; do
+  grep -HE '^#include "ssfx/(render|scene|deferred|eval|ao|io)/' "$file" && bad "$file (the aa registry) includes a module above aa"
+done
+
+# Link lines: "TARGET: lib;lib;..." per line.
+declare -A nolink=(
+  [ssfx]="cairo|vulkan|assimp|embree|ssfx_scene|ssfx_render|ssfx_eval|ssfx_deferred"
+  [ssfx_scene]="vulkan|ssfx_render|ssfx_eval|cairo"
+  [ssfx_deferred]="vulkan|ssfx_render|ssfx_eval|cairo"
+  [ssfx_render]="cairo|ssfx_eval|ssfx_deferred"
+)
+while IFS= read -r line; do
+  target=${line%%:*}
+  libs=${line#*:}
+  [ -n "${nolink[$target]:-}" ] || continue
+  lower=$(tr '[:upper:]' '[:lower:]' <<<"$libs")
+  if grep -Eq "(^|[;: ])[^;]*(${nolink[$target]})" <<<"$lower"; then
+    bad "$target links $(grep -Eo "[^;]*(${nolink[$target]})[^;]*" <<<"$lower" | head -n 3 | tr '\n' ' ')"
+  fi
+done <"$links"
+[ "$checked" -gt 100 ] || bad "only $checked includes found under $src: wrong source directory?"
+[ "$fail" = 0 ] && echo "module rules: $checked includes and $(wc -l <"$links") link lines follow the rules"
+exit $fail
