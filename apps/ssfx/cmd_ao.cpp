@@ -159,7 +159,10 @@ void addAoCommand(CLI::App& app) {
     std::string names;  // from the registry's tables
     for (const ao::AoMethodInfo& m : ao::aoMethods()) {
         names += fmt::format("{}{}:", names.empty() ? "" : "; ", m.id);
-        for (const ParamInfo& p : m.params) names += " " + std::string(p.name);
+        for (const ParamInfo& p : m.params) {
+            names += ' ';
+            names += p.name;
+        }
     }
     cmd->add_option("-p,--param", o->params,
                     "NAME=VALUE (repeatable; ranges and defaults: ssfx methods --family ao): " + names);

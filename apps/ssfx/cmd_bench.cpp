@@ -7,6 +7,7 @@
 #include "commands.hpp"
 #include "ssfx/aa/resolve.hpp"
 #include "ssfx/eval/machine.hpp"
+#include "ssfx/eval/speed.hpp"
 #include "ssfx/eval/synthetic.hpp"
 #include "ssfx/eval/timing.hpp"
 #include "ssfx/io/png.hpp"
@@ -25,44 +26,26 @@ struct BenchOptions {
 void run(const BenchOptions& o) {
     const Exec exec{o.threads};
     // Inputs at scale 1, 2 and 4 (the resolves take the supersampled render).
-    ImageRgba8 inputs[3];
-    std::string source;
-    if (o.image.empty()) {
-        for (int i = 0; i < 3; ++i) inputs[i] = eval::syntheticScene(o.width, o.width * 9 / 16, 1 << i);
-        source = "synthetic";
-    } else {
-        inputs[0] = io::readPng(o.image);
-        inputs[1] = aa::upscaleMitchell(inputs[0].view(), 2, {}, exec);
-        inputs[2] = aa::upscaleMitchell(inputs[0].view(), 4, {}, exec);
-        source = o.image;
-    }
-    std::vector<const MethodInfo*> chosen;
-    if (o.methods.empty()) {
-        for (const MethodInfo& m : methods()) chosen.push_back(&m);
-    } else {
-        for (const auto& id : o.methods) chosen.push_back(&methodById(id));
-        if (std::none_of(chosen.begin(), chosen.end(), [](auto* m) { return m->id == "blur"; }))
-            chosen.push_back(&methodById("blur"));  // the baseline is always measured
-    }
-    std::vector<eval::TimedMethod> timed;
-    const MethodSettings settings;
-    // One output buffer per method, allocated once (the steady state of a frame loop).
-    std::vector<ImageRgba8> outputs;
-    outputs.reserve(chosen.size());
-    for (const MethodInfo* m : chosen) {
-        const ImageRgba8& in = inputs[m->inputScale == 4 ? 2 : m->inputScale == 2 ? 1 : 0];
-        ImageRgba8& out = outputs.emplace_back(inputs[0].width(), inputs[0].height());
-        timed.push_back({std::string(m->id), [m, &in, &out, &settings, exec] {
-                             m->runInto(in.view(), out.view(), settings, exec);
-                         }});
-    }
-    const auto results = eval::timeInterleaved(timed, o.reps, o.warmup, "blur", [](int r, int n) {
-        std::fprintf(stderr, "\rbench: round %d/%d", r, n);
-        if (r == n) std::fprintf(stderr, "\n");
-    });
+    const std::string source = o.image.empty() ? "synthetic" : o.image;
+    ImageRgba8 base;
+    if (!o.image.empty()) base = io::readPng(o.image);
+    auto input = [&](int scale) {
+        if (o.image.empty()) return eval::syntheticScene(o.width, o.width * 9 / 16, scale);
+        return scale == 1 ? base : aa::upscaleMitchell(base.view(), scale, {}, exec);
+    };
+    std::vector<std::string> ids = o.methods;
+    if (ids.empty())
+        for (const MethodInfo& m : methods()) ids.emplace_back(m.id);
+    for (const auto& id : ids) methodById(id);  // every id checked before any work
+    const ImageRgba8 first = input(1);
+    const auto results = eval::timeMethodsOn(
+        ids, [&](int scale) { return scale == 1 ? first : input(scale); }, o.reps, o.warmup, exec, [](int r, int n) {
+            std::fprintf(stderr, "\rbench: round %d/%d", r, n);
+            if (r == n) std::fprintf(stderr, "\n");
+        });
     const eval::MachineInfo mi = eval::machineInfo(resolvedThreads(exec));
     fmt::print("image: {} ({}x{}); {} repetitions, methods interleaved, fastest and slowest quarter dropped\n",
-               source, inputs[0].width(), inputs[0].height(), o.reps);
+               source, first.width(), first.height(), o.reps);
     fmt::print("machine: {}, {} threads used of {}, SIMD target {}\n\n", mi.cpu, mi.threads, mi.hardwareThreads,
                mi.simdTarget);
     fmt::print("{:<8} {:>10} {:>12} {:>14}\n", "method", "median ms", "trimmed ms", "% of blur");
@@ -75,14 +58,14 @@ void run(const BenchOptions& o) {
                         {"hardware_threads", mi.hardwareThreads},
                         {"threads", mi.threads},
                         {"simd_target", mi.simdTarget}};
-        j["image"] = {{"path", source}, {"width", inputs[0].width()}, {"height", inputs[0].height()}};
+        j["image"] = {{"path", source}, {"width", first.width()}, {"height", first.height()}};
         j["protocol"] = {{"repetitions", o.reps}, {"warmup", o.warmup}, {"baseline", "blur"},
                          {"relative", "trimmed mean (middle half) / blur's trimmed mean * 100"}};
         for (const auto& r : results)
             j["methods"][r.id] = {{"median_ms", r.medianMs}, {"trimmed_mean_ms", r.trimmedMeanMs},
                                   {"relative", r.relative}};
         const std::string text = j.dump(2) + "\n";
-        io::writeFileAtomic(o.json, {reinterpret_cast<const std::uint8_t*>(text.data()), text.size()});
+        io::writeTextAtomic(o.json, text);
     }
 }
 

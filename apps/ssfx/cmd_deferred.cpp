@@ -8,6 +8,7 @@
 #include "commands.hpp"
 #include "ssfx/core/error.hpp"
 #include "ssfx/deferred/registry.hpp"
+#include "ssfx/eval/metrics.hpp"
 #include "ssfx/eval/plot.hpp"
 #include "ssfx/io/png.hpp"
 #include "ssfx/render/renderer.hpp"
@@ -66,7 +67,7 @@ void run(const DeferredOptions& o) {
         io::writePng((dir / "error.png").string(), eval::heatMap(deferred::absoluteError(a.image, ref->image).view(), 0.0f, 0.05f).view());
         const double mse = deferred::mse(a.image, ref->image);
         fmt::print("; reference {:.1f} ms; MSE {:.3g} (x1e-5: {:.2f}), PSNR {:.2f} dB", ref->restMs, mse, mse * 1e5,
-                   10.0 * std::log10(1.0 / std::max(mse, 1e-20)));
+                   eval::psnrFromMse(mse));
     }
     fmt::print(" -> {}\n", o.out);
 }

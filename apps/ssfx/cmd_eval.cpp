@@ -26,10 +26,6 @@ namespace ssfx::cli {
 
 namespace {
 
-void writeText(const std::string& path, const std::string& text) {
-    io::writeFileAtomic(path, {reinterpret_cast<const std::uint8_t*>(text.data()), text.size()});
-}
-
 void progressLine(const std::string& s) { std::fprintf(stderr, "eval: %s\n", s.c_str()); }
 
 void addQuality(CLI::App& eval) {
@@ -70,8 +66,8 @@ void addQuality(CLI::App& eval) {
         q.progress = progressLine;
         const eval::QualityTable t = eval::evaluateQuality(o->dir, q);
         fmt::print("{}", eval::qualityText(t));
-        if (!o->json.empty()) writeText(o->json, eval::qualityJson(t));
-        if (!o->markdown.empty()) writeText(o->markdown, eval::qualityMarkdown(t));
+        if (!o->json.empty()) io::writeTextAtomic(o->json, eval::qualityJson(t));
+        if (!o->markdown.empty()) io::writeTextAtomic(o->markdown, eval::qualityMarkdown(t));
     });
 }
 
@@ -114,11 +110,11 @@ void addTemporal(CLI::App& eval) {
                 return eval::drawTestImage(name, scale, t);
             });
         } else {
-            const auto path = [&](const std::string& file) { return (std::filesystem::path(o->dir) / file).string(); };
-            if (!std::filesystem::exists(path(o->name + "x8.png")))
-                throw Error(fmt::format("{}: no such file (the x8 animation of '{}')", path(o->name + "x8.png"), o->name));
+            const std::string x8 = eval::renderSetPath(o->dir, o->name, 8);
+            if (!std::filesystem::exists(x8))
+                throw Error(fmt::format("{}: no such file (the x8 animation of '{}')", x8, o->name));
             source = eval::apngFrames(o->dir, o->name);
-            io::ApngReader first(path(o->name + "x8.png"));
+            io::ApngReader first(x8);
             const io::Frame* f = first.next();
             if (f && f->delaySeconds() > 0) fps = int(std::lround(1.0 / f->delaySeconds()));
         }
@@ -168,8 +164,8 @@ void addTemporal(CLI::App& eval) {
             given.empty() ? eval::evaluateTemporal(*source, t) : eval::evaluateTemporalGiven(*source, given, t);
         for (auto& w : writers) w->commit();
         fmt::print("{}", eval::temporalMarkdown(run.results));
-        if (!o->json.empty()) writeText(o->json, eval::temporalJson(run.results));
-        if (!o->markdown.empty()) writeText(o->markdown, eval::temporalMarkdown(run.results));
+        if (!o->json.empty()) io::writeTextAtomic(o->json, eval::temporalJson(run.results));
+        if (!o->markdown.empty()) io::writeTextAtomic(o->markdown, eval::temporalMarkdown(run.results));
     });
 }
 
@@ -193,8 +189,8 @@ void addKernels(CLI::App& eval) {
     cmd->callback([o] {
         const auto e = eval::runKernelExperiment(o->k);
         fmt::print("{}", eval::kernelMarkdown(e));
-        if (!o->json.empty()) writeText(o->json, eval::kernelJson(e));
-        if (!o->markdown.empty()) writeText(o->markdown, eval::kernelMarkdown(e));
+        if (!o->json.empty()) io::writeTextAtomic(o->json, eval::kernelJson(e));
+        if (!o->markdown.empty()) io::writeTextAtomic(o->markdown, eval::kernelMarkdown(e));
     });
 }
 
@@ -221,8 +217,8 @@ void addSpeed(CLI::App& eval) {
         o->s.progress = progressLine;
         const auto t = eval::measureSpeed(o->dir, o->s);
         fmt::print("{}", eval::speedMarkdown(t));
-        if (!o->json.empty()) writeText(o->json, eval::speedJson(t));
-        if (!o->markdown.empty()) writeText(o->markdown, eval::speedMarkdown(t));
+        if (!o->json.empty()) io::writeTextAtomic(o->json, eval::speedJson(t));
+        if (!o->markdown.empty()) io::writeTextAtomic(o->markdown, eval::speedMarkdown(t));
     });
 }
 

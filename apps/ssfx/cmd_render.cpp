@@ -32,30 +32,6 @@ DepthFormat parseDepthFormat(const std::string& f) {
     throw Error(fmt::format("--depth-format '{}' (d16, d24, d32f)", f));
 }
 
-void writeGBuffer(const std::string& path, const render::GBuffer& g) {
-    const int w = g.sampleWidth(), h = g.sampleHeight();
-    std::vector<ImageF> planes(12, ImageF(w, h));
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) {
-            const std::size_t i = g.index(x, y);
-            for (int c = 0; c < 3; ++c) planes[std::size_t(c)](x, y) = g.normal[i][c];
-            planes[3](x, y) = g.uv[i].x;
-            planes[4](x, y) = g.uv[i].y;
-            for (int c = 0; c < 4; ++c) planes[std::size_t(5 + c)](x, y) = g.uvGrad[i][c];
-            planes[9](x, y) = g.material[i] == render::GBuffer::kNoMaterial ? -1.0f : float(g.material[i]);
-            planes[10](x, y) = float(g.layer[i]);
-        }
-    planes[11] = g.depth;
-    const char* names[] = {"N.X", "N.Y", "N.Z", "UV.U", "UV.V", "dUVdx.U", "dUVdx.V", "dUVdy.U", "dUVdy.V",
-                           "material", "layer", "Z"};
-    std::vector<io::ExrChannel> channels;
-    for (std::size_t i = 0; i < planes.size(); ++i) channels.push_back({names[i], planes[i].view()});
-    io::writeExr(path, channels);
-}
-
-void writeText(const std::string& path, const std::string& text) {
-    io::writeFileAtomic(path, {reinterpret_cast<const std::uint8_t*>(text.data()), text.size()});
-}
 
 void run(const RenderOptions& o) {
     if (o.listDevices) {
@@ -125,9 +101,9 @@ void run(const RenderOptions& o) {
     const std::filesystem::path dir(o.out);
     io::writeExr((dir / "depth.exr").string(), depth.depth.view(), "Z");
     io::writeExr((dir / "z.exr").string(), z.view(), "Z");
-    writeText((dir / "camera.json").string(), render::cameraSetupJson(depth.camera));
+    io::writeTextAtomic((dir / "camera.json").string(), render::cameraSetupJson(depth.camera));
     io::writePng((dir / "color.png").string(), color.color.view());
-    if (gbuffer) writeGBuffer((dir / "gbuffer.exr").string(), *gbuffer);
+    if (gbuffer) render::writeGBufferExr((dir / "gbuffer.exr").string(), *gbuffer);
     outputs.commit();
     fmt::print("{} / {}: {} triangles, {}x{} + guard {} on {}: depth ({}) {:.2f} ms, colour x{} {:.2f} ms", scene.name,
                o.view.empty() ? scene.views.at(0).first : o.view, scene.triangleCount(), w, h, o.guard,

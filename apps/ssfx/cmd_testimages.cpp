@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "commands.hpp"
+#include "ssfx/eval/quality.hpp"
 #include "ssfx/eval/test_images.hpp"
 #include "ssfx/io/png.hpp"
 
@@ -37,9 +38,7 @@ void addTestimagesCommand(CLI::App& app) {
         for (const auto& name : names) {
             const eval::TestImageInfo& info = eval::testImageByName(name);
             for (int scale : o->scales) {
-                const std::string file =
-                    (std::filesystem::path(o->out) / (scale == 1 ? name + ".png" : fmt::format("{}x{}.png", name, scale)))
-                        .string();
+                const std::string file = eval::renderSetPath(o->out, name, scale);
                 std::fprintf(stderr, "testimages: %s\n", file.c_str());
                 if (info.frames == 1) {
                     io::writePng(file, eval::drawTestImage(name, scale).view());

@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "commands.hpp"
+#include "ssfx/eval/quality.hpp"
 #include "ssfx/eval/synthetic.hpp"
 #include "ssfx/io/png.hpp"
 
@@ -26,8 +27,7 @@ void addTestsceneCommand(CLI::App& app) {
         io::makeDirectories(o->out);
         io::OutputSet outputs;
         for (int scale : {1, 2, 4}) {
-            const std::string name = scale == 1 ? "scene.png" : fmt::format("scenex{}.png", scale);
-            io::writePng((std::filesystem::path(o->out) / name).string(),
+            io::writePng(eval::renderSetPath(o->out, "scene", scale),
                          eval::syntheticScene(o->width, o->height, scale).view());
         }
         outputs.commit();

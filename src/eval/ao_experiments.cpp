@@ -13,6 +13,7 @@
 #include "ssfx/ao/raytraced.hpp"
 #include "ssfx/ao/sao.hpp"
 #include "ssfx/eval/ao_scenes.hpp"
+#include "ssfx/eval/metrics.hpp"
 #include "ssfx/eval/plot.hpp"
 #include "ssfx/eval/timing.hpp"
 #include "ssfx/io/png.hpp"
@@ -28,10 +29,6 @@ const char* formatName(DepthFormat f) {
     return f == DepthFormat::D16 ? "D16" : f == DepthFormat::D24 ? "D24" : "D32F";
 }
 constexpr DepthFormat kFormats[] = {DepthFormat::D16, DepthFormat::D24, DepthFormat::D32F};
-
-void writeText(const fs::path& path, const std::string& text) {
-    io::writeFileAtomic(path.string(), {reinterpret_cast<const std::uint8_t*>(text.data()), text.size()});
-}
 
 ImageRgba8 grey(const ImageF& a, float offset = 0.0f, float gain = 1.0f) {
     ImageRgba8 out(a.width(), a.height());
@@ -50,16 +47,6 @@ ImageF difference(const ImageF& a, const ImageF& b) {
         for (int x = 0; x < a.width(); ++x) d(x, y) = a(x, y) - b(x, y);
     return d;
 }
-
-double mseF(const ImageF& a, const ImageF& b) {
-    double s = 0;
-    for (std::size_t i = 0; i < a.pixels().size(); ++i) {
-        const double d = double(a.pixels()[i]) - double(b.pixels()[i]);
-        s += d * d;
-    }
-    return s / double(a.pixels().size());
-}
-double psnrOf(double mse) { return mse <= 0 ? INFINITY : 10 * std::log10(1 / mse); }
 
 // Hardware depth of `g` stored in `format` (from the exact z, not from the float depth).
 ImageF depthIn(const GeometryBuffer& g, const Camera& cam, DepthFormat format) {
@@ -190,7 +177,7 @@ std::string releasedComparison(const std::vector<AoRenderedScene>& entries, int 
             ao::SaoParams p = c.p;
             p.guardBand = guard;
             const ImageF a = ao::sao(e.depth.view(), e.camera, p, o.exec);
-            const double psnr = psnrOf(mseF(a, it->second)), lap = rmsLaplacian(a, flat),
+            const double psnr = psnrFromMse(mse(a.view(), it->second.view())), lap = rmsLaplacian(a, flat),
                          truthLap = rmsLaplacian(it->second, flat);
             if (c.file != "released_r1")
                 io::writePng((out / "images" / fmt::format("ao_{}_{}.png", e.name, c.file)).string(), grey(a).view());
@@ -388,7 +375,7 @@ std::string runAoExperiments(const AoExperimentOptions& o) {
                 a = ao::alchemy(e.depth.view(), e.camera, p, o.exec);
             }
             if (v == 1) noPyramid = ImageF::copyOf(a.view());
-            psnrTable[v][si] = psnrOf(mseF(a, truth));
+            psnrTable[v][si] = psnrFromMse(mse(a.view(), truth.view()));
             std::string file = variants[v].name;
             std::replace(file.begin(), file.end(), ' ', '_');
             file.erase(std::remove(file.begin(), file.end(), ','), file.end());
@@ -502,8 +489,8 @@ std::string runAoExperiments(const AoExperimentOptions& o) {
             {"sample_ms", med(&ao::SaoTimings::sample)}, {"blur_ms", med(&ao::SaoTimings::blur)}, {"total_ms", total}};
     }
 
-    writeText(out / "data" / "ao.json", j.dump(1) + "\n");
-    writeText(out / "data" / "ao.md", md);
+    io::writeTextAtomic((out / "data" / "ao.json").string(), j.dump(1) + "\n");
+    io::writeTextAtomic((out / "data" / "ao.md").string(), md);
     return md;
 }
 

@@ -11,7 +11,9 @@
 
 #include "ssfx/aa/fxaa.hpp"
 #include "ssfx/core/error.hpp"
+#include "ssfx/eval/metrics.hpp"
 #include "ssfx/eval/plot.hpp"
+#include "ssfx/eval/timing.hpp"
 #include "ssfx/io/png.hpp"
 #include "ssfx/render/renderer.hpp"
 
@@ -20,11 +22,6 @@ namespace ssfx::eval {
 namespace fs = std::filesystem;
 
 namespace {
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.empty() ? NAN : (v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]));
-}
 
 std::string cell(double v, int digits) { return std::isfinite(v) ? fmt::format("{:.{}f}", v, digits) : "-"; }
 
@@ -111,7 +108,7 @@ std::string runDeferredExperiment(const DeferredExperimentOptions& o) {
             continue;
         }
         const double mse = deferred::mse(ours.image, ref.image);
-        const double psnr = 10.0 * std::log10(1.0 / std::max(mse, 1e-20));
+        const double psnr = psnrFromMse(mse);
         rows.push_back({ss, "reference", gbufferMs, median(refMs), median(refStallMs), NAN, NAN, 100.0});
         rows.push_back({ss, "ours", gbufferMs, median(oursMs), median(oursStallMs), mse, psnr, ours.shadedPercent()});
         rows.push_back({ss, "ours, 8x8 tiles by k", gbufferMs, median(tiledMs), median(tiledStallMs), mse, psnr,
@@ -154,8 +151,8 @@ std::string runDeferredExperiment(const DeferredExperimentOptions& o) {
                       speedupPlain, speedupStalled);
     j["speedup_4x4"] = {{"plain", speedupPlain}, {"stalled", speedupStalled}};
     const std::string text = j.dump(2) + "\n";
-    io::writeFileAtomic((out / "data" / "deferred.json").string(), {reinterpret_cast<const std::uint8_t*>(text.data()), text.size()});
-    io::writeFileAtomic((out / "data" / "deferred.md").string(), {reinterpret_cast<const std::uint8_t*>(md.data()), md.size()});
+    io::writeTextAtomic((out / "data" / "deferred.json").string(), text);
+    io::writeTextAtomic((out / "data" / "deferred.md").string(), md);
     return md;
 }
 

@@ -42,6 +42,18 @@ double mse(ImageView<const Rgba8> a, ImageView<const Rgba8> b, const Exec& exec)
     return double(total.load()) / (255.0 * 255.0) / (double(a.pixelCount()) * 3.0);
 }
 
+double mse(ImageView<const float> a, ImageView<const float> b) {
+    if (a.width() != b.width() || a.height() != b.height())
+        throw Error(fmt::format("mse: sizes {}x{} and {}x{} differ", a.width(), a.height(), b.width(), b.height()));
+    double s = 0;
+    for (int y = 0; y < a.height(); ++y)
+        for (int x = 0; x < a.width(); ++x) {
+            const double d = double(a(x, y)) - double(b(x, y));
+            s += d * d;
+        }
+    return s / double(a.pixelCount());
+}
+
 double psnrFromMse(double m) {
     return m <= 0 ? std::numeric_limits<double>::infinity() : 10.0 * std::log10(1.0 / m);
 }

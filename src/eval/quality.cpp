@@ -49,6 +49,14 @@ std::vector<std::string> paperMethodOrder() {
     return {"ssaax4", "ssaax2", "blur", "fxaa3c", "fxaa3d", "ddaa1", "ddaa2", "ddaa2p", "noaa"};
 }
 
+std::string renderSetFile(const std::string& name, int scale) {
+    return scale == 1 ? name + ".png" : fmt::format("{}x{}.png", name, scale);
+}
+
+std::string renderSetPath(const std::string& dir, const std::string& name, int scale) {
+    return (fs::path(dir) / renderSetFile(name, scale)).string();
+}
+
 std::vector<std::string> findRenderSets(const std::string& dir) {
     if (!fs::is_directory(dir)) throw Error(fmt::format("'{}' is not a directory", dir));
     std::vector<std::string> names;
@@ -57,7 +65,7 @@ std::vector<std::string> findRenderSets(const std::string& dir) {
         if (p.extension() != ".png") continue;
         const std::string stem = p.stem().string();
         if (stem.find('_') != std::string::npos) continue;  // NAME_METHOD.png
-        if (!fs::exists(fs::path(dir) / (stem + "x8.png"))) continue;
+        if (!fs::exists(renderSetPath(dir, stem, 8))) continue;
         if (!isStillPng(p.string())) continue;  // animations: see temporal.hpp
         names.push_back(stem);
     }
@@ -116,8 +124,8 @@ QualityTable evaluateQuality(const std::string& dir, const QualityOptions& o) {
     };
     for (const auto& name : t.images) {
         say(fmt::format("{}: loading renders", name));
-        const ImageRgba8 x1 = io::readPng(pathIn(dir, name + ".png"));
-        const ImageRgba8 x8 = io::readPng(pathIn(dir, name + "x8.png"));
+        const ImageRgba8 x1 = io::readPng(renderSetPath(dir, name, 1));
+        const ImageRgba8 x8 = io::readPng(renderSetPath(dir, name, 8));
         if (std::int64_t{x1.width()} * 8 != x8.width() || std::int64_t{x1.height()} * 8 != x8.height())
             throw Error(fmt::format("{}x8.png is {}x{}, expected 8 times {}.png ({}x{})", name, x8.width(),
                                     x8.height(), name, x1.width(), x1.height()));
@@ -138,7 +146,7 @@ QualityTable evaluateQuality(const std::string& dir, const QualityOptions& o) {
                 const ImageRgba8* input = &x1;
                 if (info.inputScale != 1) {
                     ImageRgba8& s = scaled[info.inputScale == 4 ? 1 : 0];
-                    const std::string file = pathIn(dir, fmt::format("{}x{}.png", name, info.inputScale));
+                    const std::string file = renderSetPath(dir, name, info.inputScale);
                     if (s.empty()) {
                         if (!fs::exists(file)) {
                             say(fmt::format("{} {}: no {}, skipped", name, info.id, file));

@@ -49,10 +49,6 @@ std::string esc(std::string_view s) {
     return o;
 }
 
-void writeText(const fs::path& path, const std::string& text) {
-    io::writeFileAtomic(path.string(), {reinterpret_cast<const std::uint8_t*>(text.data()), text.size()});
-}
-
 std::string fmtValue(double v, int decimals) {
     if (std::isnan(v)) return "-";
     if (std::isinf(v)) return "inf";
@@ -196,7 +192,7 @@ void writeReport(const ReportOptions& o) {
         say(fmt::format("report: drawing {}", t.name));
         for (int s : {1, 2, 4, 8}) {
             const ImageRgba8 img = drawTestImage(t.name, s);
-            const std::string file = s == 1 ? std::string(t.name) + ".png" : fmt::format("{}x{}.png", t.name, s);
+            const std::string file = renderSetFile(std::string(t.name), s);
             io::writePng((out / "images" / file).string(), img.view());
             if (s == 8)
                 io::writePng((out / "images" / (std::string(t.name) + "_reference.png")).string(),
@@ -209,7 +205,7 @@ void writeReport(const ReportOptions& o) {
     if (o.addRenderSets)
         for (const auto& [name, description] : o.addRenderSets((out / "images").string())) {
             extraSets[name] = description;
-            const ImageRgba8 x8 = io::readPng((out / "images" / (name + "x8.png")).string());
+            const ImageRgba8 x8 = io::readPng(renderSetPath((out / "images").string(), name, 8));
             io::writePng((out / "images" / (name + "_reference.png")).string(),
                          aa::downscaleMitchell(x8.view(), 8, {}, o.exec).view());
         }
@@ -221,8 +217,8 @@ void writeReport(const ReportOptions& o) {
     qo.exec = o.exec;
     qo.progress = o.progress;
     const QualityTable quality = evaluateQuality((out / "images").string(), qo);
-    writeText(out / "data" / "quality.json", qualityJson(quality));
-    writeText(out / "data" / "quality.md", qualityMarkdown(quality));
+    io::writeTextAtomic((out / "data" / "quality.json").string(), qualityJson(quality));
+    io::writeTextAtomic((out / "data" / "quality.md").string(), qualityMarkdown(quality));
     all["quality"] = nlohmann::ordered_json::parse(qualityJson(quality));
 
     // 3a. The opt-in colour-aware contrast (spec section 4) on every image, and up close on
@@ -240,7 +236,7 @@ void writeReport(const ReportOptions& o) {
         co.exec = o.exec;
         co.settings.params = {{"chromaWeight", kChroma}};
         const QualityTable colour = evaluateQuality((out / "images").string(), co);
-        writeText(out / "data" / "quality_colour_aware.json", qualityJson(colour));
+        io::writeTextAtomic((out / "data" / "quality_colour_aware.json").string(), qualityJson(colour));
         all["colour_aware"] = {{"chromaWeight", kChroma},
                                {"quality", nlohmann::ordered_json::parse(qualityJson(colour))}};
         std::vector<std::string> rows;
@@ -254,9 +250,10 @@ void writeReport(const ReportOptions& o) {
             }
         }
         // Close-up: PSNR of the cell alone (x8 upscale of the crop vs the x8 render's crop).
-        const ImageRgba8 x1 = io::readPng((out / "images" / "circles.png").string());
-        const ImageRgba8 x2 = io::readPng((out / "images" / "circlesx2.png").string());
-        const ImageRgba8 x8 = io::readPng((out / "images" / "circlesx8.png").string());
+        const std::string images = (out / "images").string();
+        const ImageRgba8 x1 = io::readPng(renderSetPath(images, "circles", 1));
+        const ImageRgba8 x2 = io::readPng(renderSetPath(images, "circles", 2));
+        const ImageRgba8 x8 = io::readPng(renderSetPath(images, "circles", 8));
         auto crop = [](const ImageRgba8& img, int x0, int y0, int w, int h) {
             ImageRgba8 c(w, h);
             for (int y = 0; y < h; ++y)
@@ -323,8 +320,8 @@ void writeReport(const ReportOptions& o) {
         const QualityTable given = evaluateQuality(o.referenceDir, ro);
         ro.source = OutputSource::Compute;
         const QualityTable ours = evaluateQuality(o.referenceDir, ro);
-        writeText(out / "data" / "reference_given.json", qualityJson(given));
-        writeText(out / "data" / "reference_ours.json", qualityJson(ours));
+        io::writeTextAtomic((out / "data" / "reference_given.json").string(), qualityJson(given));
+        io::writeTextAtomic((out / "data" / "reference_ours.json").string(), qualityJson(ours));
         all["reference"] = {{"given", nlohmann::ordered_json::parse(qualityJson(given))},
                             {"ours", nlohmann::ordered_json::parse(qualityJson(ours))}};
         reproduction =
@@ -366,14 +363,14 @@ void writeReport(const ReportOptions& o) {
     };
     saveAnim("reference", temporal.reference);
     for (std::size_t m = 0; m < methodIds.size(); ++m) saveAnim(methodIds[m], temporal.outputs[m]);
-    writeText(out / "data" / "temporal.json", temporalJson(temporal.results));
-    writeText(out / "data" / "temporal.md", temporalMarkdown(temporal.results));
+    io::writeTextAtomic((out / "data" / "temporal.json").string(), temporalJson(temporal.results));
+    io::writeTextAtomic((out / "data" / "temporal.md").string(), temporalMarkdown(temporal.results));
     all["temporal"] = nlohmann::ordered_json::parse(temporalJson(temporal.results));
 
     // 4b. The author's animation, when the reference data has it (animatedx8.png and
     // animated_METHOD.png): the given outputs and ssfx's on the same frames, streamed.
     std::string temporalReference;
-    if (!o.referenceDir.empty() && !o.quick && fs::exists(fs::path(o.referenceDir) / "animatedx8.png")) {
+    if (!o.referenceDir.empty() && !o.quick && fs::exists(renderSetPath(o.referenceDir, "animated", 8))) {
         std::vector<std::pair<std::string, std::string>> given;
         for (const auto& id : methodIds) {
             const fs::path file = fs::path(o.referenceDir) / fmt::format("animated_{}.png", id);
@@ -412,8 +409,8 @@ void writeReport(const ReportOptions& o) {
     so.exec = o.exec;
     so.progress = o.progress;
     const SpeedTable speed = measureSpeed((out / "images").string(), so);
-    writeText(out / "data" / "speed.json", speedJson(speed));
-    writeText(out / "data" / "speed.md", speedMarkdown(speed));
+    io::writeTextAtomic((out / "data" / "speed.json").string(), speedJson(speed));
+    io::writeTextAtomic((out / "data" / "speed.md").string(), speedMarkdown(speed));
     all["speed"] = nlohmann::ordered_json::parse(speedJson(speed));
 
     // 6. Kernel experiment, aliased (the PPAA case) and with 4x4 coverage (for contrast).
@@ -423,8 +420,8 @@ void writeReport(const ReportOptions& o) {
     const KernelExperiment kernels = runKernelExperiment(ko);
     ko.supersample = 4;
     const KernelExperiment kernelsAa = runKernelExperiment(ko);
-    writeText(out / "data" / "kernels.json", kernelJson(kernels));
-    writeText(out / "data" / "kernels_supersampled.json", kernelJson(kernelsAa));
+    io::writeTextAtomic((out / "data" / "kernels.json").string(), kernelJson(kernels));
+    io::writeTextAtomic((out / "data" / "kernels_supersampled.json").string(), kernelJson(kernelsAa));
     all["kernels"] = nlohmann::ordered_json::parse(kernelJson(kernels));
 
     // 7. Charts.
@@ -545,13 +542,13 @@ void writeReport(const ReportOptions& o) {
 
     // 8. Method docs.
     for (const auto& [id, text] : detail::methodDocs()) {
-        writeText(out / "methods" / (std::string(id) + ".html"),
+        io::writeTextAtomic((out / "methods" / (std::string(id) + ".html")).string(),
                   fmt::format("<!DOCTYPE html><html lang=\"en\"><head><meta charset=\"utf-8\"><title>ssfx: {0}</title>"
                               "<style>{1}</style></head><body><p><a href=\"../index.html\">back to the report</a></p>"
                               "<pre class=\"doc\">{2}</pre></body></html>\n",
                               esc(id), detail::kReportCss, esc(text)));
     }
-    writeText(out / "data" / "all.json", all.dump(1) + "\n");
+    io::writeTextAtomic((out / "data" / "all.json").string(), all.dump(1) + "\n");
 
     // 9. The page.
     say("report: index.html");
@@ -668,7 +665,7 @@ void writeReport(const ReportOptions& o) {
     h += fmt::format("<p class=\"note\">Written by ssfx 0.1.0. Tables as Markdown: <a href=\"data/quality.md\">quality"
                      "</a>, <a href=\"data/temporal.md\">temporal</a>, <a href=\"data/speed.md\">speed</a>.</p>\n");
     h += "<script>" + std::string(detail::kReportJs) + "</script>\n</body></html>\n";
-    writeText(out / "index.html", h);
+    io::writeTextAtomic((out / "index.html").string(), h);
 }
 
 }  // namespace ssfx::eval

@@ -79,8 +79,7 @@ public:
         return f->image.view();
     }
     std::string path(int scale) const {
-        return (std::filesystem::path(dir_) / (scale == 1 ? name_ + ".png" : fmt::format("{}x{}.png", name_, scale)))
-            .string();
+        return renderSetPath(dir_, name_, scale);
     }
 
 private:

@@ -85,7 +85,7 @@ std::string cameraJson(const Camera& c) {
 
 void writeCameraJson(const std::string& path, const Camera& c) {
     const std::string text = cameraJson(c);
-    writeFileAtomic(path, {reinterpret_cast<const std::uint8_t*>(text.data()), text.size()});
+    writeTextAtomic(path, text);
 }
 
 }  // namespace ssfx::io

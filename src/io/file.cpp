@@ -286,4 +286,8 @@ void writeFileAtomic(const std::string& path, std::span<const std::uint8_t> byte
     f.commit();
 }
 
+void writeTextAtomic(const std::string& path, std::string_view text) {
+    writeFileAtomic(path, {reinterpret_cast<const std::uint8_t*>(text.data()), text.size()});
+}
+
 }  // namespace ssfx::io

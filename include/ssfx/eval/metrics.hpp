@@ -19,6 +19,8 @@
 namespace ssfx::eval {
 
 double mse(ImageView<const Rgba8> a, ImageView<const Rgba8> b, const Exec& exec = {});
+//! The same over float images (AO visibility in [0, 1]): the mean of the squared differences.
+double mse(ImageView<const float> a, ImageView<const float> b);
 double psnrFromMse(double mse);
 double psnr(ImageView<const Rgba8> a, ImageView<const Rgba8> b, const Exec& exec = {});
 //! Needs images of at least 8x8.

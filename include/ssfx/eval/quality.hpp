@@ -25,6 +25,10 @@ std::vector<std::string> paperMethodOrder();
 //! Names NAME for which DIR has NAME.png (a still PNG) and NAMEx8.png, sorted with ssfx's
 //! test images first in their usual order. Throws ssfx::Error if DIR is not a directory.
 std::vector<std::string> findRenderSets(const std::string& dir);
+//! A render set's file name: NAME.png at scale 1, NAMExS.png at scale S (the x8 is the truth's).
+std::string renderSetFile(const std::string& name, int scale);
+//! The same in `dir`.
+std::string renderSetPath(const std::string& dir, const std::string& name, int scale);
 
 enum class OutputSource {
     Compute,  //!< run each method on the renders

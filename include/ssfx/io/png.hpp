@@ -19,6 +19,7 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "ssfx/core/image.hpp"
@@ -49,6 +50,8 @@ std::vector<std::uint8_t> readFile(const std::string& path, std::uint64_t maxByt
 //! Writes through an AtomicFile (below): `path` is never left half-written, an existing file
 //! stays intact on failure, links are followed, devices and FIFOs written into, "-" is stdout.
 void writeFileAtomic(const std::string& path, std::span<const std::uint8_t> bytes);
+//! The same for text (JSON, Markdown, HTML).
+void writeTextAtomic(const std::string& path, std::string_view text);
 
 //! Creates the output directory `dir` (and its parents) unless it exists; an ssfx::Error
 //! naming it when it is a file or cannot be created (a user's mistake: exit 2, not 1).

@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <string>
 #include <vector>
 
 #include "ssfx/core/image.hpp"
@@ -30,5 +31,10 @@ struct GBuffer {
     int sampleHeight() const { return m * height; }
     std::size_t index(int sx, int sy) const { return std::size_t(sy) * std::size_t(sampleWidth()) + std::size_t(sx); }
 };
+
+//! Writes `g` as one float EXR of the sample grid: channels N.X N.Y N.Z (camera-space
+//! normal), UV.U UV.V, dUVdx.U dUVdx.V dUVdy.U dUVdy.V, material (-1 on background),
+//! layer (-1: none) and Z (the D32F depth). Atomic (io::AtomicFile).
+void writeGBufferExr(const std::string& path, const GBuffer& g);
 
 }  // namespace ssfx::render
