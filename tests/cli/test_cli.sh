@@ -28,6 +28,17 @@ contains help_eval_temporal "$OUT/help_eval_temporal.out" "flicker"
 contains help_aa "$OUT/help_aa.out" "ddaa2"
 check methods 0 "$SSFX" methods
 contains methods "$OUT/methods.out" "searchRounds"
+check methods_ao 0 "$SSFX" methods --family ao
+contains methods_ao "$OUT/methods_ao.out" "pyramidFilter=rotated-grid"
+check methods_json 0 "$SSFX" methods --json
+contains methods_json "$OUT/methods_json.out" '"backends"'
+check methods_family 2 "$SSFX" methods --family nope
+# docs/parameters.md is the tables as the tool prints them (with every family built).
+check methods_md 0 "$SSFX" methods --markdown
+if grep -q '^## Family `deferred`' "$OUT/methods_md.out"; then
+  cmp -s "$OUT/methods_md.out" "$SRC/docs/parameters.md" ||
+    { echo "FAIL methods_md: docs/parameters.md differs from ssfx methods --markdown (regenerate it)"; fail=1; }
+fi
 check presets 0 "$SSFX" aa --list-presets
 contains presets "$OUT/presets.out" "extreme"
 
@@ -36,6 +47,15 @@ check aa 0 "$SSFX" aa -m ddaa2 "$OUT/scene/scene.png" -o "$OUT/ddaa2.png" --pres
 [ -s "$OUT/ddaa2.png" ] || { echo "FAIL aa: no output"; fail=1; }
 check resolve 0 "$SSFX" aa -m ssaax4 "$OUT/scene/scenex4.png" -o "$OUT/ssaax4.png"
 check param 0 "$SSFX" aa -m ddaa2 -p strength=2 -p searchRounds=3 "$OUT/scene/scene.png" -o "$OUT/p.png"
+# The same parameter rules as the library: a value outside a table's range, a non-integer
+# integer, an unknown choice (exit 2).
+check param_range 2 "$SSFX" aa -m ddaa2 -p strength=101 "$OUT/scene/scene.png" -o "$OUT/bad.png"
+check param_int 2 "$SSFX" aa -m ddaa2 -p searchRounds=2.5 "$OUT/scene/scene.png" -o "$OUT/bad.png"
+check param_choice 2 "$SSFX" ao --scene room --size 32x24 -p pyramidFilter=median -o "$OUT/bad.png"
+contains param_choice "$OUT/param_choice.err" "rotated-grid"
+contains param_range "$OUT/param_range.err" "strength = 101 is not in"
+contains param_int "$OUT/param_int.err" "searchRounds = 2.5 is not an integer in"
+check param_choice_ok 0 "$SSFX" ao --scene room --size 32x24 -p pyramidFilter=harmonic-mean -o "$OUT/hm.png"
 
 # -o and what it names: "-" is standard output, a link is followed, a read-only file refused.
 "$SSFX" aa -m ddaa2 "$OUT/scene/scene.png" -o - --preset high --threads 2 >"$OUT/stdout.png" 2>"$OUT/stdout.err" ||
