@@ -11,6 +11,7 @@
 #include "ssfx/ao/sao.hpp"
 #include "ssfx/registry.hpp"
 #include "support/param_tables.hpp"
+#include "support/test_support.hpp"
 
 namespace ssfx::test {
 namespace {
@@ -65,20 +66,12 @@ TEST(Params, ParsingAndMessages) {
     EXPECT_EQ(parseParamValue(rounds, "+3", "ddaa2"), 3.0);
     EXPECT_EQ(parseParamValue(rounds, "1e0", "ddaa2"), 1.0);
     for (const char* bad : {"", "3x", "0x10", "three", " 3"}) EXPECT_THROW(parseParamValue(rounds, bad, "ddaa2"), Error) << bad;
-    auto message = [](auto&& f) {
-        try {
-            f();
-        } catch (const Error& e) {
-            return std::string(e.what());
-        }
-        return std::string("(no error)");
-    };
     aa::Ddaa2Params p;
-    EXPECT_EQ(message([&] { setParam(aa::kDdaa2Params, &p, "ddaa2", "searchRounds", 2.5); }),
+    EXPECT_EQ(errorOf([&] { setParam(aa::kDdaa2Params, &p, "ddaa2", "searchRounds", 2.5); }),
               "ddaa2: searchRounds = 2.5 is not an integer in [1, 5]");
-    EXPECT_EQ(message([&] { setParam(aa::kDdaa2Params, &p, "ddaa2", "strength", -1); }),
+    EXPECT_EQ(errorOf([&] { setParam(aa::kDdaa2Params, &p, "ddaa2", "strength", -1); }),
               "ddaa2: strength = -1 is not in [0, 100]");
-    EXPECT_EQ(message([&] { setParam(aa::kDdaa2Params, &p, "ddaa2", "strenght", 1); }).substr(0, 38),
+    EXPECT_EQ(errorOf([&] { setParam(aa::kDdaa2Params, &p, "ddaa2", "strenght", 1); }).substr(0, 38),
               "ddaa2: unknown parameter 'strenght' (p");
     EXPECT_EQ(p.searchRounds, 5);  // a refused value leaves the struct as it was
     // A choice by name or index; its message lists the names.
@@ -88,11 +81,11 @@ TEST(Params, ParsingAndMessages) {
     EXPECT_EQ(s.pyramidFilter, ao::PyramidFilter::HarmonicMean);
     EXPECT_EQ(filter.valueText(filter.defaultValue()), "rotated-grid");
     EXPECT_EQ(filter.rangeText(), "rotated-grid|mean|harmonic-mean|min|max");
-    EXPECT_NE(message([&] { parseParamValue(filter, "median", "sao"); }).find("is not one of rotated-grid, mean"),
+    EXPECT_NE(errorOf([&] { parseParamValue(filter, "median", "sao"); }).find("is not one of rotated-grid, mean"),
               std::string::npos);
     const ParamInfo& pyramid = findParam(ao::kSaoParams, "sao", "usePyramid");
     EXPECT_EQ(parseParamValue(pyramid, "false", "sao"), 0.0);
-    EXPECT_EQ(message([&] { setParam(ao::kSaoParams, &s, "sao", "usePyramid", 2); }), "sao: usePyramid = 2 is not 0 or 1");
+    EXPECT_EQ(errorOf([&] { setParam(ao::kSaoParams, &s, "sao", "usePyramid", 2); }), "sao: usePyramid = 2 is not 0 or 1");
     // A Real is checked as stored: 1e-300 is 0 in a float, outside radius' (0, 100].
     EXPECT_THROW(setParam(ao::kSaoParams, &s, "sao", "radius", 1e-300), Error);
 }

@@ -185,39 +185,31 @@ TEST(RenderImport, SceneFileNamesModelLightsAndViews) {
 
 TEST(RenderImport, BadInputsGiveClearErrors) {
     const fs::path dir = scratch("bad");
-    auto message = [](auto&& f) {
-        try {
-            f();
-        } catch (const Error& e) {
-            return std::string(e.what());
-        }
-        return std::string("(no error)");
-    };
-    EXPECT_NE(message([&] { render::loadScene((dir / "missing.obj").string()); }).find("no such file"), std::string::npos);
-    EXPECT_NE(message([&] { render::loadScene("nonexistent-builtin"); }).find("not a built-in scene"), std::string::npos);
+    EXPECT_NE(errorOf([&] { render::loadScene((dir / "missing.obj").string()); }).find("no such file"), std::string::npos);
+    EXPECT_NE(errorOf([&] { render::loadScene("nonexistent-builtin"); }).find("not a built-in scene"), std::string::npos);
     writeText(dir / "corrupt.gltf", "{\"asset\": {\"version\": \"2.0\"}, \"meshes\": [ {\"primitives\": [");
-    EXPECT_NE(message([&] { render::importModel((dir / "corrupt.gltf").string()); }).find("corrupt.gltf"), std::string::npos);
+    EXPECT_NE(errorOf([&] { render::importModel((dir / "corrupt.gltf").string()); }).find("corrupt.gltf"), std::string::npos);
     writeText(dir / "garbage.obj", "this is not an OBJ file\n\x01\x02\x03");
-    EXPECT_NE(message([&] { render::importModel((dir / "garbage.obj").string()); }).find("garbage.obj"), std::string::npos);
+    EXPECT_NE(errorOf([&] { render::importModel((dir / "garbage.obj").string()); }).find("garbage.obj"), std::string::npos);
     writeText(dir / "notex.mtl", "newmtl t\nmap_Kd missing.png\n");
     writeText(dir / "notex.obj", "mtllib notex.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl t\nf 1 2 3\n");
-    EXPECT_NE(message([&] { render::importModel((dir / "notex.obj").string()); }).find("missing.png"), std::string::npos);
+    EXPECT_NE(errorOf([&] { render::importModel((dir / "notex.obj").string()); }).find("missing.png"), std::string::npos);
     writeText(dir / "badtex.png", "not a png");
     writeText(dir / "badtex.mtl", "newmtl t\nmap_Kd badtex.png\n");
     writeText(dir / "badtex.obj", "mtllib badtex.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl t\nf 1 2 3\n");
-    EXPECT_NE(message([&] { render::importModel((dir / "badtex.obj").string()); }).find("cannot decode"), std::string::npos);
-    EXPECT_NE(message([&] { render::importModel((dir / "badtex.obj").string(), -1.0); }).find("scale"), std::string::npos);
+    EXPECT_NE(errorOf([&] { render::importModel((dir / "badtex.obj").string()); }).find("cannot decode"), std::string::npos);
+    EXPECT_NE(errorOf([&] { render::importModel((dir / "badtex.obj").string(), -1.0); }).find("scale"), std::string::npos);
     writeText(dir / "s1.json", R"({"model": "tri.obj", "camera": 1})");
-    EXPECT_NE(message([&] { render::loadScene((dir / "s1.json").string()); }).find("unknown key 'camera'"), std::string::npos);
+    EXPECT_NE(errorOf([&] { render::loadScene((dir / "s1.json").string()); }).find("unknown key 'camera'"), std::string::npos);
     writeText(dir / "s2.json", R"({"scale": 1})");
-    EXPECT_NE(message([&] { render::loadScene((dir / "s2.json").string()); }).find("'model'"), std::string::npos);
+    EXPECT_NE(errorOf([&] { render::loadScene((dir / "s2.json").string()); }).find("'model'"), std::string::npos);
     writeText(dir / "tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
     writeText(dir / "s3.json", R"({"model": "tri.obj", "views": {"v": {"eye": [0, 0], "target": [0, 0, 0]}}})");
-    EXPECT_NE(message([&] { render::loadScene((dir / "s3.json").string()); }).find("'eye'"), std::string::npos);
+    EXPECT_NE(errorOf([&] { render::loadScene((dir / "s3.json").string()); }).find("'eye'"), std::string::npos);
     writeText(dir / "s4.json", R"({"model": "tri.obj", "lights": [{"type": "spot"}]})");
-    EXPECT_NE(message([&] { render::loadScene((dir / "s4.json").string()); }).find("spot"), std::string::npos);
+    EXPECT_NE(errorOf([&] { render::loadScene((dir / "s4.json").string()); }).find("spot"), std::string::npos);
     writeText(dir / "s5.json", "{not json");
-    EXPECT_NE(message([&] { render::loadScene((dir / "s5.json").string()); }).find("not valid JSON"), std::string::npos);
+    EXPECT_NE(errorOf([&] { render::loadScene((dir / "s5.json").string()); }).find("not valid JSON"), std::string::npos);
     // Wrong JSON types: the file and the field (a JSON pointer), never a raw library message;
     // unknown keys inside views and lights are errors as at the top level.
     const std::pair<const char*, const char*> typeErrors[] = {
@@ -240,30 +232,30 @@ TEST(RenderImport, BadInputsGiveClearErrors) {
     };
     // A glTF with no meshes: says what is missing (Assimp gives no text of its own).
     writeText(dir / "empty.gltf", R"({"asset": {"version": "2.0"}, "scenes": [{"nodes": []}], "scene": 0})");
-    const std::string empty = message([&] { render::importModel((dir / "empty.gltf").string()); });
+    const std::string empty = errorOf([&] { render::importModel((dir / "empty.gltf").string()); });
     EXPECT_NE(empty.find("empty.gltf"), std::string::npos) << empty;
     EXPECT_EQ(empty.find("()"), std::string::npos) << empty;
     // Files that crash Debian's Assimp 5.2.5 (found by fuzz_gltf): an error naming the file,
     // and this process lives on (the importer runs in a child process).
     for (const char* crasher : {"gltf-assimp-null-mime.gltf", "gltf-assimp-bvh-overread.gltf"}) {
         const fs::path file = fs::path(SSFX_SOURCE_DIR) / "fuzz" / "regressions" / crasher;
-        const std::string m = message([&] { render::importModel(file.string()); });
+        const std::string m = errorOf([&] { render::importModel(file.string()); });
         EXPECT_NE(m.find(std::string("model '") + file.string() + "'"), std::string::npos) << m;
         EXPECT_TRUE(m.find("stopped abnormally") != std::string::npos || m.find("cannot import") != std::string::npos) << m;
     }
     // The format is the extension's; none, or one that no importer claims, is refused.
     writeText(dir / "tri_noext", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
-    EXPECT_NE(message([&] { render::importModel((dir / "tri_noext").string()); }).find("no file extension"),
+    EXPECT_NE(errorOf([&] { render::importModel((dir / "tri_noext").string()); }).find("no file extension"),
               std::string::npos);
     writeText(dir / "tri.xyzw", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
-    EXPECT_NE(message([&] { render::importModel((dir / "tri.xyzw").string()); }).find("'.xyzw' is not a model format"),
+    EXPECT_NE(errorOf([&] { render::importModel((dir / "tri.xyzw").string()); }).find("'.xyzw' is not a model format"),
               std::string::npos);
     writeText(dir / "inf.obj", "v 0 0 0\nv 1e39 0 0\nv 0 1 0\nf 1 2 3\n");
-    EXPECT_NE(message([&] { render::importModel((dir / "inf.obj").string()); }).find("vertex 1 of mesh 0 has a non-finite"),
+    EXPECT_NE(errorOf([&] { render::importModel((dir / "inf.obj").string()); }).find("vertex 1 of mesh 0 has a non-finite"),
               std::string::npos);
     for (const auto& [text, field] : typeErrors) {
         writeText(dir / "s6.json", text);
-        const std::string m = message([&] { render::loadScene((dir / "s6.json").string()); });
+        const std::string m = errorOf([&] { render::loadScene((dir / "s6.json").string()); });
         EXPECT_NE(m.find("s6.json"), std::string::npos) << m;
         EXPECT_NE(m.find(field), std::string::npos) << text << " -> " << m;
         EXPECT_EQ(m.find("[json.exception"), std::string::npos) << m;
@@ -284,14 +276,6 @@ TEST(RenderImport, ModelFromMemory) {
     ASSERT_EQ(fromFile.vertices.size(), s.vertices.size());
     for (std::size_t i = 0; i < fromFile.vertices.size(); ++i) EXPECT_EQ(fromFile.vertices[i].position, s.vertices[i].position);
     EXPECT_EQ(fromFile.indices, s.indices);
-    auto message = [](auto&& f) {
-        try {
-            f();
-        } catch (const Error& e) {
-            return std::string(e.what());
-        }
-        return std::string("(no error)");
-    };
     // An external texture cannot be opened from memory: named, with the reason.
     const std::string textured = R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
       "nodes": [{"mesh": 0}],
@@ -305,19 +289,19 @@ TEST(RenderImport, ModelFromMemory) {
         {"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [0, 0, 0], "max": [1, 1, 0]},
         {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"},
         {"bufferView": 2, "componentType": 5126, "count": 3, "type": "VEC2"}]})";
-    const std::string ext = message([&] {
+    const std::string ext = errorOf([&] {
         render::importModelFromMemory(std::span(reinterpret_cast<const std::uint8_t*>(textured.data()), textured.size()),
                                       "gltf", "texmem");
     });
     EXPECT_NE(ext.find("model 'texmem'"), std::string::npos) << ext;
     EXPECT_NE(ext.find("far.png"), std::string::npos) << ext;
     EXPECT_NE(ext.find("embedded"), std::string::npos) << ext;
-    EXPECT_NE(message([&] { render::importModelFromMemory({}, "obj", "none"); }).find("no bytes"), std::string::npos);
-    EXPECT_NE(message([&] { render::importModelFromMemory(bytes, "../x", "bad"); }).find("file extension"),
+    EXPECT_NE(errorOf([&] { render::importModelFromMemory({}, "obj", "none"); }).find("no bytes"), std::string::npos);
+    EXPECT_NE(errorOf([&] { render::importModelFromMemory(bytes, "../x", "bad"); }).find("file extension"),
               std::string::npos);
-    EXPECT_NE(message([&] { render::importModelFromMemory(bytes, "obj", "neg", 0.0); }).find("scale"), std::string::npos);
+    EXPECT_NE(errorOf([&] { render::importModelFromMemory(bytes, "obj", "neg", 0.0); }).find("scale"), std::string::npos);
     const std::string junk = "\x01\x02 not a model";
-    EXPECT_NE(message([&] {
+    EXPECT_NE(errorOf([&] {
                   render::importModelFromMemory(std::span(reinterpret_cast<const std::uint8_t*>(junk.data()), junk.size()),
                                                 "gltf", "junk");
               }).find("model 'junk'"),

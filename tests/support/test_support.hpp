@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "ssfx/core/error.hpp"
 #include "ssfx/core/image.hpp"
 
 namespace ssfx {
@@ -33,5 +34,16 @@ std::optional<std::string> sharedDir(const std::string& sub = "");
 int maxAbsDiff(const ImageRgba8& a, const ImageRgba8& b);
 
 std::string outDir();  //!< a per-build folder for failure images
+
+//! The message of the ssfx::Error that `f()` throws, or "(no error)".
+template <class F>
+std::string errorOf(F&& f) {
+    try {
+        f();
+    } catch (const Error& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
 
 }  // namespace ssfx::test
