@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <cstring>
 
+#include "ssfx/core/error.hpp"
 #include "ssfx/io/png.hpp"
 #include "ssfx/registry.hpp"
 

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <string>
 
+#include "ssfx/core/error.hpp"
 #include "ssfx/io/camera.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

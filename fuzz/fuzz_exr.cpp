@@ -3,6 +3,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "ssfx/core/error.hpp"
 #include "ssfx/io/exr.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
