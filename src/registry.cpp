@@ -202,9 +202,7 @@ const MethodInfo* findMethod(std::string_view id) {
 
 const MethodInfo& methodById(std::string_view id) {
     if (const MethodInfo* m = findMethod(id)) return *m;
-    std::string known;
-    for (const MethodInfo& m : kMethods) known += fmt::format("{}{}", known.empty() ? "" : ", ", m.id);
-    throw Error(fmt::format("unknown method '{}' (methods: {})", id, known));
+    throw Error(fmt::format("unknown method '{}' (methods: {})", id, idList(methods())));
 }
 
 }  // namespace ssfx

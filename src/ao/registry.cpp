@@ -13,10 +13,6 @@ namespace ssfx::ao {
 
 namespace {
 
-void* data(AoParams& p) {
-    return std::visit([](auto& v) -> void* { return &v; }, p);
-}
-
 template <class P>
 const P& as(const AoParams& p, std::string_view id) {
     if (const P* v = std::get_if<P>(&p)) return *v;
@@ -86,15 +82,13 @@ std::span<const AoMethodInfo> aoMethods() { return kAoMethods; }
 const AoMethodInfo& aoMethodById(std::string_view id) {
     for (const AoMethodInfo& m : kAoMethods)
         if (m.id == id) return m;
-    std::string known;
-    for (const AoMethodInfo& m : kAoMethods) known += fmt::format("{}{}", known.empty() ? "" : ", ", m.id);
-    throw Error(fmt::format("unknown AO method '{}' ({})", id, known));
+    throw Error(fmt::format("unknown AO method '{}' ({})", id, idList(aoMethods())));
 }
 
 void setParam(const AoMethodInfo& method, AoParams& params, std::string_view name, double value) {
     if (method.defaults("").index() != params.index())
         throw Error(fmt::format("{}: the parameters are another method's", method.id));
-    ssfx::setParam(method.params, data(params), method.id, name, value);
+    ssfx::setParam(method.params, paramsData(params), method.id, name, value);
 }
 
 int guardBandOf(const AoParams& params) {

@@ -58,13 +58,13 @@ std::span<const DeferredMethodInfo> deferredMethods() { return kDeferredMethods;
 const DeferredMethodInfo& deferredMethodById(std::string_view id) {
     for (const DeferredMethodInfo& m : kDeferredMethods)
         if (m.id == id) return m;
-    throw Error(fmt::format("unknown deferred method '{}' (adaptive, brute-force)", id));
+    throw Error(fmt::format("unknown deferred method '{}' ({})", id, idList(deferredMethods())));
 }
 
 void setParam(const DeferredMethodInfo& method, DeferredParams& params, std::string_view name, double value) {
     if (method.defaults().index() != params.index())
         throw Error(fmt::format("{}: the parameters are another method's", method.id));
-    ssfx::setParam(method.params, std::visit([](auto& v) -> void* { return &v; }, params), method.id, name, value);
+    ssfx::setParam(method.params, paramsData(params), method.id, name, value);
 }
 
 }  // namespace ssfx::deferred

@@ -6,7 +6,9 @@
 
 #include <array>
 #include <span>
+#include <string>
 #include <string_view>
+#include <variant>
 
 #include "ssfx/core/params.hpp"
 
@@ -25,6 +27,23 @@ struct MethodDesc {
     std::span<const std::string_view> presets;  //!< named configurations, the default first; may be empty
     std::span<const std::string_view> backends = kCpuBackend;
 };
+
+//! "a, b, c": the ids of a registry, for the unknown-id messages.
+template <class Entry>
+std::string idList(std::span<const Entry> entries) {
+    std::string s;
+    for (const Entry& e : entries) {
+        if (!s.empty()) s += ", ";
+        s += e.id;
+    }
+    return s;
+}
+
+//! The struct a parameters variant holds, as the table functions take it (ParamInfo::get/set).
+template <class... P>
+void* paramsData(std::variant<P...>& params) {
+    return std::visit([](auto& p) -> void* { return &p; }, params);
+}
 
 //! The family names, in the order `ssfx methods` lists them.
 inline constexpr std::array<std::string_view, 3> kFamilies{"aa", "ao", "deferred"};
