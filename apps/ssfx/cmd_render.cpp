@@ -35,8 +35,11 @@ DepthFormat parseDepthFormat(const std::string& f) {
 
 void run(const RenderOptions& o) {
     if (o.listDevices) {
-        for (const auto& d : render::listDevices())
-            fmt::print("{}: {} ({}, Vulkan {}){}\n", d.index, d.name, d.type, d.api, d.usable ? "" : " [not usable: needs 1.3]");
+        for (const auto& d : vkx::listDevices())
+            fmt::print("{}: {} ({}, Vulkan {}): {}\n", d.index, d.name, d.type, d.api,
+                       d.graphics  ? "renders and computes"
+                       : d.compute ? "computes only (no graphics queue or dynamic rendering)"
+                                   : "unsuitable (needs Vulkan 1.3)");
         return;
     }
     if (o.scene.empty()) throw Error("no scene given (a built-in name: atrium, cornell; a scene .json; or a model file)");

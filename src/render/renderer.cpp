@@ -12,13 +12,15 @@
 
 #include "ssfx/core/error.hpp"
 #include "ssfx/io/png.hpp"
-#include "vk_context.hpp"
+#include "ssfx/vk/compute.hpp"
+#include "ssfx/vk/context.hpp"
+#include "ssfx/vk/timer.hpp"
 
 namespace ssfx::render {
 
 namespace {
 
-// SPIR-V compiled from src/render/shaders/ by glslc at build time (-mfmt=num).
+// SPIR-V compiled from src/render/shaders/ by ssfx_add_shaders (CMake) at build time.
 const std::uint32_t kSceneVert[] = {
 #include "shaders/scene.vert.inc"
 };
@@ -86,23 +88,31 @@ struct ColorTarget {
     std::size_t bytesPerTexel;
 };
 
+// The scene shaders' descriptor set (common.glsl): frame, materials, lights, textures.
+const std::array<vkx::BindingSpec, 4> kBindings = {
+    vkx::BindingSpec{vk::DescriptorType::eUniformBuffer, vk::ShaderStageFlagBits::eVertex | vk::ShaderStageFlagBits::eFragment},
+    vkx::BindingSpec{vk::DescriptorType::eStorageBuffer, vk::ShaderStageFlagBits::eFragment},
+    vkx::BindingSpec{vk::DescriptorType::eStorageBuffer, vk::ShaderStageFlagBits::eFragment},
+    vkx::BindingSpec{vk::DescriptorType::eCombinedImageSampler, vk::ShaderStageFlagBits::eFragment}};
+
+std::shared_ptr<vkx::Context> graphicsContext(std::shared_ptr<vkx::Context> context) {
+    if (!context) throw Error("renderer: no Vulkan context given");
+    if (!context->graphics)
+        throw Error("renderer: the shared Vulkan context has no graphics queue (create it with ContextOptions::graphics)");
+    return context;
+}
+
 }  // namespace
 
 struct Renderer::Impl {
-    explicit Impl(const RendererOptions& o) : ctx(o) {
-        using B = vk::DescriptorSetLayoutBinding;
-        const auto all = vk::ShaderStageFlagBits::eVertex | vk::ShaderStageFlagBits::eFragment;
-        const std::array<B, 4> bindings = {B(0, vk::DescriptorType::eUniformBuffer, 1, all),
-                                           B(1, vk::DescriptorType::eStorageBuffer, 1, vk::ShaderStageFlagBits::eFragment),
-                                           B(2, vk::DescriptorType::eStorageBuffer, 1, vk::ShaderStageFlagBits::eFragment),
-                                           B(3, vk::DescriptorType::eCombinedImageSampler, 1, vk::ShaderStageFlagBits::eFragment)};
-        setLayout = vk::raii::DescriptorSetLayout(ctx.device, vk::DescriptorSetLayoutCreateInfo({}, bindings));
+    explicit Impl(std::shared_ptr<vkx::Context> context) : shared(graphicsContext(std::move(context))), ctx(*shared) {
+        setLayout = vkx::makeSetLayout(ctx, kBindings);
         const vk::PushConstantRange push(vk::ShaderStageFlagBits::eVertex, 0, sizeof(glm::mat4));
         const vk::DescriptorSetLayout layouts[] = {*setLayout};
         pipelineLayout = vk::raii::PipelineLayout(ctx.device, vk::PipelineLayoutCreateInfo({}, layouts, push));
-        vert = vk::raii::ShaderModule(ctx.device, vk::ShaderModuleCreateInfo({}, sizeof(kSceneVert), kSceneVert));
-        gbufferFrag = vk::raii::ShaderModule(ctx.device, vk::ShaderModuleCreateInfo({}, sizeof(kGBufferFrag), kGBufferFrag));
-        forwardFrag = vk::raii::ShaderModule(ctx.device, vk::ShaderModuleCreateInfo({}, sizeof(kForwardFrag), kForwardFrag));
+        vert = vkx::makeShaderModule(ctx, kSceneVert);
+        gbufferFrag = vkx::makeShaderModule(ctx, kGBufferFrag);
+        forwardFrag = vkx::makeShaderModule(ctx, kForwardFrag);
         sampler = vk::raii::Sampler(
             ctx.device, vk::SamplerCreateInfo({}, vk::Filter::eLinear, vk::Filter::eLinear, vk::SamplerMipmapMode::eLinear,
                                               vk::SamplerAddressMode::eRepeat, vk::SamplerAddressMode::eRepeat,
@@ -203,10 +213,7 @@ struct Renderer::Impl {
                 const std::vector<ColorTarget>& targets, float derivativeScale) {
         scene.validate();
         const auto w = std::uint32_t(cam.bufferWidth()), h = std::uint32_t(cam.bufferHeight());
-        const auto limits = ctx.physical.getProperties().limits;
-        if (w > limits.maxImageDimension2D || h > limits.maxImageDimension2D)
-            throw Error(fmt::format("render size {}x{} exceeds the device's limit of {} pixels per side", w, h,
-                                    limits.maxImageDimension2D));
+        ctx.requireImageSize(w, h, "render size");
         ctx.requireAttachmentFormat(depthFormat, true, "depth");
         for (const auto& t : targets) ctx.requireAttachmentFormat(t.format, false, "a colour attachment");
 
@@ -231,21 +238,11 @@ struct Renderer::Impl {
         vkx::Buffer frameBuffer = ctx.uploadBuffer(&frame, sizeof(frame), vk::BufferUsageFlagBits::eUniformBuffer);
         vkx::Image textures = uploadTextures(scene.textures);
 
-        const vk::DescriptorPoolSize poolSizes[] = {{vk::DescriptorType::eUniformBuffer, 1},
-                                                    {vk::DescriptorType::eStorageBuffer, 2},
-                                                    {vk::DescriptorType::eCombinedImageSampler, 1}};
-        vk::raii::DescriptorPool pool(ctx.device, vk::DescriptorPoolCreateInfo(vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, 1, poolSizes));
-        const vk::DescriptorSetLayout layouts[] = {*setLayout};
-        vk::raii::DescriptorSets sets(ctx.device, vk::DescriptorSetAllocateInfo(*pool, layouts));
-        const vk::DescriptorBufferInfo frameInfo(*frameBuffer.buffer, 0, VK_WHOLE_SIZE),
-            materialInfo(*materialBuffer.buffer, 0, VK_WHOLE_SIZE), lightInfo(*lightBuffer.buffer, 0, VK_WHOLE_SIZE);
-        const vk::DescriptorImageInfo textureInfo(*sampler, *textures.view, vk::ImageLayout::eShaderReadOnlyOptimal);
-        const std::array<vk::WriteDescriptorSet, 4> writes = {
-            vk::WriteDescriptorSet(*sets[0], 0, 0, vk::DescriptorType::eUniformBuffer, {}, frameInfo),
-            vk::WriteDescriptorSet(*sets[0], 1, 0, vk::DescriptorType::eStorageBuffer, {}, materialInfo),
-            vk::WriteDescriptorSet(*sets[0], 2, 0, vk::DescriptorType::eStorageBuffer, {}, lightInfo),
-            vk::WriteDescriptorSet(*sets[0], 3, 0, vk::DescriptorType::eCombinedImageSampler, textureInfo)};
-        ctx.device.updateDescriptorSets(writes, {});
+        vkx::DescriptorSets sets(ctx, setLayout, kBindings);
+        sets.bind(0, 0, frameBuffer);
+        sets.bind(0, 1, materialBuffer);
+        sets.bind(0, 2, lightBuffer);
+        sets.bind(0, 3, *textures.view, vk::ImageLayout::eShaderReadOnlyOptimal, *sampler);
 
         // Attachments and their read-back buffers.
         const auto usage = vk::ImageUsageFlagBits::eTransferSrc;
@@ -261,7 +258,7 @@ struct Renderer::Impl {
         const bool readDepth = pass != Pass::Forward;
         if (readDepth)
             result.depth = ctx.createBuffer(vk::DeviceSize(w) * h * depthBytes(depthFormat), vk::BufferUsageFlagBits::eTransferDst, true);
-        vk::raii::QueryPool queries(ctx.device, vk::QueryPoolCreateInfo({}, vk::QueryType::eTimestamp, 2));
+        const vkx::GpuTimer timer(ctx);
 
         const vk::raii::Pipeline& pipe = pipeline(pass, depthFormat);
         const glm::mat4 viewProjection = cam.viewProjectionF();
@@ -274,8 +271,8 @@ struct Renderer::Impl {
             vkx::transition(cmd, depthImage, vk::ImageLayout::eUndefined, vk::ImageLayout::eDepthAttachmentOptimal, S::eTopOfPipe,
                             {}, S::eEarlyFragmentTests | S::eLateFragmentTests,
                             A::eDepthStencilAttachmentRead | A::eDepthStencilAttachmentWrite);
-            cmd.resetQueryPool(*queries, 0, 2);
-            cmd.writeTimestamp(S::eTopOfPipe, *queries, 0);
+            timer.reset(cmd);
+            timer.begin(cmd);
             std::vector<vk::RenderingAttachmentInfo> colorInfos;
             for (std::size_t i = 0; i < targets.size(); ++i)
                 colorInfos.emplace_back(*colorImages[i].view, vk::ImageLayout::eColorAttachmentOptimal, vk::ResolveModeFlagBits::eNone,
@@ -291,11 +288,11 @@ struct Renderer::Impl {
             cmd.setScissor(0, vk::Rect2D({0, 0}, {w, h}));
             cmd.bindVertexBuffers(0, {*vertices.buffer}, {vk::DeviceSize(0)});
             cmd.bindIndexBuffer(*indices.buffer, 0, vk::IndexType::eUint32);
-            cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipelineLayout, 0, {*sets[0]}, {});
+            cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipelineLayout, 0, sets[0], {});
             cmd.pushConstants<glm::mat4>(*pipelineLayout, vk::ShaderStageFlagBits::eVertex, 0, viewProjection);
             cmd.drawIndexed(std::uint32_t(scene.indices.size()), 1, 0, 0, 0);
             cmd.endRendering();
-            cmd.writeTimestamp(S::eBottomOfPipe, *queries, 1);
+            timer.end(cmd);
             for (std::size_t i = 0; i < targets.size(); ++i) {
                 vkx::transition(cmd, colorImages[i], vk::ImageLayout::eColorAttachmentOptimal, vk::ImageLayout::eTransferSrcOptimal,
                                 S::eColorAttachmentOutput, A::eColorAttachmentWrite, S::eTransfer, A::eTransferRead);
@@ -313,15 +310,12 @@ struct Renderer::Impl {
             const vk::MemoryBarrier toHost(A::eTransferWrite, A::eHostRead);
             cmd.pipelineBarrier(S::eTransfer, S::eHost, {}, toHost, {}, {});
         });
-        if (ctx.timestampPeriodNs > 0) {
-            const auto [status, ticks] = queries.getResults<std::uint64_t>(0, 2, 2 * sizeof(std::uint64_t), sizeof(std::uint64_t),
-                                                                         vk::QueryResultFlagBits::e64 | vk::QueryResultFlagBits::eWait);
-            if (status == vk::Result::eSuccess) result.gpuMs = double(ticks[1] - ticks[0]) * ctx.timestampPeriodNs * 1e-6;
-        }
+        result.gpuMs = timer.milliseconds()[0];
         return result;
     }
 
-    vkx::Context ctx;
+    std::shared_ptr<vkx::Context> shared;
+    vkx::Context& ctx;
     vk::raii::DescriptorSetLayout setLayout{nullptr};
     vk::raii::PipelineLayout pipelineLayout{nullptr};
     vk::raii::ShaderModule vert{nullptr}, gbufferFrag{nullptr}, forwardFrag{nullptr};
@@ -329,38 +323,21 @@ struct Renderer::Impl {
     std::map<std::pair<int, int>, vk::raii::Pipeline> pipelines;
 };
 
-namespace {
-
-// Vulkan-Hpp reports API failures as exceptions of its own; callers see ssfx::Error.
-template <class F>
-auto guarded(const char* what, F&& f) {
-    try {
-        return f();
-    } catch (const vk::SystemError& e) {
-        throw Error(fmt::format("Vulkan: {} failed: {}", what, e.what()));
-    }
-}
-
-}  // namespace
-
-std::vector<DeviceInfo> listDevices() {
-    return guarded("listing devices", [] {
-        const vk::raii::Context context = vkx::makeContext();
-        return vkx::enumerateDevices(vkx::makeInstance(context, false));
-    });
-}
+using vkx::guarded;
 
 Renderer::Renderer(const RendererOptions& options)
-    : impl_(guarded("creating the device", [&] { return std::make_unique<Impl>(options); })) {}
+    : Renderer(vkx::Context::create(vkx::ContextOptions{options.device, options.validation, true})) {}
+
+Renderer::Renderer(std::shared_ptr<vkx::Context> context)
+    : impl_(guarded("creating the renderer", [&] { return std::make_unique<Impl>(std::move(context)); })) {}
 
 Renderer::~Renderer() = default;
 
-const DeviceInfo& Renderer::device() const { return impl_->ctx.info; }
+const vkx::DeviceInfo& Renderer::device() const { return impl_->ctx.info; }
 
-std::vector<std::string> Renderer::validationMessages() const {
-    std::lock_guard lock(impl_->ctx.mutex);
-    return impl_->ctx.messages;
-}
+const std::shared_ptr<vkx::Context>& Renderer::context() const { return impl_->shared; }
+
+std::vector<std::string> Renderer::validationMessages() const { return impl_->ctx.validationMessages(); }
 
 DepthRender Renderer::renderDepth(const Scene& scene, const View& view, int width, int height, DepthFormat format,
                                   int guard) {

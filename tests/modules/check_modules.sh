@@ -18,9 +18,10 @@ declare -A allowed=(
   [aa]="core aa"
   [ao]="core io ao"
   [scene]="core io ao scene"
-  [render]="core io ao scene render"
+  [vk]="core vk"
+  [render]="core io ao scene vk render"
   [deferred]="core io ao scene deferred"
-  [eval]="core io aa ao scene render deferred eval"
+  [eval]="core io aa ao scene vk render deferred eval"
 )
 # module -> third-party headers it must not include (a regex on the include)
 declare -A forbidden=(
@@ -29,6 +30,7 @@ declare -A forbidden=(
   [aa]="cairo|vulkan|assimp|embree|glm/|stb/"
   [ao]="cairo|vulkan|assimp|embree|glm/|stb/"
   [scene]="cairo|vulkan"
+  [vk]="cairo|assimp|embree|glm/|stb/"
   [render]="cairo|assimp|embree"
   [deferred]="cairo|vulkan|assimp|embree"
   [eval]="vulkan/"
@@ -67,6 +69,7 @@ declare -A nolink=(
   [ssfx]="cairo|vulkan|assimp|embree|ssfx_scene|ssfx_render|ssfx_eval|ssfx_deferred"
   [ssfx_scene]="vulkan|ssfx_render|ssfx_eval|cairo"
   [ssfx_deferred]="vulkan|ssfx_render|ssfx_eval|cairo"
+  [ssfx_vk]="cairo|assimp|embree|ssfx_scene|ssfx_render|ssfx_eval|ssfx_deferred"
   [ssfx_render]="cairo|ssfx_eval|ssfx_deferred"
 )
 while IFS= read -r line; do

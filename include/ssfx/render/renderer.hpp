@@ -14,28 +14,21 @@
 #include "ssfx/scene/camera.hpp"
 #include "ssfx/scene/gbuffer.hpp"
 #include "ssfx/scene/scene.hpp"
+#include "ssfx/vk/device.hpp"
+
+namespace ssfx::vkx {
+class Context;
+}
 
 namespace ssfx::render {
 
-struct DeviceInfo {
-    int index = 0;      //!< position in the instance's enumeration
-    std::string name;   //!< as the driver reports it, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"
-    std::string type;   //!< discrete, integrated, virtual, cpu, other
-    std::string api;    //!< supported Vulkan version, e.g. "1.3.230"
-    bool usable = false;  //!< supports Vulkan 1.3 with dynamic rendering
-    int maxImageDimension2D = 0;  //!< the largest attachment side it renders (VkPhysicalDeviceLimits)
-};
-
 struct RendererOptions {
     //! A device index or a (case-insensitive) part of its name; empty = the first discrete
-    //! GPU, else integrated, virtual, then CPU (lavapipe).
+    //! GPU, else integrated, virtual, then CPU (lavapipe). See vkx::ContextOptions.
     std::string device;
-    //! Enable VK_LAYER_KHRONOS_validation and collect its messages (also: SSFX_VK_VALIDATION=1).
+    //! Validation layer with synchronization validation (also: SSFX_VK_VALIDATION=1).
     bool validation = false;
 };
-
-//! Every Vulkan device of this machine. Throws ssfx::Error when there is no Vulkan loader.
-std::vector<DeviceInfo> listDevices();
 
 struct DepthRender {
     ImageF depth;          //!< hardware depth in [0, 1] as stored by the format, guard band included
@@ -50,14 +43,19 @@ struct ColorRender {
 
 class Renderer {
 public:
-    //! Creates the instance and device. Throws ssfx::Error when there is no Vulkan driver,
-    //! no usable device, or the requested device or validation layer does not exist.
+    //! Creates its own Vulkan context (instance, device, a graphics queue). Throws ssfx::Error
+    //! when there is no Vulkan driver, no usable device, or the requested device or
+    //! validation layer does not exist.
     explicit Renderer(const RendererOptions& options = {});
+    //! Renders on a shared context (one device for the renderer and the GPU effects); it must
+    //! have been created with ContextOptions::graphics.
+    explicit Renderer(std::shared_ptr<vkx::Context> context);
     ~Renderer();
     Renderer(const Renderer&) = delete;
     Renderer& operator=(const Renderer&) = delete;
 
-    const DeviceInfo& device() const;
+    const vkx::DeviceInfo& device() const;
+    const std::shared_ptr<vkx::Context>& context() const;
     //! Validation messages (warnings and errors) since creation; empty when validation is off.
     std::vector<std::string> validationMessages() const;
 

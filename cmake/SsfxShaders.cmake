@@ -1,0 +1,29 @@
+# ssfx_add_shaders(TARGET <target> SOURCE_DIR <dir> SHADERS <file>...)
+#
+# Compiles each GLSL file <dir>/<file> to SPIR-V at build time (glslc, Vulkan 1.3, -O,
+# warnings as errors) as comma-separated words in <binary dir>/generated/<target>/shaders/
+# <file>.inc, which the target's sources include as the body of a `const std::uint32_t[]`
+# (see ssfx/vk/compute.hpp: makeShaderModule). glslc writes a depfile, so a change to an
+# #include'd file rebuilds the shaders that include it.
+function(ssfx_add_shaders)
+  cmake_parse_arguments(ARG "" "TARGET;SOURCE_DIR" "SHADERS" ${ARGN})
+  if(NOT ARG_TARGET OR NOT ARG_SOURCE_DIR OR NOT ARG_SHADERS)
+    message(FATAL_ERROR "ssfx_add_shaders: TARGET, SOURCE_DIR and SHADERS are required")
+  endif()
+  set(out ${CMAKE_CURRENT_BINARY_DIR}/generated/${ARG_TARGET})
+  set(incs)
+  foreach(shader ${ARG_SHADERS})
+    set(inc ${out}/shaders/${shader}.inc)
+    add_custom_command(OUTPUT ${inc}
+      COMMAND ${CMAKE_COMMAND} -E make_directory ${out}/shaders
+      COMMAND Vulkan::glslc --target-env=vulkan1.3 -O -Werror -mfmt=num -I ${ARG_SOURCE_DIR}
+              -MD -MF ${inc}.d -o ${inc} ${ARG_SOURCE_DIR}/${shader}
+      DEPENDS ${ARG_SOURCE_DIR}/${shader}
+      DEPFILE ${inc}.d
+      COMMENT "glslc ${shader}"
+      VERBATIM)
+    list(APPEND incs ${inc})
+  endforeach()
+  target_sources(${ARG_TARGET} PRIVATE ${incs})
+  target_include_directories(${ARG_TARGET} PRIVATE ${out})
+endfunction()
