@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <map>
 
-#include "commands.hpp"
+#include "apps/ssfx/commands.hpp"
 #include "ssfx/eval/ao_experiments.hpp"
 #include "ssfx/eval/kernels.hpp"
 #include "ssfx/eval/quality.hpp"
@@ -346,7 +346,7 @@ void addDeferred(CLI::App& eval) {
         std::tie(o->width, o->height) = parseSize(*size, "--size", 8192);
         o->exec = Exec{*threads};
         o->progress = progressLine;
-        fmt::print("{}", eval::runDeferredExperiment(*o));
+        fmt::print("{}", eval::markdown(eval::runDeferredExperiment(*o)));
     });
 }
 #endif
@@ -371,7 +371,7 @@ void addAo(CLI::App& eval) {
         if (!(scenes->size() == 1 && scenes->front() == "none")) o->renderedScenes = renderedAoScenes(*scenes);
         o->exec = Exec{*threads};
         o->progress = progressLine;
-        fmt::print("{}", eval::runAoExperiments(*o));
+        fmt::print("{}", eval::markdown(eval::runAoExperiments(*o)));
     });
 }
 

@@ -33,7 +33,7 @@ ImageF toFloat(const Image<std::uint8_t>& k) {
 
 }  // namespace
 
-std::string runDeferredExperiment(const DeferredExperimentOptions& o) {
+Section runDeferredExperiment(const DeferredExperimentOptions& o) {
     auto say = [&](const std::string& s) {
         if (o.progress) o.progress(s);
     };
@@ -127,33 +127,44 @@ std::string runDeferredExperiment(const DeferredExperimentOptions& o) {
         io::writePng(stem("k_shading"), heatMap(ours.kShading.view(), 0.0f, n).view());
     }
 
-    std::string md = fmt::format(
-        "### Adaptive supersampling (paper Table 1) on {} / {}, {}x{}\n\n"
+    Section section;
+    section.title = "Adaptive supersampling for deferred shading (the paper's Table 1)";
+    // The note is laid out in the report, whose root its links are relative to.
+    section.note = "The method ([doc](methods/adaptive.html)) against brute-force supersampling on the atrium's G-buffer "
+                   "from the Vulkan renderer. Images at 4x4: the reference, ours, the per-pixel sample count (blue 1 .. "
+                   "red 16), the absolute error (0 .. 0.05) and each metric's k (paper Figure 8). Data: "
+                   "[deferred/data/deferred.json](deferred/data/deferred.json).";
+    Block b;
+    b.heading = fmt::format("Adaptive supersampling (paper Table 1) on {} / {}, {}x{}", o.scene, o.view, w, h);
+    b.text = fmt::format(
         "Device for the G-buffer: {} (GPU time of the draw). Shading on the CPU ({} threads), median of {} run(s); "
         "stalled: {} extra dependent operations per shaded sample. MSE and PSNR of ours against the reference at the "
         "same m (RGB in [0, 1]). \"8x8 tiles by k\": the same method shading each 8x8 tile's pixels grouped by "
-        "sample count (the paper's future work; identical output). Constants: cDepth {}, cNormal {}, cShading {}, thresholds {} / {}.\n\n"
-        "| supersampling | method | G-buffer ms | shading ms | total ms | stalled shading ms | MSE (x1e-5) | PSNR dB | samples % |\n"
-        "|---|---|---:|---:|---:|---:|---:|---:|---:|\n",
-        o.scene, o.view, w, h, renderer.device().name, o.exec.threads == 0 ? std::string("all") : std::to_string(o.exec.threads),
+        "sample count (the paper's future work; identical output). Constants: cDepth {}, cNormal {}, cShading {}, thresholds {} / {}.",
+        renderer.device().name, o.exec.threads == 0 ? std::string("all") : std::to_string(o.exec.threads),
         reps, o.stall, o.params.cDepth, o.params.cNormal, o.params.cShading, o.params.tMin, o.params.tEdge);
+    b.table.header = {"supersampling", "method", "G-buffer ms", "shading ms", "total ms", "stalled shading ms",
+                      "MSE (x1e-5)", "PSNR dB", "samples %"};
     for (const auto& r : rows) {
-        md += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", r.ss, r.method, cell(r.gbufferMs, 1),
-                          cell(r.shadeMs, 1), cell(r.gbufferMs + r.shadeMs, 1), cell(r.stalledMs, 1), cell(r.mse * 1e5, 2),
-                          cell(r.psnr, 2), cell(r.samples, 2));
+        b.table.addRow({r.ss, r.method, cell(r.gbufferMs, 1), cell(r.shadeMs, 1), cell(r.gbufferMs + r.shadeMs, 1),
+                        cell(r.stalledMs, 1), cell(r.mse * 1e5, 2), cell(r.psnr, 2), cell(r.samples, 2)});
         j["rows"].push_back({{"supersampling", r.ss}, {"method", r.method}, {"gbuffer_ms", r.gbufferMs},
                              {"shading_ms", r.shadeMs}, {"stalled_ms", r.stalledMs},
                              {"mse", std::isfinite(r.mse) ? nlohmann::ordered_json(r.mse) : nlohmann::ordered_json()},
                              {"psnr", std::isfinite(r.psnr) ? nlohmann::ordered_json(r.psnr) : nlohmann::ordered_json()},
                              {"samples_percent", std::isfinite(r.samples) ? nlohmann::ordered_json(r.samples) : nlohmann::ordered_json()}});
     }
-    md += fmt::format("\nAt 4x4: ours is {:.2f}x faster than the reference in shading, {:.2f}x with the stall (same run).\n",
-                      speedupPlain, speedupStalled);
+    b.after = fmt::format("At 4x4: ours is {:.2f}x faster than the reference in shading, {:.2f}x with the stall (same run).",
+                          speedupPlain, speedupStalled);
+    for (const char* name : {"reference", "ours", "samples", "error", "k_depth", "k_normal", "k_shading"})
+        b.figures.push_back({fmt::format("images/deferred_m4_{}.png", name), fmt::format("4x4: {}", name),
+                             Figure::Kind::Image, 0, 0});
+    section.blocks.push_back(std::move(b));
     j["speedup_4x4"] = {{"plain", speedupPlain}, {"stalled", speedupStalled}};
     const std::string text = j.dump(2) + "\n";
     io::writeTextAtomic((out / "data" / "deferred.json").string(), text);
-    io::writeTextAtomic((out / "data" / "deferred.md").string(), md);
-    return md;
+    io::writeTextAtomic((out / "data" / "deferred.md").string(), markdown(section));
+    return section;
 }
 
 }  // namespace ssfx::eval

@@ -7,7 +7,7 @@
 
 #include "ssfx/ao/depth.hpp"
 #include "ssfx/eval/ao_experiments.hpp"
-#include "support/test_support.hpp"
+#include "tests/support/test_support.hpp"
 
 using namespace ssfx;
 
@@ -44,7 +44,8 @@ TEST(AoExperiments, QuickRunWritesItsFiles) {
     eval::AoExperimentOptions o;
     o.outDir = dir;
     o.quick = true;
-    const std::string md = eval::runAoExperiments(o);
+    const eval::Section section = eval::runAoExperiments(o);
+    const std::string md = eval::markdown(section);
     for (const char* f : {"data/ao.json", "data/ao.md", "plots/ao_z_precision.png", "plots/ao_radius_scaling.png",
                           "images/ao_room_raytraced.png", "images/ao_room_sao_rotated_grid.png",
                           "images/ao_corner_sao_min_diff.png"})
@@ -56,4 +57,20 @@ TEST(AoExperiments, QuickRunWritesItsFiles) {
                             "\"pass_times\""})
         EXPECT_NE(ss.str().find(key), std::string::npos) << key;
     EXPECT_NE(md.find("Normal precision"), std::string::npos);
+    // data/ao.md is the section's Markdown; every figure the section shows exists.
+    std::ifstream mdFile(dir + "/data/ao.md");
+    std::stringstream mdText;
+    mdText << mdFile.rdbuf();
+    EXPECT_EQ(mdText.str(), md);
+    ASSERT_EQ(section.blocks.size(), 6u);
+    std::size_t figures = 0;
+    for (const auto& b : section.blocks) {
+        EXPECT_FALSE(b.table.empty()) << b.heading;
+        for (const auto& row : b.table.rows) EXPECT_EQ(row.size(), b.table.header.size()) << b.heading;
+        for (const auto& f : b.figures) {
+            EXPECT_TRUE(std::filesystem::exists(dir + "/" + f.path)) << f.path;
+            ++figures;
+        }
+    }
+    EXPECT_GE(figures, 10u);
 }

@@ -22,6 +22,7 @@
 #include "ssfx/ao/raytraced.hpp"
 #include "ssfx/core/image.hpp"
 #include "ssfx/core/parallel.hpp"
+#include "ssfx/eval/section.hpp"
 
 namespace ssfx::eval {
 
@@ -45,8 +46,9 @@ struct AoExperimentOptions {
 };
 
 //! Runs every experiment, writes the images, plots and data/ao.json, data/ao.md, and
-//! returns the Markdown (the same as data/ao.md).
-std::string runAoExperiments(const AoExperimentOptions& options);
+//! returns the section (tables, figures; paths relative to outDir). data/ao.md is
+//! markdown() of it.
+Section runAoExperiments(const AoExperimentOptions& options);
 
 //! Figure 3 alone: the largest |z error| (mm) at each distance, per series
 //! ("D16 finite", "D16 infinite", ...), near plane 0.1 m, finite far plane 1000 m.

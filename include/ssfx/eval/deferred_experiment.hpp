@@ -11,6 +11,7 @@
 #include <string>
 
 #include "ssfx/core/parallel.hpp"
+#include "ssfx/eval/section.hpp"
 #include "ssfx/deferred/adaptive.hpp"
 
 namespace ssfx::eval {
@@ -28,7 +29,8 @@ struct DeferredExperimentOptions {
     std::function<void(const std::string&)> progress;
 };
 
-//! Runs the experiment, writes its outputs and returns the Markdown table.
-std::string runDeferredExperiment(const DeferredExperimentOptions& options);
+//! Runs the experiment, writes its outputs and returns its section (paths relative to
+//! outDir); data/deferred.md is markdown() of it.
+Section runDeferredExperiment(const DeferredExperimentOptions& options);
 
 }  // namespace ssfx::eval

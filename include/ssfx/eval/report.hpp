@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "ssfx/core/parallel.hpp"
+#include "ssfx/eval/section.hpp"
 
 namespace ssfx::eval {
 
@@ -36,9 +37,9 @@ struct ReportOptions {
     //! Rendered scenes for the AO accuracy table (optional; see ao_experiments.hpp).
     AoSceneSource renderedScenes;
     //! Optional: runs the adaptive supersampling experiment into the given folder and returns
-    //! its Markdown (it needs the renderer; see ssfx/eval/deferred_experiment.hpp). Its images
-    //! are expected as images/deferred_m4_*.png there.
-    std::function<std::string(const std::string& dir)> deferredExperiment;
+    //! its section, paths relative to that folder (it needs the renderer; see
+    //! ssfx/eval/deferred_experiment.hpp).
+    std::function<Section(const std::string& dir)> deferredExperiment;
     //! Optional: writes more render sets (NAME.png, NAMEx2/x4/x8.png; e.g. 3-D scenes from the
     //! Vulkan renderer) into the given folder before the quality table is computed, and
     //! returns their names with a one-line description each.
