@@ -1,0 +1,54 @@
+// The ray-traced ground truth (src/ao/raytraced.cpp) against a quadrature of the obscurance integral.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "ssfx/ao/depth.hpp"
+#include "ssfx/ao/raytraced.hpp"
+#include "ssfx/eval/ao_scenes.hpp"
+
+using namespace ssfx;
+using namespace ssfx::ao;
+
+TEST(Raytraced, MatchesAQuadratureOfTheObscuranceIntegral) {
+    // Floor points in front of the corner's wall: the wall is the only occluder. For a floor
+    // point at distance delta from the wall, rays with w.z < 0 hit it at d = delta / -w.z;
+    // A = 1 - (1/pi) * integral rho(d) cos(theta) dw, integrated here on a fine midpoint grid
+    // in (theta, phi) about the floor normal, independently of raytraced().
+    Camera cam;
+    const int w = 32, h = 24;
+    const auto scene = eval::cornerScene();
+    const auto geo = eval::castGeometry(scene, cam, w, h);
+    RaytracedParams p;
+    p.raysPerPixel = 4096;
+    const ImageF a = raytraced(scene, cam, w, h, p);
+    const Projection proj = projection(cam, w, h);
+    int checked = 0;
+    for (int y = h / 2; y < h; ++y) {
+        const Vec3d dir = primaryRay(proj, 16.5f, float(y) + 0.5f);
+        const double t = -1.0 / dir.y;  // the floor y = -1
+        if (!(dir.y < 0) || t * -dir.z > 4.99) continue;  // only floor pixels
+        const double delta = 5.0 - t * -dir.z;           // distance to the wall z = -5
+        const int nt = 400, np = 800;
+        double occ = 0;
+        for (int i = 0; i < nt; ++i)
+            for (int j = 0; j < np; ++j) {
+                const double th = (i + 0.5) / nt * M_PI / 2, ph = (j + 0.5) / np * 2 * M_PI;
+                const double wz = std::sin(th) * std::sin(ph);
+                if (wz >= 0) continue;
+                const double d = delta / -wz;
+                if (d >= 1.0) continue;
+                const double q = 1 - d * d;
+                occ += q * q * q * std::cos(th) * std::sin(th) * (M_PI / 2 / nt) * (2 * M_PI / np);
+            }
+        EXPECT_NEAR(a(16, y), 1 - occ / M_PI, 0.005) << "row " << y << " delta " << delta;
+        ++checked;
+    }
+    EXPECT_GE(checked, 3);
+    // An open plane: nothing within the radius, A = 1 exactly.
+    eval::AnalyticScene plane;
+    plane.addPlane({0, 0, -3}, {0, 0, 1});
+    const ImageF open = raytraced(plane, cam, 16, 12, {});
+    for (float v : open.pixels()) ASSERT_EQ(v, 1.0f);
+}
