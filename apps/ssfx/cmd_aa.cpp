@@ -5,7 +5,7 @@
 
 #include <charconv>
 
-#include "commands.hpp"
+#include "apps/ssfx/commands.hpp"
 #include "ssfx/aa/presets.hpp"
 #include "ssfx/io/png.hpp"
 #include "ssfx/registry.hpp"

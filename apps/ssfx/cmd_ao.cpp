@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <optional>
 
-#include "commands.hpp"
+#include "apps/ssfx/commands.hpp"
 #include "ssfx/ao/registry.hpp"
 #include "ssfx/eval/ao_scenes.hpp"
 #include "ssfx/io/camera.hpp"

@@ -4,7 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "commands.hpp"
+#include "apps/ssfx/commands.hpp"
 #include "ssfx/aa/resolve.hpp"
 #include "ssfx/eval/machine.hpp"
 #include "ssfx/eval/speed.hpp"

@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <optional>
 
-#include "commands.hpp"
+#include "apps/ssfx/commands.hpp"
 #include "ssfx/core/error.hpp"
 #include "ssfx/deferred/registry.hpp"
 #include "ssfx/eval/metrics.hpp"

@@ -6,7 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
-#include "commands.hpp"
+#include "apps/ssfx/commands.hpp"
 #include "ssfx/ao/registry.hpp"
 #include "ssfx/core/error.hpp"
 #include "ssfx/registry.hpp"

@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <optional>
 
-#include "commands.hpp"
+#include "apps/ssfx/commands.hpp"
 #include "ssfx/ao/depth.hpp"
 #include "ssfx/core/error.hpp"
 #include "ssfx/io/exr.hpp"

@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <memory>
 
-#include "commands.hpp"
+#include "apps/ssfx/commands.hpp"
 #include "ssfx/eval/quality.hpp"
 #include "ssfx/eval/test_images.hpp"
 #include "ssfx/io/png.hpp"

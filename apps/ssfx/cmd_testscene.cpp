@@ -4,7 +4,7 @@
 
 #include <filesystem>
 
-#include "commands.hpp"
+#include "apps/ssfx/commands.hpp"
 #include "ssfx/eval/quality.hpp"
 #include "ssfx/eval/synthetic.hpp"
 #include "ssfx/io/png.hpp"

@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <exception>
 
-#include "commands.hpp"
+#include "apps/ssfx/commands.hpp"
 #include "ssfx/core/error.hpp"
 #include "ssfx/core/memory.hpp"
 #include "ssfx/io/png.hpp"

@@ -2,7 +2,7 @@
 // borders. Float operations in one fixed order so that every path gives the same bits.
 #pragma once
 
-#include "ppaa_common.hpp"
+#include "src/aa/ppaa_common.hpp"
 #include "ssfx/aa/blur.hpp"
 
 namespace ssfx::aa::detail {

@@ -3,7 +3,7 @@
 //
 // Exactness: every float operation is the scalar kernel's (ddaa_kernel.hpp) in the same
 // order and without FMA; the GPU-model bilinear reads are integer work on texels, and the
-// output byte of their mean comes from their levels (ByteOfMeanLevel in ppaa_simd-inl.h).
+// output byte of their mean comes from their levels (ByteOfMeanLevel in ppaa-inl.h).
 // Only the GPU filtering model has this path; tests/properties check it equals the
 // reference.
 #if defined(SSFX_AA_DDAA_INL_H_) == defined(HWY_TARGET_TOGGLE)
@@ -16,7 +16,7 @@
 #include <hwy/highway.h>
 
 #include "src/aa/ddaa_kernel.hpp"
-#include "src/aa/ppaa_simd-inl.h"
+#include "src/aa/ppaa-inl.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace ssfx::aa::detail {

@@ -1,6 +1,6 @@
 // ddaa2p ("plus"): ddaa2 on a 2x render, then the ssaax2 resolve (DDAA paper section 4:
 // recommended where rendering at twice the resolution is affordable; quality close to ssaax4).
-#include "ppaa_common.hpp"
+#include "src/aa/ppaa_common.hpp"
 #include "ssfx/aa/ddaa.hpp"
 #include "ssfx/aa/resolve.hpp"
 

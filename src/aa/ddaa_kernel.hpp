@@ -4,8 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "luma_planes.hpp"
-#include "ppaa_common.hpp"
+#include "src/aa/luma_planes.hpp"
+#include "src/aa/ppaa_common.hpp"
 #include "ssfx/aa/ddaa.hpp"
 
 namespace ssfx::aa::detail {

@@ -12,7 +12,7 @@
 
 #include <hwy/highway.h>
 
-#include "src/aa/ppaa_simd-inl.h"
+#include "src/aa/ppaa-inl.h"
 #include "ssfx/aa/fxaa.hpp"
 
 HWY_BEFORE_NAMESPACE();

@@ -15,8 +15,8 @@
 #include <cstring>
 #include <vector>
 
-#include "luma_planes.hpp"
-#include "ppaa_common.hpp"
+#include "src/aa/luma_planes.hpp"
+#include "src/aa/ppaa_common.hpp"
 
 namespace ssfx::aa::detail {
 

@@ -1,11 +1,11 @@
-// Dispatch of the plane computation (body: LumaPlaneRows in ppaa_simd-inl.h), and of the
-// test hooks of ppaa_simd-inl.h (ppaa_simd.hpp).
+// Dispatch of the plane computation (body: LumaPlaneRows in ppaa-inl.h), and of the
+// test hooks of ppaa-inl.h (ppaa_hooks.hpp).
 #undef HWY_TARGET_INCLUDE
-#define HWY_TARGET_INCLUDE "src/aa/ppaa_simd-inl.h"
+#define HWY_TARGET_INCLUDE "src/aa/ppaa-inl.h"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
-#include "src/aa/ppaa_simd-inl.h"
+#include "src/aa/ppaa-inl.h"
 
 #if HWY_ONCE
 #include <algorithm>
@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "src/aa/luma_planes.hpp"
-#include "src/aa/ppaa_simd.hpp"
+#include "src/aa/ppaa_hooks.hpp"
 #include "ssfx/core/error.hpp"
 
 namespace ssfx::aa::detail {

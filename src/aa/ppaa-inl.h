@@ -297,7 +297,7 @@ HWY_INLINE void StoreBytes(VI r, VI g, VI b, int x, const std::uint8_t* exitMask
                reinterpret_cast<std::uint32_t*>(dst + x));
 }
 
-// Test hooks (src/aa/ppaa_simd.hpp): how many levels k in [0, 4080], and how many pairs of
+// Test hooks (src/aa/ppaa_hooks.hpp): how many levels k in [0, 4080], and how many pairs of
 // levels, get a byte from ByteOfLevel / ByteOfMeanLevel other than the scalar code's
 // toUnorm8 of the float reads (kSixteenthLevels[k] = k / 4080).
 // Mismatches of bytes(k) against want(k) over every level k, a vector of levels at a time.

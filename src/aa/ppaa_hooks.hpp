@@ -1,4 +1,4 @@
-// Test hooks for ppaa_simd-inl.h (defined in luma_planes.cpp).
+// Test hooks for ppaa-inl.h (defined in luma_planes.cpp).
 #pragma once
 
 #include <cstdint>

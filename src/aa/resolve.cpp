@@ -9,7 +9,7 @@
 #include <cmath>
 #include <vector>
 
-#include "ppaa_common.hpp"
+#include "src/aa/ppaa_common.hpp"
 
 namespace ssfx::aa {
 

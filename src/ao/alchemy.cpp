@@ -6,7 +6,7 @@
 #include <cmath>
 #include <utility>
 
-#include "ao_sampling.hpp"
+#include "src/ao/ao_sampling.hpp"
 #include "ssfx/core/error.hpp"
 
 namespace ssfx::ao {

@@ -14,7 +14,7 @@
 #include "ssfx/ao/depth.hpp"
 #include "ssfx/ao/sao.hpp"
 #include "ssfx/core/error.hpp"
-#include "src/ao/sao_simd.hpp"
+#include "src/ao/ao_simd.hpp"
 
 namespace ssfx::ao::detail {
 

@@ -1,11 +1,11 @@
-// Runtime dispatch of the vector AO kernels: the sample pass (sao_simd-inl.h), a row of the
-// bilateral blur (bilateral_simd-inl.h) and a row of depth -> z (depth_simd-inl.h).
+// Runtime dispatch of the vector AO kernels: the sample pass (sao-inl.h), a row of the
+// bilateral blur (bilateral-inl.h) and a row of depth -> z (depth-inl.h).
 #undef HWY_TARGET_INCLUDE
-#define HWY_TARGET_INCLUDE "src/ao/sao_simd-inl.h"
+#define HWY_TARGET_INCLUDE "src/ao/sao-inl.h"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
-#include "src/ao/sao_simd-inl.h"
+#include "src/ao/sao-inl.h"
 
 #if HWY_ONCE
 namespace ssfx::ao::detail {

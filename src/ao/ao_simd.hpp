@@ -1,4 +1,4 @@
-// The vector AO sample pass (sao_simd-inl.h): what it needs, flattened into plain arrays.
+// The vector AO sample pass (sao-inl.h): what it needs, flattened into plain arrays.
 #pragma once
 
 #include <cstdint>
@@ -26,11 +26,11 @@ struct SimdSampleInput {
     const float* tapAngle;
 };
 
-//! z = c0 / (d c1 + c2) for one row (depth_simd-inl.h); false, with `z` unspecified, when some
+//! z = c0 / (d c1 + c2) for one row (depth-inl.h); false, with `z` unspecified, when some
 //! d is outside [0, 1] or NaN (the caller's per-pixel loop then reports it).
 bool depthToZRowSimd(const float* d, float* z, int n, double c0, double c1, double c2);
 
-//! One output row of a bilateral blur pass (bilateral_simd-inl.h): tap t of pixel i reads
+//! One output row of a bilateral blur pass (bilateral-inl.h): tap t of pixel i reads
 //! zTap[t][i] and aTap[t][i] (row pointers already moved by the tap's offset).
 struct BilateralRowInput {
     static constexpr int kMaxTaps = 17;  //!< 2 blurRadius + 1, blurRadius <= 8

@@ -2,7 +2,7 @@
 // it follows is in sao.cpp bilateralPass): each lane is one output pixel and sums its taps
 // in t order, with the scalar loop's float operations in the same order and without FMA,
 // so the result is bit for bit the per-pixel formula's on every target.
-// Included by sao_simd-inl.h (one Highway translation unit for the AO kernels).
+// Included by sao-inl.h (one Highway translation unit for the AO kernels).
 #if defined(SSFX_AO_BILATERAL_SIMD_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef SSFX_AO_BILATERAL_SIMD_INL_H_
 #undef SSFX_AO_BILATERAL_SIMD_INL_H_
@@ -14,7 +14,7 @@
 
 #include <cmath>
 
-#include "src/ao/sao_simd.hpp"
+#include "src/ao/ao_simd.hpp"
 
 HWY_BEFORE_NAMESPACE();
 namespace ssfx::ao::detail {

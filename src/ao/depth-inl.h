@@ -2,7 +2,7 @@
 // depth.cpp): z = c0 / (d c1 + c2) in double, rounded to float, with the scalar loop's
 // operations in the same order and without FMA, so the same bits on every target; d = 1
 // (nothing drawn) is sky, z = -inf, whatever the far plane.
-// Included by sao_simd-inl.h (one Highway translation unit for the AO kernels).
+// Included by sao-inl.h (one Highway translation unit for the AO kernels).
 #if defined(SSFX_AO_DEPTH_SIMD_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef SSFX_AO_DEPTH_SIMD_INL_H_
 #undef SSFX_AO_DEPTH_SIMD_INL_H_

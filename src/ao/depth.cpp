@@ -9,7 +9,7 @@
 #include <numbers>
 #include <utility>
 
-#include "src/ao/sao_simd.hpp"
+#include "src/ao/ao_simd.hpp"
 #include "ssfx/core/error.hpp"
 
 namespace ssfx::ao {

@@ -16,9 +16,9 @@
 #include <hwy/contrib/math/math-inl.h>
 #include <hwy/highway.h>
 
-#include "src/ao/bilateral_simd-inl.h"
-#include "src/ao/depth_simd-inl.h"
-#include "src/ao/sao_simd.hpp"
+#include "src/ao/bilateral-inl.h"
+#include "src/ao/depth-inl.h"
+#include "src/ao/ao_simd.hpp"
 
 HWY_BEFORE_NAMESPACE();
 namespace ssfx::ao::detail {

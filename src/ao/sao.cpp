@@ -8,7 +8,7 @@
 #include <cmath>
 #include <utility>
 
-#include "ao_sampling.hpp"
+#include "src/ao/ao_sampling.hpp"
 #include "ssfx/core/error.hpp"
 
 namespace ssfx::ao {
@@ -236,7 +236,7 @@ void bilateralPass(const ImageF& a, ImageView<const float> z, Region region, con
     // 0, for any k), a horizontal one is skipped; else taps clamp to the region's edge.
     const std::vector<float> outsideZ(p.blurZeroOutside ? std::size_t(W) : 0, -HUGE_VALF),
         outsideA(outsideZ.size(), 1.0f);
-    // Taps of pixel i are i + t S. A row goes to the vector kernel (bilateral_simd-inl.h: each
+    // Taps of pixel i are i + t S. A row goes to the vector kernel (bilateral-inl.h: each
     // pixel sums its taps in order, the same float operations as the per-pixel loop below); in
     // the horizontal pass the pixels within R S of the row's ends reach past it and take the
     // per-pixel loop.

@@ -65,7 +65,7 @@ std::int64_t DivExactMismatches(float divisor, int kMax) {
 HWY_AFTER_NAMESPACE();
 
 #if HWY_ONCE
-#include "src/core/exact_div.hpp"
+#include "src/core/exact_div_hooks.hpp"
 
 namespace ssfx {
 

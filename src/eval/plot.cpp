@@ -9,7 +9,7 @@
 #include <limits>
 #include <memory>
 
-#include "cairo_image.hpp"
+#include "src/eval/cairo_image.hpp"
 #include "ssfx/core/error.hpp"
 
 namespace ssfx::eval {

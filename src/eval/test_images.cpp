@@ -13,7 +13,7 @@
 #include <numbers>
 #include <string>
 
-#include "cairo_image.hpp"
+#include "src/eval/cairo_image.hpp"
 #include "ssfx/core/error.hpp"
 
 namespace ssfx::eval {

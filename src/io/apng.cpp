@@ -15,7 +15,7 @@
 #include <cmath>
 #include <cstring>
 
-#include "png_internal.hpp"
+#include "src/io/png_internal.hpp"
 #include "ssfx/io/png.hpp"
 
 namespace ssfx::io {

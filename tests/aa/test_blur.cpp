@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "ssfx/aa/blur.hpp"
-#include "support/test_support.hpp"
+#include "tests/support/test_support.hpp"
 
 using namespace ssfx;
 

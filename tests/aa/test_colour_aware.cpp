@@ -3,7 +3,7 @@
 
 #include "ssfx/core/color.hpp"
 #include "ssfx/registry.hpp"
-#include "support/test_support.hpp"
+#include "tests/support/test_support.hpp"
 
 using namespace ssfx;
 

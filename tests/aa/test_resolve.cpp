@@ -1,7 +1,7 @@
 #include <gtest/gtest.h>
 
 #include "ssfx/aa/resolve.hpp"
-#include "support/test_support.hpp"
+#include "tests/support/test_support.hpp"
 
 using namespace ssfx;
 

@@ -4,9 +4,9 @@
 
 #include <hwy/targets.h>
 
-#include "src/core/exact_div.hpp"
+#include "src/core/exact_div_hooks.hpp"
 #include "ssfx/core/color.hpp"
-#include "support/test_support.hpp"
+#include "tests/support/test_support.hpp"
 
 using namespace ssfx;
 

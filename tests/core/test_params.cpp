@@ -10,8 +10,8 @@
 #include "ssfx/ao/raytraced.hpp"
 #include "ssfx/ao/sao.hpp"
 #include "ssfx/registry.hpp"
-#include "support/param_tables.hpp"
-#include "support/test_support.hpp"
+#include "tests/support/param_tables.hpp"
+#include "tests/support/test_support.hpp"
 
 namespace ssfx::test {
 namespace {

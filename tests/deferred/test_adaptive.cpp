@@ -5,12 +5,12 @@
 
 #include <cmath>
 
-#include "../render/render_fixture.hpp"
+#include "tests/render/render_fixture.hpp"
 #include "ssfx/core/error.hpp"
 #include "ssfx/deferred/adaptive.hpp"
 #include "ssfx/deferred/registry.hpp"
 #include "ssfx/deferred/sampler.hpp"
-#include "support/param_tables.hpp"
+#include "tests/support/param_tables.hpp"
 
 namespace ssfx::test {
 namespace {

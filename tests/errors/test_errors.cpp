@@ -4,14 +4,14 @@
 
 #include <cmath>
 
-#include "../../src/io/png_internal.hpp"
+#include "src/io/png_internal.hpp"
 #include "ssfx/aa/blur.hpp"
 #include "ssfx/aa/ddaa.hpp"
 #include "ssfx/aa/fxaa.hpp"
 #include "ssfx/aa/resolve.hpp"
 #include "ssfx/io/png.hpp"
 #include "ssfx/registry.hpp"
-#include "support/test_support.hpp"
+#include "tests/support/test_support.hpp"
 
 using namespace ssfx;
 

@@ -6,7 +6,7 @@
 #include "ssfx/eval/kernels.hpp"
 #include "ssfx/eval/plot.hpp"
 #include "ssfx/eval/temporal.hpp"
-#include "support/test_support.hpp"
+#include "tests/support/test_support.hpp"
 
 using namespace ssfx;
 

@@ -6,7 +6,7 @@
 
 #include "ssfx/aa/resolve.hpp"
 #include "ssfx/eval/metrics.hpp"
-#include "support/test_support.hpp"
+#include "tests/support/test_support.hpp"
 
 using namespace ssfx;
 

@@ -13,7 +13,7 @@
 #include "ssfx/eval/quality.hpp"
 #include "ssfx/eval/test_images.hpp"
 #include "ssfx/io/png.hpp"
-#include "support/test_support.hpp"
+#include "tests/support/test_support.hpp"
 
 using namespace ssfx;
 

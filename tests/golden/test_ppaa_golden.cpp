@@ -11,7 +11,7 @@
 
 #include "ssfx/io/png.hpp"
 #include "ssfx/registry.hpp"
-#include "support/test_support.hpp"
+#include "tests/support/test_support.hpp"
 
 using namespace ssfx;
 

@@ -4,9 +4,9 @@
 
 #include <filesystem>
 
-#include "../../src/io/png_internal.hpp"
+#include "src/io/png_internal.hpp"
 #include "ssfx/io/png.hpp"
-#include "support/test_support.hpp"
+#include "tests/support/test_support.hpp"
 
 using namespace ssfx;
 using namespace ssfx::io::detail;

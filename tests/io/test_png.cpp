@@ -3,9 +3,9 @@
 
 #include <filesystem>
 
-#include "io/png_writer.hpp"
+#include "tests/io/png_writer.hpp"
 #include "ssfx/io/png.hpp"
-#include "support/test_support.hpp"
+#include "tests/support/test_support.hpp"
 
 using namespace ssfx;
 using test::RawPng;

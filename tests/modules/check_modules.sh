@@ -64,6 +64,16 @@ for file in "$src/src/registry.cpp" "$src/include/ssfx/registry.hpp"; do
   grep -HE '^#include "ssfx/(render|scene|deferred|eval|ao|io)/' "$file" && bad "$file (the aa registry) includes a module above aa"
 done
 
+# One include style: a project header by its path from include/ ("ssfx/...") or from the
+# repository root ("src/...", "apps/...", "tests/..."); generated SPIR-V ("shaders/*.inc")
+# and Highway's own headers aside. Third-party headers take <...>.
+while IFS= read -r line; do
+  inc=$(sed -E 's/.*#include *"([^"]+)".*/\1/' <<<"$line")
+  [[ $inc =~ ^(ssfx|src|apps|tests|bench|fuzz)/ || $inc =~ ^shaders/.*\.inc$ ]] ||
+    bad "${line%%:*} includes \"$inc\" (project headers by their path from include/ or the root)"
+done < <(grep -rHE '^#include *"' "$src/src" "$src/include" "$src/apps" "$src/tests" "$src/bench" "$src/fuzz" \
+           --include=*.cpp --include=*.hpp --include=*.h --exclude-dir=node_modules)
+
 # Link lines: "TARGET: lib;lib;..." per line.
 declare -A nolink=(
   [ssfx]="cairo|vulkan|assimp|embree|ssfx_scene|ssfx_render|ssfx_eval|ssfx_deferred"

@@ -4,7 +4,7 @@
 
 #include "ssfx/eval/synthetic.hpp"
 #include "ssfx/registry.hpp"
-#include "support/test_support.hpp"
+#include "tests/support/test_support.hpp"
 
 using namespace ssfx;
 

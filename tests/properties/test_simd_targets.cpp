@@ -8,8 +8,8 @@
 #include "ssfx/aa/fxaa.hpp"
 #include "ssfx/eval/synthetic.hpp"
 #include "ssfx/registry.hpp"
-#include "src/aa/ppaa_simd.hpp"
-#include "support/test_support.hpp"
+#include "src/aa/ppaa_hooks.hpp"
+#include "tests/support/test_support.hpp"
 
 using namespace ssfx;
 

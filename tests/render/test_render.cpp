@@ -5,7 +5,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "render_fixture.hpp"
+#include "tests/render/render_fixture.hpp"
 #include "ssfx/ao/depth.hpp"
 #include "ssfx/ao/sao.hpp"
 #include "ssfx/core/error.hpp"

@@ -13,7 +13,7 @@
 #include "ssfx/io/png.hpp"
 #include "ssfx/scene/camera.hpp"
 #include "ssfx/scene/scene.hpp"
-#include "support/test_support.hpp"
+#include "tests/support/test_support.hpp"
 
 namespace ssfx::test {
 namespace {

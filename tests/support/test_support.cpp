@@ -1,4 +1,4 @@
-#include "support/test_support.hpp"
+#include "tests/support/test_support.hpp"
 
 #include <cstdlib>
 #include <filesystem>

@@ -12,7 +12,7 @@
 #include "ssfx/vk/compute.hpp"
 #include "ssfx/vk/context.hpp"
 #include "ssfx/vk/timer.hpp"
-#include "support/test_support.hpp"
+#include "tests/support/test_support.hpp"
 
 namespace ssfx {
 namespace {
