@@ -23,7 +23,7 @@ render::Renderer& renderer() {
 
 enum class What { Depth, Color, GBuffer1, GBuffer4 };
 
-void renderBench(benchmark::State& state, const render::Scene* scene, const std::string& view, What what) {
+void renderBench(benchmark::State& state, const scene::Scene* scene, const std::string& view, What what) {
     double wallMs = 0;
     for (auto _ : state) {
         const auto t0 = std::chrono::steady_clock::now();
@@ -45,15 +45,15 @@ void renderBench(benchmark::State& state, const render::Scene* scene, const std:
 }  // namespace
 
 int main(int argc, char** argv) {
-    static const render::Scene atrium = render::atrium();
-    static std::unique_ptr<render::Scene> sponza;
+    static const scene::Scene atrium = scene::atrium();
+    static std::unique_ptr<scene::Scene> sponza;
     const std::filesystem::path sponzaFile = std::filesystem::path(SSFX_SOURCE_DIR) / "scenes" / "sponza.json";
     try {
-        sponza = std::make_unique<render::Scene>(render::loadScene(sponzaFile.string()));
+        sponza = std::make_unique<scene::Scene>(scene::loadScene(sponzaFile.string()));
     } catch (const std::exception& e) {
         fmt::print(stderr, "bench_render: Sponza left out ({})\n", e.what());
     }
-    std::vector<std::pair<const render::Scene*, std::string>> scenes{{&atrium, "nave"}};
+    std::vector<std::pair<const scene::Scene*, std::string>> scenes{{&atrium, "nave"}};
     if (sponza) scenes.emplace_back(sponza.get(), "atrium");
     const std::pair<What, const char*> kinds[] = {
         {What::Depth, "depth_1080p"}, {What::Color, "colour_1080p"}, {What::GBuffer1, "gbuffer_1x1_1080p"},

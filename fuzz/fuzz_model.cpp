@@ -12,8 +12,8 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     try {
-        const ssfx::render::Scene s =
-            ssfx::render::importModelFromMemory(std::span(data, size), SSFX_FUZZ_FORMAT, "fuzz");
+        const ssfx::scene::Scene s =
+            ssfx::scene::importModelFromMemory(std::span(data, size), SSFX_FUZZ_FORMAT, "fuzz");
         if (s.triangleCount() == 0) __builtin_trap();
         s.validate();  // throws ssfx::Error: the import let an invalid scene through
     } catch (const ssfx::Error& e) {

@@ -86,13 +86,13 @@ void run(const AoOptions& o, const CLI::App& cmd) {
 #ifdef SSFX_HAVE_RENDER
         // A renderer scene: D32F depth from Vulkan, geometry for the ground truth from Embree.
         const auto [w, h] = parseSize(o.size);
-        const render::Scene rs = render::loadScene(o.scene);
-        const render::View view = o.view.empty() ? rs.views.at(0).second : rs.view(o.view);
+        const scene::Scene rs = scene::loadScene(o.scene);
+        const scene::View view = o.view.empty() ? rs.views.at(0).second : rs.view(o.view);
         render::Renderer renderer({o.device, false});
         auto r = renderer.renderDepth(rs, view, w, h, DepthFormat::D32F, guard);
         depth = std::move(r.depth);
         cam = r.camera.camera;
-        if (method.needsGeometry) meshScene = render::cameraSpaceRayScene(rs, r.camera);
+        if (method.needsGeometry) meshScene = scene::cameraSpaceRayScene(rs, r.camera);
 #else
         throw Error(fmt::format("scene '{}': this ssfx was built without the renderer (analytic scenes: corner, room)", o.scene));
 #endif

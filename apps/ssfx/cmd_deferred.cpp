@@ -37,10 +37,10 @@ void run(const DeferredOptions& o) {
     }
     method.validate(params);
     const deferred::AdaptiveParams& p = std::get<deferred::AdaptiveParams>(params);
-    const render::Scene scene = render::loadScene(o.scene);
-    const render::View& view = o.view.empty() ? scene.views.at(0).second : scene.view(o.view);
+    const scene::Scene scene = scene::loadScene(o.scene);
+    const scene::View& view = o.view.empty() ? scene.views.at(0).second : scene.view(o.view);
     render::Renderer renderer({o.device, false});
-    const render::GBuffer g = renderer.renderGBuffer(scene, view, w, h, o.m);
+    const scene::GBuffer g = renderer.renderGBuffer(scene, view, w, h, o.m);
     const Exec exec{o.threads};
     const auto a = deferred::adaptiveSupersampling(scene, g, p, exec);
     std::optional<deferred::DeferredResult> ref;

@@ -236,9 +236,9 @@ eval::AoSceneSource renderedAoScenes(const std::vector<std::string>& specs) {
             const auto colon = spec.rfind(':');
             const std::string scenePath = colon == std::string::npos ? spec : spec.substr(0, colon);
             const std::string viewName = colon == std::string::npos ? "" : spec.substr(colon + 1);
-            render::Scene scene;
+            scene::Scene scene;
             try {
-                scene = render::loadScene(scenePath);
+                scene = scene::loadScene(scenePath);
             } catch (const Error& e) {
                 if (scenePath.find('/') == std::string::npos) throw;  // a built-in name: a real error
                 progressLine(fmt::format("ao: skipping {} ({})", scenePath, e.what()));
@@ -246,10 +246,10 @@ eval::AoSceneSource renderedAoScenes(const std::vector<std::string>& specs) {
             }
             if (!renderer) renderer = std::make_unique<render::Renderer>();
             progressLine(fmt::format("ao: rendering {} on {}", spec, renderer->device().name));
-            const render::View& view = viewName.empty() ? scene.views.at(0).second : scene.view(viewName);
+            const scene::View& view = viewName.empty() ? scene.views.at(0).second : scene.view(viewName);
             auto r = renderer->renderDepth(scene, view, width, height, DepthFormat::D32F, guard);
             out.push_back({scene.name, std::move(r.depth), r.camera.camera,
-                           std::shared_ptr<const ao::RayScene>(render::cameraSpaceRayScene(scene, r.camera))});
+                           std::shared_ptr<const ao::RayScene>(scene::cameraSpaceRayScene(scene, r.camera))});
         }
         return out;
     };
@@ -293,7 +293,7 @@ void addReport(CLI::App& eval) {
         if (!*noRender)
             o->addRenderSets = [quick = o->quick](const std::string& dir) {
                 render::Renderer renderer;
-                const render::Scene scene = render::atrium();
+                const scene::Scene scene = scene::atrium();
                 progressLine(fmt::format("report: rendering the atrium at 1x..8x on {}", renderer.device().name));
                 const int w = quick ? 160 : 640, h = quick ? 90 : 360;
                 render::writeAaRenderSet(renderer, scene, scene.view("nave"), w, h, dir, "atrium");

@@ -43,7 +43,7 @@ void run(const RenderOptions& o) {
         return;
     }
     if (o.scene.empty()) throw Error("no scene given (a built-in name: atrium, cornell; a scene .json; or a model file)");
-    render::Scene scene = render::loadScene(o.scene);
+    scene::Scene scene = scene::loadScene(o.scene);
     if (o.listViews) {
         for (const auto& [name, v] : scene.views)
             fmt::print("{}: eye ({:.3g}, {:.3g}, {:.3g}) target ({:.3g}, {:.3g}, {:.3g}) fov {:.3g} deg\n", name, v.eye.x,
@@ -51,7 +51,7 @@ void run(const RenderOptions& o) {
         return;
     }
     if (o.out.empty()) throw Error("no output folder given (--out DIR)");
-    render::View view = o.view.empty() ? scene.views.at(0).second : scene.view(o.view);
+    scene::View view = o.view.empty() ? scene.views.at(0).second : scene.view(o.view);
     if (!(std::isfinite(o.near) && o.near >= 0)) throw Error(fmt::format("--near {}: a finite distance > 0 (m)", o.near));
     if (o.near > 0) view.zNear = o.near;
     if (!o.far.empty()) {
@@ -96,7 +96,7 @@ void run(const RenderOptions& o) {
     }
     const auto depth = renderer.renderDepth(scene, view, w, h, format, o.guard);
     const auto color = renderer.renderColor(scene, view, w, h, o.scale);
-    std::optional<render::GBuffer> gbuffer;
+    std::optional<scene::GBuffer> gbuffer;
     if (o.gbuffer > 0) gbuffer = renderer.renderGBuffer(scene, view, w, h, o.gbuffer);
     const ImageF z = ao::depthToZ(depth.depth.view(), depth.camera.camera);
 
@@ -104,9 +104,9 @@ void run(const RenderOptions& o) {
     const std::filesystem::path dir(o.out);
     io::writeExr((dir / "depth.exr").string(), depth.depth.view(), "Z");
     io::writeExr((dir / "z.exr").string(), z.view(), "Z");
-    io::writeTextAtomic((dir / "camera.json").string(), render::cameraSetupJson(depth.camera));
+    io::writeTextAtomic((dir / "camera.json").string(), scene::cameraSetupJson(depth.camera));
     io::writePng((dir / "color.png").string(), color.color.view());
-    if (gbuffer) render::writeGBufferExr((dir / "gbuffer.exr").string(), *gbuffer);
+    if (gbuffer) scene::writeGBufferExr((dir / "gbuffer.exr").string(), *gbuffer);
     outputs.commit();
     fmt::print("{} / {}: {} triangles, {}x{} + guard {} on {}: depth ({}) {:.2f} ms, colour x{} {:.2f} ms", scene.name,
                o.view.empty() ? scene.views.at(0).first : o.view, scene.triangleCount(), w, h, o.guard,

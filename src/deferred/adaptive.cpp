@@ -18,7 +18,7 @@ double msSince(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
-void checkM(const render::GBuffer& g) {
+void checkM(const scene::GBuffer& g) {
     if (g.m < 1 || g.m > 4) throw Error(fmt::format("deferred: G-buffer supersampling m = {} is not in 1..4", g.m));
 }
 
@@ -79,7 +79,7 @@ float shadingMetric(float centre, float north, float south, float west, float ea
     return r < std::max(tMin, lMax * tEdge) ? 0.0f : c * r;  // FXAA's early exit (ppaa.md section 1)
 }
 
-DeferredResult adaptiveSupersampling(const render::Scene& scene, const render::GBuffer& g, const AdaptiveParams& p,
+DeferredResult adaptiveSupersampling(const scene::Scene& scene, const scene::GBuffer& g, const AdaptiveParams& p,
                                      const Exec& exec) {
     validate(p);
     checkM(g);
@@ -197,7 +197,7 @@ DeferredResult adaptiveSupersampling(const render::Scene& scene, const render::G
     return r;
 }
 
-DeferredResult referenceSupersampling(const render::Scene& scene, const render::GBuffer& g, const ShadingParams& p,
+DeferredResult referenceSupersampling(const scene::Scene& scene, const scene::GBuffer& g, const ShadingParams& p,
                                       const Exec& exec) {
     checkM(g);
     const SampleShader shader(scene, g, p);

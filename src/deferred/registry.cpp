@@ -23,7 +23,7 @@ struct Text {
 };
 DeferredMethodInfo entry(Text t, std::span<const ParamInfo> params, DeferredParams (*defaults)(),
                          void (*check)(const DeferredParams&),
-                         DeferredResult (*run)(const render::Scene&, const render::GBuffer&, const DeferredParams&,
+                         DeferredResult (*run)(const scene::Scene&, const scene::GBuffer&, const DeferredParams&,
                                                const Exec&)) {
     DeferredMethodInfo m{};
     m.id = t.id, m.family = "deferred", m.summary = t.summary, m.citation = t.citation, m.inputs = t.inputs;
@@ -40,13 +40,13 @@ const std::array<DeferredMethodInfo, 2> kDeferredMethods{{
            kCite, kInput},
           kAdaptiveParams, [] { return DeferredParams{AdaptiveParams{}}; },
           [](const DeferredParams& p) { validate(as<AdaptiveParams>(p, "adaptive")); },
-          [](const render::Scene& s, const render::GBuffer& g, const DeferredParams& p, const Exec& e) {
+          [](const scene::Scene& s, const scene::GBuffer& g, const DeferredParams& p, const Exec& e) {
               return adaptiveSupersampling(s, g, as<AdaptiveParams>(p, "adaptive"), e);
           }),
     entry({"brute-force", "every G-buffer sample shaded and averaged (the reference)", kCite, kInput}, kShadingParams,
           [] { return DeferredParams{ShadingParams{}}; },
           [](const DeferredParams& p) { validate(as<ShadingParams>(p, "brute-force")); },
-          [](const render::Scene& s, const render::GBuffer& g, const DeferredParams& p, const Exec& e) {
+          [](const scene::Scene& s, const scene::GBuffer& g, const DeferredParams& p, const Exec& e) {
               return referenceSupersampling(s, g, as<ShadingParams>(p, "brute-force"), e);
           }),
 }};

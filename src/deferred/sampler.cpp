@@ -7,7 +7,7 @@
 
 namespace ssfx::deferred {
 
-glm::vec4 textureBilinear(const render::TextureArray& t, int layer, int level, glm::vec2 uv) {
+glm::vec4 textureBilinear(const scene::TextureArray& t, int layer, int level, glm::vec2 uv) {
     const ImageRgba8& img = t.layers[std::size_t(layer)][std::size_t(level)];
     const int size = img.width();
     const float x = uv.x * float(size) - 0.5f, y = uv.y * float(size) - 0.5f;
@@ -26,7 +26,7 @@ glm::vec4 textureBilinear(const render::TextureArray& t, int layer, int level, g
     return top * (1.0f - ay) + bottom * ay;
 }
 
-glm::vec4 textureLod(const render::TextureArray& t, int layer, glm::vec2 uv, float lod) {
+glm::vec4 textureLod(const scene::TextureArray& t, int layer, glm::vec2 uv, float lod) {
     const float maxLevel = float(t.levelCount() - 1);
     lod = std::clamp(std::isfinite(lod) ? lod : maxLevel, 0.0f, maxLevel);
     const int l0 = int(std::floor(lod));
@@ -36,7 +36,7 @@ glm::vec4 textureLod(const render::TextureArray& t, int layer, glm::vec2 uv, flo
     return a * (1.0f - f) + textureBilinear(t, layer, l0 + 1, uv) * f;
 }
 
-glm::vec4 textureGrad(const render::TextureArray& t, int layer, glm::vec2 uv, glm::vec2 dx, glm::vec2 dy, int maxAnisotropy) {
+glm::vec4 textureGrad(const scene::TextureArray& t, int layer, glm::vec2 uv, glm::vec2 dx, glm::vec2 dy, int maxAnisotropy) {
     const float size = float(t.size);
     const float px = glm::length(dx) * size, py = glm::length(dy) * size;  // footprint axes in texels
     const float pMax = std::max(px, py), pMin = std::min(px, py);

@@ -45,7 +45,7 @@ ImageF absoluteError(const ImageRgbF& a, const ImageRgbF& b) {
 
 void validate(const ShadingParams& p) { validateParams(kShadingParams, &p, "shading"); }
 
-SampleShader::SampleShader(const render::Scene& scene, const render::GBuffer& g, const ShadingParams& params)
+SampleShader::SampleShader(const scene::Scene& scene, const scene::GBuffer& g, const ShadingParams& params)
     : scene_(scene), g_(g), p_(params) {
     validate(params);
     const std::size_t n = std::size_t(g.sampleWidth()) * std::size_t(g.sampleHeight());
@@ -53,7 +53,7 @@ SampleShader::SampleShader(const render::Scene& scene, const render::GBuffer& g,
         g.uv.size() != n || g.uvGrad.size() != n || g.material.size() != n || g.layer.size() != n)
         throw Error("deferred: the G-buffer's planes do not match its size");
     for (std::size_t i = 0; i < n; ++i) {
-        if (g.material[i] != render::GBuffer::kNoMaterial && g.material[i] >= scene.materials.size())
+        if (g.material[i] != scene::GBuffer::kNoMaterial && g.material[i] >= scene.materials.size())
             throw Error(fmt::format("deferred: G-buffer sample {} names material {} of {}", i, g.material[i], scene.materials.size()));
         if (g.layer[i] >= int(scene.textures.layers.size()))
             throw Error(fmt::format("deferred: G-buffer sample {} names texture layer {} of {}", i, g.layer[i],
@@ -72,7 +72,7 @@ SampleShader::SampleShader(const render::Scene& scene, const render::GBuffer& g,
     proj_ = ssfx::projection(g.camera.camera, g.sampleWidth(), g.sampleHeight());
     const glm::dmat4& v = g.camera.view;
     for (const auto& l : scene.lights) {
-        if (l.type == render::Light::Type::Directional)
+        if (l.type == scene::Light::Type::Directional)
             lights_.push_back({false, glm::normalize(-glm::vec3(glm::dmat3(v) * glm::dvec3(l.vector))), l.color});
         else
             lights_.push_back({true, glm::vec3(v * glm::dvec4(glm::dvec3(l.vector), 1.0)), l.color});
@@ -81,7 +81,7 @@ SampleShader::SampleShader(const render::Scene& scene, const render::GBuffer& g,
 
 float SampleShader::linearDepth(int sx, int sy) const {
     const float d = g_.depth(sx, sy);
-    if (g_.material[g_.index(sx, sy)] == render::GBuffer::kNoMaterial) return INFINITY;
+    if (g_.material[g_.index(sx, sy)] == scene::GBuffer::kNoMaterial) return INFINITY;
     return float(-proj_.c0 / (double(d) * proj_.c1 + proj_.c2));  // sao.md eq. 2
 }
 
@@ -89,10 +89,10 @@ glm::vec3 SampleShader::shade(int sx, int sy, float footprint) const {
     const std::size_t i = g_.index(sx, sy);
     const std::uint16_t mat = g_.material[i];
     glm::vec3 colour;
-    if (mat == render::GBuffer::kNoMaterial) {
+    if (mat == scene::GBuffer::kNoMaterial) {
         colour = scene_.background;
     } else {
-        const render::Material& m = scene_.materials[mat];
+        const scene::Material& m = scene_.materials[mat];
         glm::vec3 albedo = m.diffuse;
         const int layer = g_.layer[i];
         if (layer >= 0) {

@@ -42,8 +42,8 @@ Section runDeferredExperiment(const DeferredExperimentOptions& o) {
     io::makeDirectories((out / "images").string());
     io::makeDirectories((out / "data").string());
     const int w = o.quick ? 256 : o.width, h = o.quick ? 192 : o.height, reps = o.quick ? 1 : std::max(1, o.repetitions);
-    const render::Scene scene = render::loadScene(o.scene);
-    const render::View& view = scene.view(o.view);
+    const scene::Scene scene = scene::loadScene(o.scene);
+    const scene::View& view = scene.view(o.view);
     render::Renderer renderer({o.device, false});
     deferred::ShadingParams stalled = o.params.shading;
     stalled.stall = o.stall;
@@ -70,7 +70,7 @@ Section runDeferredExperiment(const DeferredExperimentOptions& o) {
     for (int m = 1; m <= 4; ++m) {
         say(fmt::format("deferred: {} {}x{} m = {} on {}", o.scene, w, h, m, renderer.device().name));
         std::vector<double> gpu;
-        render::GBuffer g;
+        scene::GBuffer g;
         for (int r = 0; r < reps; ++r) {
             g = renderer.renderGBuffer(scene, view, w, h, m);
             gpu.push_back(g.gpuMs);

@@ -135,12 +135,12 @@ struct Renderer::Impl {
             stages.emplace_back(vk::PipelineShaderStageCreateFlags(), vk::ShaderStageFlagBits::eFragment, *forwardFrag, "main");
             colorFormats = {vk::Format::eR8G8B8A8Unorm};
         }
-        const vk::VertexInputBindingDescription binding(0, sizeof(Vertex), vk::VertexInputRate::eVertex);
+        const vk::VertexInputBindingDescription binding(0, sizeof(scene::Vertex), vk::VertexInputRate::eVertex);
         const std::array<vk::VertexInputAttributeDescription, 4> attributes = {
-            vk::VertexInputAttributeDescription(0, 0, vk::Format::eR32G32B32Sfloat, offsetof(Vertex, position)),
-            vk::VertexInputAttributeDescription(1, 0, vk::Format::eR32G32B32Sfloat, offsetof(Vertex, normal)),
-            vk::VertexInputAttributeDescription(2, 0, vk::Format::eR32G32Sfloat, offsetof(Vertex, uv)),
-            vk::VertexInputAttributeDescription(3, 0, vk::Format::eR32Uint, offsetof(Vertex, material))};
+            vk::VertexInputAttributeDescription(0, 0, vk::Format::eR32G32B32Sfloat, offsetof(scene::Vertex, position)),
+            vk::VertexInputAttributeDescription(1, 0, vk::Format::eR32G32B32Sfloat, offsetof(scene::Vertex, normal)),
+            vk::VertexInputAttributeDescription(2, 0, vk::Format::eR32G32Sfloat, offsetof(scene::Vertex, uv)),
+            vk::VertexInputAttributeDescription(3, 0, vk::Format::eR32Uint, offsetof(scene::Vertex, material))};
         const vk::PipelineVertexInputStateCreateInfo vertexInput({}, binding, attributes);
         const vk::PipelineInputAssemblyStateCreateInfo assembly({}, vk::PrimitiveTopology::eTriangleList);
         const vk::PipelineViewportStateCreateInfo viewport({}, 1, nullptr, 1, nullptr);
@@ -165,11 +165,11 @@ struct Renderer::Impl {
     }
 
     // Uploads the scene's texture array (a 1x1 white layer when it has none).
-    vkx::Image uploadTextures(const TextureArray& t) {
-        TextureArray white;
+    vkx::Image uploadTextures(const scene::TextureArray& t) {
+        scene::TextureArray white;
         white.size = 1;
         white.layers.push_back({ImageRgba8(1, 1, Rgba8{255, 255, 255, 255})});
-        const TextureArray& tex = t.layers.empty() ? white : t;
+        const scene::TextureArray& tex = t.layers.empty() ? white : t;
         const auto layers = std::uint32_t(tex.layers.size()), levels = std::uint32_t(tex.levelCount());
         vk::DeviceSize total = 0;
         for (std::uint32_t l = 0; l < levels; ++l) total += vk::DeviceSize(tex.layers[0][l].pixelCount()) * 4 * layers;
@@ -209,7 +209,7 @@ struct Renderer::Impl {
     };
 
     // One draw of `scene` from `cam` into width x height attachments; returns their contents.
-    Result draw(const Scene& scene, const CameraSetup& cam, Pass pass, vk::Format depthFormat,
+    Result draw(const scene::Scene& scene, const scene::CameraSetup& cam, Pass pass, vk::Format depthFormat,
                 const std::vector<ColorTarget>& targets, float derivativeScale) {
         scene.validate();
         const auto w = std::uint32_t(cam.bufferWidth()), h = std::uint32_t(cam.bufferHeight());
@@ -218,7 +218,7 @@ struct Renderer::Impl {
         for (const auto& t : targets) ctx.requireAttachmentFormat(t.format, false, "a colour attachment");
 
         // Scene data.
-        vkx::Buffer vertices = ctx.uploadBuffer(scene.vertices.data(), scene.vertices.size() * sizeof(Vertex),
+        vkx::Buffer vertices = ctx.uploadBuffer(scene.vertices.data(), scene.vertices.size() * sizeof(scene::Vertex),
                                                 vk::BufferUsageFlagBits::eVertexBuffer);
         vkx::Buffer indices = ctx.uploadBuffer(scene.indices.data(), scene.indices.size() * sizeof(std::uint32_t),
                                                vk::BufferUsageFlagBits::eIndexBuffer);
@@ -226,7 +226,7 @@ struct Renderer::Impl {
         for (const auto& m : scene.materials) materials.push_back({glm::vec4(m.diffuse, 1.0f), glm::ivec4(m.textureLayer, 0, 0, 0)});
         std::vector<LightData> lights;
         for (const auto& l : scene.lights)
-            lights.push_back({glm::vec4(l.vector, l.type == Light::Type::Point ? 1.0f : 0.0f), glm::vec4(l.color, 0.0f)});
+            lights.push_back({glm::vec4(l.vector, l.type == scene::Light::Type::Point ? 1.0f : 0.0f), glm::vec4(l.color, 0.0f)});
         const auto lightCount = float(lights.size());
         if (lights.empty()) lights.push_back({});
         vkx::Buffer materialBuffer = ctx.uploadBuffer(materials.data(), materials.size() * sizeof(MaterialData),
@@ -339,11 +339,11 @@ const std::shared_ptr<vkx::Context>& Renderer::context() const { return impl_->s
 
 std::vector<std::string> Renderer::validationMessages() const { return impl_->ctx.validationMessages(); }
 
-DepthRender Renderer::renderDepth(const Scene& scene, const View& view, int width, int height, DepthFormat format,
+DepthRender Renderer::renderDepth(const scene::Scene& scene, const scene::View& view, int width, int height, DepthFormat format,
                                   int guard) {
     return guarded("rendering depth", [&] {
         DepthRender out;
-        out.camera = cameraSetup(view, width, height, guard);
+        out.camera = scene::cameraSetup(view, width, height, guard);
         const vk::Format f = vkDepthFormat(format);
         auto r = impl_->draw(scene, out.camera, Pass::Depth, f, {}, 1.0f);
         out.depth = depthFromBytes(r.depth.mapped, f, out.camera.bufferWidth(), out.camera.bufferHeight());
@@ -352,15 +352,15 @@ DepthRender Renderer::renderDepth(const Scene& scene, const View& view, int widt
     });
 }
 
-GBuffer Renderer::renderGBuffer(const Scene& scene, const View& view, int width, int height, int m) {
+scene::GBuffer Renderer::renderGBuffer(const scene::Scene& scene, const scene::View& view, int width, int height, int m) {
     if (m < 1 || m > 4) throw Error(fmt::format("G-buffer supersampling m = {} is not in 1..4", m));
     return guarded("rendering the G-buffer", [&] {
-        GBuffer g;
+        scene::GBuffer g;
         g.width = width;
         g.height = height;
         g.m = m;
         checkDimensions(width, height, "G-buffer size");
-        g.camera = cameraSetup(view, m * width, m * height, 0);
+        g.camera = scene::cameraSetup(view, m * width, m * height, 0);
         std::vector<ColorTarget> targets;
         const std::array<vk::ClearColorValue, 4> clears = {vk::ClearColorValue(0.0f, 0.0f, 0.0f, 0.0f),
                                                            vk::ClearColorValue(0.0f, 0.0f, 0.0f, 0.0f),
@@ -391,11 +391,11 @@ GBuffer Renderer::renderGBuffer(const Scene& scene, const View& view, int width,
     });
 }
 
-ColorRender Renderer::renderColor(const Scene& scene, const View& view, int width, int height, int scale) {
+ColorRender Renderer::renderColor(const scene::Scene& scene, const scene::View& view, int width, int height, int scale) {
     if (scale < 1 || scale > 16) throw Error(fmt::format("colour scale {} is not in 1..16", scale));
     return guarded("rendering colour", [&] {
         checkDimensions(width, height, "colour size");
-        const CameraSetup cam = cameraSetup(view, scale * width, scale * height, 0);
+        const scene::CameraSetup cam = scene::cameraSetup(view, scale * width, scale * height, 0);
         const glm::vec3 bg = glm::clamp(scene.background, 0.0f, 1.0f);
         auto r = impl_->draw(scene, cam, Pass::Forward, vk::Format::eD32Sfloat,
                              {{vk::Format::eR8G8B8A8Unorm, vk::ClearColorValue(bg.r, bg.g, bg.b, 1.0f), 4}}, 1.0f);
@@ -407,7 +407,7 @@ ColorRender Renderer::renderColor(const Scene& scene, const View& view, int widt
     });
 }
 
-void writeAaRenderSet(Renderer& renderer, const Scene& scene, const View& view, int width, int height,
+void writeAaRenderSet(Renderer& renderer, const scene::Scene& scene, const scene::View& view, int width, int height,
                       const std::string& dir, const std::string& name) {
     std::vector<ImageRgba8> images;  // all rendered before any is written
     for (int scale : {1, 2, 4, 8}) images.push_back(renderer.renderColor(scene, view, width, height, scale).color);

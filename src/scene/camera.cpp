@@ -10,7 +10,7 @@
 #include "ssfx/core/error.hpp"
 #include "ssfx/io/camera.hpp"
 
-namespace ssfx::render {
+namespace ssfx::scene {
 
 glm::mat4 CameraSetup::viewProjectionF() const { return glm::mat4(projection * view); }
 
@@ -93,4 +93,4 @@ std::string cameraSetupJson(const CameraSetup& s) {
     return j.dump(2) + "\n";
 }
 
-}  // namespace ssfx::render
+}  // namespace ssfx::scene

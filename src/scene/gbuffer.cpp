@@ -3,7 +3,7 @@
 
 #include "ssfx/io/exr.hpp"
 
-namespace ssfx::render {
+namespace ssfx::scene {
 
 void writeGBufferExr(const std::string& path, const GBuffer& g) {
     const int w = g.sampleWidth(), h = g.sampleHeight();
@@ -26,4 +26,4 @@ void writeGBufferExr(const std::string& path, const GBuffer& g) {
     io::writeExr(path, channels);
 }
 
-}  // namespace ssfx::render
+}  // namespace ssfx::scene

@@ -25,7 +25,7 @@
 #include "ssfx/scene/camera.hpp"
 #include "ssfx/scene/scene.hpp"
 
-namespace ssfx::render {
+namespace ssfx::scene {
 
 namespace fs = std::filesystem;
 using Json = nlohmann::ordered_json;  // views keep the file's order
@@ -483,4 +483,4 @@ Scene sceneFromJson(const Json& j, const std::string& path, const ModelLoader& l
 
 }  // namespace
 
-}  // namespace ssfx::render
+}  // namespace ssfx::scene

@@ -7,7 +7,7 @@
 
 #include "ssfx/scene/scene.hpp"
 
-namespace ssfx::render {
+namespace ssfx::scene {
 
 namespace {
 
@@ -250,4 +250,4 @@ Scene atrium() {
     return s;
 }
 
-}  // namespace ssfx::render
+}  // namespace ssfx::scene

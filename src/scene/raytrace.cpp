@@ -8,7 +8,7 @@
 
 #include "ssfx/core/error.hpp"
 
-namespace ssfx::render {
+namespace ssfx::scene {
 
 namespace {
 
@@ -85,4 +85,4 @@ std::unique_ptr<ao::RayScene> cameraSpaceRayScene(const Scene& scene, const Came
     return std::make_unique<EmbreeScene>(scene, camera);
 }
 
-}  // namespace ssfx::render
+}  // namespace ssfx::scene

@@ -9,7 +9,7 @@
 #include "ssfx/core/error.hpp"
 #include "ssfx/scene/scene.hpp"
 
-namespace ssfx::render {
+namespace ssfx::scene {
 
 const View& Scene::view(const std::string& viewName) const {
     for (const auto& v : views)
@@ -119,4 +119,4 @@ Scene loadScene(const std::string& nameOrPath) {
     return importModel(nameOrPath);
 }
 
-}  // namespace ssfx::render
+}  // namespace ssfx::scene

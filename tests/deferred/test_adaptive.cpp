@@ -59,7 +59,7 @@ TEST(Metrics, FlatWindowsNeedOneSampleAndEdgesMore) {
 }
 
 TEST(Sampler, ConstantTextureAndAnisotropicFootprints) {
-    render::TextureArray t;
+    scene::TextureArray t;
     addTextureLayer(t, ImageRgba8(16, 16, Rgba8{51, 102, 153, 255}));
     ImageRgba8 columns(16, 16), rows(16, 16);
     for (int y = 0; y < 16; ++y)
@@ -94,15 +94,15 @@ TEST(Sampler, ConstantTextureAndAnisotropicFootprints) {
 }
 
 // A hand-made G-buffer: a textured plane facing the camera whose depth changes along x.
-render::GBuffer handMade(const render::Scene& scene, int w, int h, int m, bool slanted) {
-    render::GBuffer g;
+scene::GBuffer handMade(const scene::Scene& scene, int w, int h, int m, bool slanted) {
+    scene::GBuffer g;
     g.width = w;
     g.height = h;
     g.m = m;
-    render::View v;
+    scene::View v;
     v.eye = {0, 1, 5};
     v.target = {0, 1, 0};
-    g.camera = render::cameraSetup(v, m * w, m * h);
+    g.camera = scene::cameraSetup(v, m * w, m * h);
     const int sw = m * w, sh = m * h;
     const std::size_t n = std::size_t(sw) * std::size_t(sh);
     g.depth = ImageF(sw, sh);
@@ -121,9 +121,9 @@ render::GBuffer handMade(const render::Scene& scene, int w, int h, int m, bool s
 }
 
 TEST(Adaptive, AllSamplesReproduceTheReferenceExactly) {
-    const render::Scene scene = render::atrium();
+    const scene::Scene scene = scene::atrium();
     for (int m = 2; m <= 4; ++m) {
-        const render::GBuffer g = handMade(scene, 6, 5, m, true);
+        const scene::GBuffer g = handMade(scene, 6, 5, m, true);
         AdaptiveParams p;
         p.cDepth = 1e9f;  // every window has depth variance: k = m^2 everywhere
         const auto a = adaptiveSupersampling(scene, g, p);
@@ -137,8 +137,8 @@ TEST(Adaptive, AllSamplesReproduceTheReferenceExactly) {
 }
 
 TEST(Adaptive, FlatRegionsShadeOneSample) {
-    const render::Scene scene = render::atrium();
-    const render::GBuffer g = handMade(scene, 8, 6, 4, false);
+    const scene::Scene scene = scene::atrium();
+    const scene::GBuffer g = handMade(scene, 8, 6, 4, false);
     AdaptiveParams p;
     p.cShading = 0.0f;  // the checker's own contrast would trigger the shading metric
     const auto a = adaptiveSupersampling(scene, g, p);
@@ -168,8 +168,8 @@ TEST(Adaptive, BadParametersAreRejected) {
     p = {};
     p.shading.shininess = std::nanf("");
     EXPECT_THROW(validate(p), Error);
-    const render::Scene scene = render::atrium();
-    render::GBuffer g = handMade(scene, 4, 4, 2, false);
+    const scene::Scene scene = scene::atrium();
+    scene::GBuffer g = handMade(scene, 4, 4, 2, false);
     g.normal.pop_back();
     EXPECT_THROW(adaptiveSupersampling(scene, g, {}), Error);
     g = handMade(scene, 4, 4, 2, false);
@@ -181,8 +181,8 @@ TEST(Adaptive, BadParametersAreRejected) {
 // the same bytes for any thread count, every parameter outside its range refused, a NaN in
 // the G-buffer refused with an error naming the sample.
 TEST_F(RenderTest, EveryDeferredMethodIsDeterministicAndRefusesBadInput) {
-    const render::Scene scene = render::cornellBox();
-    const render::GBuffer g = renderer().renderGBuffer(scene, scene.views.at(0).second, 40, 70, 2);  // several row blocks
+    const scene::Scene scene = scene::cornellBox();
+    const scene::GBuffer g = renderer().renderGBuffer(scene, scene.views.at(0).second, 40, 70, 2);  // several row blocks
     for (const deferred::DeferredMethodInfo& m : deferred::deferredMethods()) {
         SCOPED_TRACE(std::string(m.id));
         const deferred::DeferredParams p = m.defaults();
@@ -196,7 +196,7 @@ TEST_F(RenderTest, EveryDeferredMethodIsDeterministicAndRefusesBadInput) {
             EXPECT_THROW(deferred::setParam(m, q, row.name, std::nan("")), Error) << row.name;
         }
         for (int plane = 0; plane < 3; ++plane) {
-            render::GBuffer bad = g;
+            scene::GBuffer bad = g;
             const std::size_t i = bad.index(7, 5);
             if (plane == 0) bad.depth.data()[i] = std::nanf("");
             if (plane == 1) bad.normal[i].y = std::nanf("");
@@ -213,8 +213,8 @@ TEST_F(RenderTest, EveryDeferredMethodIsDeterministicAndRefusesBadInput) {
 }
 
 TEST_F(RenderTest, AdaptiveOnARenderedGBufferIsCloseToTheReferenceWithFewerSamples) {
-    const render::Scene scene = render::atrium();
-    const render::GBuffer g = renderer().renderGBuffer(scene, scene.view("nave"), 128, 96, 4);
+    const scene::Scene scene = scene::atrium();
+    const scene::GBuffer g = renderer().renderGBuffer(scene, scene.view("nave"), 128, 96, 4);
     const AdaptiveParams p;
     const auto a1 = adaptiveSupersampling(scene, g, p, Exec{1});
     const auto a2 = adaptiveSupersampling(scene, g, p, Exec{2});

@@ -7,8 +7,8 @@
 #include <cstdio>
 
 int main() {
-    const auto scene = ssfx::render::cornellBox();
-    const auto cam = ssfx::render::cameraSetup(scene.view("front"), 64, 64, 8);
+    const auto scene = ssfx::scene::cornellBox();
+    const auto cam = ssfx::scene::cameraSetup(scene.view("front"), 64, 64, 8);
     const auto order = ssfx::deferred::ditherOrder(4);
     std::printf("consumer_render: %zu triangles, buffer %dx%d, %zu samples in dither order\n", scene.triangleCount(),
                 cam.bufferWidth(), cam.bufferHeight(), order.size());

@@ -13,9 +13,9 @@
 namespace ssfx::test {
 namespace {
 
-using render::Scene;
-using render::Vertex;
-using render::View;
+using scene::Scene;
+using scene::Vertex;
+using scene::View;
 
 // Camera at the origin looking down -z (world = camera space), 60 degrees.
 View originView(double zFar = INFINITY) {
@@ -151,7 +151,7 @@ TEST_F(RenderTest, SphereDepthAndNormalsMatchTheAnalyticSphere) {
             for (int x = 0; x < 96; ++x) {
                 if (d.depth(x, y) == 1.0f) {
                     if (f == 2) {
-                        EXPECT_EQ(g.material[g.index(x, y)], render::GBuffer::kNoMaterial);
+                        EXPECT_EQ(g.material[g.index(x, y)], scene::GBuffer::kNoMaterial);
                     }
                     continue;
                 }
@@ -255,7 +255,7 @@ TEST_F(RenderTest, SurfacesAreTwoSidedWithNormalsTowardsTheCamera) {
 }
 
 TEST_F(RenderTest, RenderingIsDeterministic) {
-    const Scene s = render::atrium();
+    const Scene s = scene::atrium();
     const auto a = renderer().renderColor(s, s.view("colonnade"), 96, 64);
     const auto b = renderer().renderColor(s, s.view("colonnade"), 96, 64);
     EXPECT_EQ(a.color, b.color);
@@ -265,8 +265,8 @@ TEST_F(RenderTest, RenderingIsDeterministic) {
 }
 
 TEST_F(RenderTest, BuiltInScenesRender) {
-    for (const auto& name : render::builtinScenes()) {
-        const Scene s = render::builtinScene(name);
+    for (const auto& name : scene::builtinScenes()) {
+        const Scene s = scene::builtinScene(name);
         for (const auto& [viewName, view] : s.views) {
             SCOPED_TRACE(name + "/" + viewName);
             const auto d = renderer().renderDepth(s, view, 64, 36, DepthFormat::D32F);
@@ -276,7 +276,7 @@ TEST_F(RenderTest, BuiltInScenesRender) {
         }
     }
     // The atrium's nave: sky at the top centre, floor at the bottom, textures in the G-buffer.
-    const Scene a = render::atrium();
+    const Scene a = scene::atrium();
     const auto d = renderer().renderDepth(a, a.view("nave"), 96, 54);
     EXPECT_EQ(d.depth(48, 1), 1.0f);
     EXPECT_LT(d.depth(48, 52), 1.0f);
@@ -291,7 +291,7 @@ TEST_F(RenderTest, NothingDrawnIsSkyForSaoWithAFiniteFarPlane) {
     // background was a wall at zFar that occluded itself along the roof line (922 pixels off
     // by more than 8 levels at 480x270). Now it is sky: A = 1 there, and the two far planes
     // agree on the geometry within the D32F precision at the nave's distances.
-    const Scene a = render::atrium();
+    const Scene a = scene::atrium();
     View finite = a.view("nave"), infinite = finite;
     finite.zFar = 60, infinite.zFar = INFINITY;
     const int w = 192, h = 108, g = 16;
@@ -314,7 +314,7 @@ TEST_F(RenderTest, NothingDrawnIsSkyForSaoWithAFiniteFarPlane) {
 }
 
 TEST_F(RenderTest, BadRequestsAreRefused) {
-    const Scene s = render::cornellBox();
+    const Scene s = scene::cornellBox();
     EXPECT_THROW(renderer().renderDepth(s, s.view("front"), 0, 10), Error);
     EXPECT_THROW(renderer().renderDepth(s, s.view("front"), 100000, 100000), Error);
     EXPECT_THROW(renderer().renderDepth(s, s.view("front"), 20000, 20), Error);  // over the device's 2-D limit

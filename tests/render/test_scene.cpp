@@ -36,10 +36,10 @@ double clipDepth(const glm::dmat4& p, double z) {
 }
 
 TEST(RenderCamera, ProjectionMapsNearToZeroAndFarToOne) {
-    const auto finite = render::perspective(1.0, 1.5, 0.2, 50.0);
+    const auto finite = scene::perspective(1.0, 1.5, 0.2, 50.0);
     EXPECT_NEAR(clipDepth(finite, -0.2), 0.0, 1e-15);
     EXPECT_NEAR(clipDepth(finite, -50.0), 1.0, 1e-15);
-    const auto infinite = render::perspective(1.0, 1.5, 0.2, INFINITY);
+    const auto infinite = scene::perspective(1.0, 1.5, 0.2, INFINITY);
     EXPECT_NEAR(clipDepth(infinite, -0.2), 0.0, 1e-15);
     EXPECT_NEAR(clipDepth(infinite, -1e12), 1.0, 1e-12);
     // It is the inverse of the SAO reconstruction (sao.md eq. 2) for both planes.
@@ -52,41 +52,41 @@ TEST(RenderCamera, ProjectionMapsNearToZeroAndFarToOne) {
     // y down: a point above the axis lands in the upper half (y_ndc < 0).
     const glm::dvec4 up = finite * glm::dvec4(0.0, 1.0, -5.0, 1.0);
     EXPECT_LT(up.y / up.w, 0.0);
-    EXPECT_THROW(render::perspective(1.0, 1.0, 0.0, 10.0), Error);
-    EXPECT_THROW(render::perspective(1.0, 1.0, 1.0, 1.0), Error);
-    EXPECT_THROW(render::perspective(4.0, 1.0, 1.0, 10.0), Error);
+    EXPECT_THROW(scene::perspective(1.0, 1.0, 0.0, 10.0), Error);
+    EXPECT_THROW(scene::perspective(1.0, 1.0, 1.0, 1.0), Error);
+    EXPECT_THROW(scene::perspective(4.0, 1.0, 1.0, 10.0), Error);
 }
 
 TEST(RenderCamera, LookAtAndGuardBand) {
-    render::View v;
+    scene::View v;
     v.eye = {1, 2, 3};
     v.target = {1, 2, -7};
-    const auto view = render::lookAt(v.eye, v.target, v.up);
+    const auto view = scene::lookAt(v.eye, v.target, v.up);
     const glm::dvec4 t = view * glm::dvec4(1, 2, -7, 1);
     EXPECT_NEAR(t.x, 0.0, 1e-12);
     EXPECT_NEAR(t.y, 0.0, 1e-12);
     EXPECT_NEAR(t.z, -10.0, 1e-12);
-    const auto s = render::cameraSetup(v, 200, 100, 50);
+    const auto s = scene::cameraSetup(v, 200, 100, 50);
     EXPECT_EQ(s.bufferWidth(), 300);
     EXPECT_EQ(s.bufferHeight(), 200);
     // Same pixel size: tan(fov'/2) / (h + 2g) = tan(fov/2) / h.
     EXPECT_NEAR(std::tan(s.camera.fovY / 2) / 200.0, std::tan(std::numbers::pi / 6) / 100.0, 1e-15);
-    EXPECT_THROW(render::lookAt({0, 0, 0}, {0, 5, 0}, {0, 1, 0}), Error);
-    EXPECT_THROW(render::cameraSetup(v, 0, 10), Error);
-    EXPECT_THROW(render::cameraSetup(v, 10, 10, -1), Error);
+    EXPECT_THROW(scene::lookAt({0, 0, 0}, {0, 5, 0}, {0, 1, 0}), Error);
+    EXPECT_THROW(scene::cameraSetup(v, 0, 10), Error);
+    EXPECT_THROW(scene::cameraSetup(v, 10, 10, -1), Error);
     // camera.json is readable by the AO tools.
-    const Camera back = io::parseCameraJson(render::cameraSetupJson(s), "camera.json");
+    const Camera back = io::parseCameraJson(scene::cameraSetupJson(s), "camera.json");
     EXPECT_NEAR(back.fovY, s.camera.fovY, 1e-9);
     EXPECT_EQ(back.zNear, s.camera.zNear);
     EXPECT_TRUE(std::isinf(back.zFar));
 }
 
 TEST(RenderScenes, BuiltInScenesAreWellFormed) {
-    const auto cornell = render::cornellBox();
+    const auto cornell = scene::cornellBox();
     EXPECT_NO_THROW(cornell.validate());
     EXPECT_EQ(cornell.triangleCount(), 34u);  // 5 walls (10) + two boxes (24)
     EXPECT_EQ(cornell.materials.size(), 3u);
-    const auto a = render::atrium();
+    const auto a = scene::atrium();
     EXPECT_NO_THROW(a.validate());
     EXPECT_GT(a.triangleCount(), 10000u);
     EXPECT_GE(a.materials.size(), 6u);
@@ -98,7 +98,7 @@ TEST(RenderScenes, BuiltInScenesAreWellFormed) {
     EXPECT_NEAR(lo.x, -10.0f, 1e-4f);
     EXPECT_NEAR(hi.x, 10.0f, 1e-4f);
     EXPECT_THROW(a.view("nope"), Error);
-    EXPECT_THROW(render::builtinScene("nope"), Error);
+    EXPECT_THROW(scene::builtinScene("nope"), Error);
     // Mips are 2x2 box filters: the checker's 1x1 level is its mean.
     const auto& top = a.textures.layers[0].back()(0, 0);
     EXPECT_NEAR(int(top.r), (225 + 40) / 2, 1);
@@ -116,7 +116,7 @@ TEST(RenderImport, ObjWithMaterialAndTexture) {
               "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
               "usemtl red\nf 1/1 2/2 3/3\n"
               "usemtl tex\nf 1/1 3/3 4/4\n");
-    const auto s = render::importModel((dir / "m.obj").string(), 2.0);
+    const auto s = scene::importModel((dir / "m.obj").string(), 2.0);
     EXPECT_EQ(s.triangleCount(), 2u);
     ASSERT_EQ(s.textures.layers.size(), 1u);
     EXPECT_EQ(s.textures.size, 4);  // power of two covering 4x2
@@ -156,7 +156,7 @@ TEST(RenderImport, GltfWithEmbeddedBuffer) {
     {"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [0, 0, 0], "max": [1, 1, 0]},
     {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"}]
 })");
-    const auto s = render::importModel((dir / "t.gltf").string());
+    const auto s = scene::importModel((dir / "t.gltf").string());
     ASSERT_EQ(s.triangleCount(), 1u);
     const auto [lo, hi] = s.bounds();
     EXPECT_EQ(lo, glm::vec3(0.0f, 0.0f, -3.0f));  // the node's transform is applied
@@ -171,12 +171,12 @@ TEST(RenderImport, SceneFileNamesModelLightsAndViews) {
     writeText(dir / "s.json", R"({"model": "models/tri.obj", "scale": 3, "ambient": [0.1, 0.2, 0.3],
       "lights": [{"type": "point", "position": [0, 2, 0], "color": [5, 5, 5]}],
       "views": {"b": {"eye": [0, 0, 5], "target": [0, 0, 0]}, "a": {"eye": [1, 1, 5], "target": [0, 0, 0], "z_far": 30}}})");
-    const auto s = render::loadScene((dir / "s.json").string());
+    const auto s = scene::loadScene((dir / "s.json").string());
     EXPECT_EQ(s.name, "s");
     EXPECT_EQ(s.bounds().second, glm::vec3(3.0f, 3.0f, 0.0f));
     EXPECT_EQ(s.ambient, glm::vec3(0.1f, 0.2f, 0.3f));
     ASSERT_EQ(s.lights.size(), 1u);
-    EXPECT_EQ(s.lights[0].type, render::Light::Type::Point);
+    EXPECT_EQ(s.lights[0].type, scene::Light::Type::Point);
     ASSERT_EQ(s.views.size(), 2u);
     EXPECT_EQ(s.views[0].first, "b");  // the file's order
     EXPECT_EQ(s.view("a").zFar, 30.0);
@@ -185,31 +185,31 @@ TEST(RenderImport, SceneFileNamesModelLightsAndViews) {
 
 TEST(RenderImport, BadInputsGiveClearErrors) {
     const fs::path dir = scratch("bad");
-    EXPECT_NE(errorOf([&] { render::loadScene((dir / "missing.obj").string()); }).find("no such file"), std::string::npos);
-    EXPECT_NE(errorOf([&] { render::loadScene("nonexistent-builtin"); }).find("not a built-in scene"), std::string::npos);
+    EXPECT_NE(errorOf([&] { scene::loadScene((dir / "missing.obj").string()); }).find("no such file"), std::string::npos);
+    EXPECT_NE(errorOf([&] { scene::loadScene("nonexistent-builtin"); }).find("not a built-in scene"), std::string::npos);
     writeText(dir / "corrupt.gltf", "{\"asset\": {\"version\": \"2.0\"}, \"meshes\": [ {\"primitives\": [");
-    EXPECT_NE(errorOf([&] { render::importModel((dir / "corrupt.gltf").string()); }).find("corrupt.gltf"), std::string::npos);
+    EXPECT_NE(errorOf([&] { scene::importModel((dir / "corrupt.gltf").string()); }).find("corrupt.gltf"), std::string::npos);
     writeText(dir / "garbage.obj", "this is not an OBJ file\n\x01\x02\x03");
-    EXPECT_NE(errorOf([&] { render::importModel((dir / "garbage.obj").string()); }).find("garbage.obj"), std::string::npos);
+    EXPECT_NE(errorOf([&] { scene::importModel((dir / "garbage.obj").string()); }).find("garbage.obj"), std::string::npos);
     writeText(dir / "notex.mtl", "newmtl t\nmap_Kd missing.png\n");
     writeText(dir / "notex.obj", "mtllib notex.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl t\nf 1 2 3\n");
-    EXPECT_NE(errorOf([&] { render::importModel((dir / "notex.obj").string()); }).find("missing.png"), std::string::npos);
+    EXPECT_NE(errorOf([&] { scene::importModel((dir / "notex.obj").string()); }).find("missing.png"), std::string::npos);
     writeText(dir / "badtex.png", "not a png");
     writeText(dir / "badtex.mtl", "newmtl t\nmap_Kd badtex.png\n");
     writeText(dir / "badtex.obj", "mtllib badtex.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl t\nf 1 2 3\n");
-    EXPECT_NE(errorOf([&] { render::importModel((dir / "badtex.obj").string()); }).find("cannot decode"), std::string::npos);
-    EXPECT_NE(errorOf([&] { render::importModel((dir / "badtex.obj").string(), -1.0); }).find("scale"), std::string::npos);
+    EXPECT_NE(errorOf([&] { scene::importModel((dir / "badtex.obj").string()); }).find("cannot decode"), std::string::npos);
+    EXPECT_NE(errorOf([&] { scene::importModel((dir / "badtex.obj").string(), -1.0); }).find("scale"), std::string::npos);
     writeText(dir / "s1.json", R"({"model": "tri.obj", "camera": 1})");
-    EXPECT_NE(errorOf([&] { render::loadScene((dir / "s1.json").string()); }).find("unknown key 'camera'"), std::string::npos);
+    EXPECT_NE(errorOf([&] { scene::loadScene((dir / "s1.json").string()); }).find("unknown key 'camera'"), std::string::npos);
     writeText(dir / "s2.json", R"({"scale": 1})");
-    EXPECT_NE(errorOf([&] { render::loadScene((dir / "s2.json").string()); }).find("'model'"), std::string::npos);
+    EXPECT_NE(errorOf([&] { scene::loadScene((dir / "s2.json").string()); }).find("'model'"), std::string::npos);
     writeText(dir / "tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
     writeText(dir / "s3.json", R"({"model": "tri.obj", "views": {"v": {"eye": [0, 0], "target": [0, 0, 0]}}})");
-    EXPECT_NE(errorOf([&] { render::loadScene((dir / "s3.json").string()); }).find("'eye'"), std::string::npos);
+    EXPECT_NE(errorOf([&] { scene::loadScene((dir / "s3.json").string()); }).find("'eye'"), std::string::npos);
     writeText(dir / "s4.json", R"({"model": "tri.obj", "lights": [{"type": "spot"}]})");
-    EXPECT_NE(errorOf([&] { render::loadScene((dir / "s4.json").string()); }).find("spot"), std::string::npos);
+    EXPECT_NE(errorOf([&] { scene::loadScene((dir / "s4.json").string()); }).find("spot"), std::string::npos);
     writeText(dir / "s5.json", "{not json");
-    EXPECT_NE(errorOf([&] { render::loadScene((dir / "s5.json").string()); }).find("not valid JSON"), std::string::npos);
+    EXPECT_NE(errorOf([&] { scene::loadScene((dir / "s5.json").string()); }).find("not valid JSON"), std::string::npos);
     // Wrong JSON types: the file and the field (a JSON pointer), never a raw library message;
     // unknown keys inside views and lights are errors as at the top level.
     const std::pair<const char*, const char*> typeErrors[] = {
@@ -232,30 +232,30 @@ TEST(RenderImport, BadInputsGiveClearErrors) {
     };
     // A glTF with no meshes: says what is missing (Assimp gives no text of its own).
     writeText(dir / "empty.gltf", R"({"asset": {"version": "2.0"}, "scenes": [{"nodes": []}], "scene": 0})");
-    const std::string empty = errorOf([&] { render::importModel((dir / "empty.gltf").string()); });
+    const std::string empty = errorOf([&] { scene::importModel((dir / "empty.gltf").string()); });
     EXPECT_NE(empty.find("empty.gltf"), std::string::npos) << empty;
     EXPECT_EQ(empty.find("()"), std::string::npos) << empty;
     // Files that crash Debian's Assimp 5.2.5 (found by fuzz_gltf): an error naming the file,
     // and this process lives on (the importer runs in a child process).
     for (const char* crasher : {"gltf-assimp-null-mime.gltf", "gltf-assimp-bvh-overread.gltf"}) {
         const fs::path file = fs::path(SSFX_SOURCE_DIR) / "fuzz" / "regressions" / crasher;
-        const std::string m = errorOf([&] { render::importModel(file.string()); });
+        const std::string m = errorOf([&] { scene::importModel(file.string()); });
         EXPECT_NE(m.find(std::string("model '") + file.string() + "'"), std::string::npos) << m;
         EXPECT_TRUE(m.find("stopped abnormally") != std::string::npos || m.find("cannot import") != std::string::npos) << m;
     }
     // The format is the extension's; none, or one that no importer claims, is refused.
     writeText(dir / "tri_noext", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
-    EXPECT_NE(errorOf([&] { render::importModel((dir / "tri_noext").string()); }).find("no file extension"),
+    EXPECT_NE(errorOf([&] { scene::importModel((dir / "tri_noext").string()); }).find("no file extension"),
               std::string::npos);
     writeText(dir / "tri.xyzw", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
-    EXPECT_NE(errorOf([&] { render::importModel((dir / "tri.xyzw").string()); }).find("'.xyzw' is not a model format"),
+    EXPECT_NE(errorOf([&] { scene::importModel((dir / "tri.xyzw").string()); }).find("'.xyzw' is not a model format"),
               std::string::npos);
     writeText(dir / "inf.obj", "v 0 0 0\nv 1e39 0 0\nv 0 1 0\nf 1 2 3\n");
-    EXPECT_NE(errorOf([&] { render::importModel((dir / "inf.obj").string()); }).find("vertex 1 of mesh 0 has a non-finite"),
+    EXPECT_NE(errorOf([&] { scene::importModel((dir / "inf.obj").string()); }).find("vertex 1 of mesh 0 has a non-finite"),
               std::string::npos);
     for (const auto& [text, field] : typeErrors) {
         writeText(dir / "s6.json", text);
-        const std::string m = errorOf([&] { render::loadScene((dir / "s6.json").string()); });
+        const std::string m = errorOf([&] { scene::loadScene((dir / "s6.json").string()); });
         EXPECT_NE(m.find("s6.json"), std::string::npos) << m;
         EXPECT_NE(m.find(field), std::string::npos) << text << " -> " << m;
         EXPECT_EQ(m.find("[json.exception"), std::string::npos) << m;
@@ -265,14 +265,14 @@ TEST(RenderImport, BadInputsGiveClearErrors) {
 TEST(RenderImport, ModelFromMemory) {
     const std::string obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 3 4\n";
     const auto bytes = std::span(reinterpret_cast<const std::uint8_t*>(obj.data()), obj.size());
-    const auto s = render::importModelFromMemory(bytes, "obj", "mem", 2.0);
+    const auto s = scene::importModelFromMemory(bytes, "obj", "mem", 2.0);
     EXPECT_EQ(s.name, "mem");
     EXPECT_EQ(s.triangleCount(), 2u);
     EXPECT_EQ(s.bounds().second, glm::vec3(2.0f, 2.0f, 2.0f));
     // The same bytes from a file give the same scene.
     const fs::path dir = scratch("memory");
     writeText(dir / "mem.obj", obj);
-    const auto fromFile = render::importModel((dir / "mem.obj").string(), 2.0);
+    const auto fromFile = scene::importModel((dir / "mem.obj").string(), 2.0);
     ASSERT_EQ(fromFile.vertices.size(), s.vertices.size());
     for (std::size_t i = 0; i < fromFile.vertices.size(); ++i) EXPECT_EQ(fromFile.vertices[i].position, s.vertices[i].position);
     EXPECT_EQ(fromFile.indices, s.indices);
@@ -290,19 +290,19 @@ TEST(RenderImport, ModelFromMemory) {
         {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"},
         {"bufferView": 2, "componentType": 5126, "count": 3, "type": "VEC2"}]})";
     const std::string ext = errorOf([&] {
-        render::importModelFromMemory(std::span(reinterpret_cast<const std::uint8_t*>(textured.data()), textured.size()),
+        scene::importModelFromMemory(std::span(reinterpret_cast<const std::uint8_t*>(textured.data()), textured.size()),
                                       "gltf", "texmem");
     });
     EXPECT_NE(ext.find("model 'texmem'"), std::string::npos) << ext;
     EXPECT_NE(ext.find("far.png"), std::string::npos) << ext;
     EXPECT_NE(ext.find("embedded"), std::string::npos) << ext;
-    EXPECT_NE(errorOf([&] { render::importModelFromMemory({}, "obj", "none"); }).find("no bytes"), std::string::npos);
-    EXPECT_NE(errorOf([&] { render::importModelFromMemory(bytes, "../x", "bad"); }).find("file extension"),
+    EXPECT_NE(errorOf([&] { scene::importModelFromMemory({}, "obj", "none"); }).find("no bytes"), std::string::npos);
+    EXPECT_NE(errorOf([&] { scene::importModelFromMemory(bytes, "../x", "bad"); }).find("file extension"),
               std::string::npos);
-    EXPECT_NE(errorOf([&] { render::importModelFromMemory(bytes, "obj", "neg", 0.0); }).find("scale"), std::string::npos);
+    EXPECT_NE(errorOf([&] { scene::importModelFromMemory(bytes, "obj", "neg", 0.0); }).find("scale"), std::string::npos);
     const std::string junk = "\x01\x02 not a model";
     EXPECT_NE(errorOf([&] {
-                  render::importModelFromMemory(std::span(reinterpret_cast<const std::uint8_t*>(junk.data()), junk.size()),
+                  scene::importModelFromMemory(std::span(reinterpret_cast<const std::uint8_t*>(junk.data()), junk.size()),
                                                 "gltf", "junk");
               }).find("model 'junk'"),
               std::string::npos);
@@ -316,9 +316,9 @@ TEST(RenderImport, SceneTextWithAnyModelLoader) {
     const auto loader = [&](const std::string& path, double scale) {
         seen = path;
         seenScale = scale;
-        return render::cornellBox();
+        return scene::cornellBox();
     };
-    const auto s = render::parseSceneFile(R"({"model": "m/x.obj", "scale": 0.5,
+    const auto s = scene::parseSceneFile(R"({"model": "m/x.obj", "scale": 0.5,
         "views": {"v": {"eye": [0, 1, 4], "target": [0, 1, 0]}}})",
                                           "/some/dir/s.json", loader);
     EXPECT_EQ(fs::path(seen), fs::path("/some/dir/m/x.obj"));
@@ -326,16 +326,16 @@ TEST(RenderImport, SceneTextWithAnyModelLoader) {
     EXPECT_EQ(s.name, "s");
     ASSERT_EQ(s.views.size(), 1u);
     EXPECT_EQ(s.views[0].first, "v");
-    EXPECT_THROW(render::parseSceneFile("[1]", "/x.json", loader), Error);
+    EXPECT_THROW(scene::parseSceneFile("[1]", "/x.json", loader), Error);
 }
 
 TEST(RenderImport, SharedModelsLoad) {
     const auto assets = sharedDir("assets");
     if (!assets) GTEST_SKIP() << "../shared/assets is absent";
     const fs::path root = fs::path(SSFX_SOURCE_DIR) / "scenes";
-    const auto sponza = render::loadScene((root / "sponza.json").string());
+    const auto sponza = scene::loadScene((root / "sponza.json").string());
     EXPECT_EQ(sponza.triangleCount(), 66447u);  // SOURCE.md
-    const auto bunny = render::loadScene((root / "bunny.json").string());
+    const auto bunny = scene::loadScene((root / "bunny.json").string());
     EXPECT_EQ(bunny.triangleCount(), 69451u);
 }
 

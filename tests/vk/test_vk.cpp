@@ -202,7 +202,7 @@ TEST(VkShared, RendererAndComputeShareOneContext) {
     render::Renderer renderer(ctx);
     EXPECT_EQ(renderer.context().get(), ctx.get());
     EXPECT_EQ(renderer.device().name, ctx->info.name);
-    const render::Scene scene = render::builtinScene("cornell");
+    const scene::Scene scene = scene::builtinScene("cornell");
     const auto color = renderer.renderColor(scene, scene.views.at(0).second, 32, 24);
     EXPECT_EQ(color.color.width(), 32);
     AffineRun run(*ctx, 300);

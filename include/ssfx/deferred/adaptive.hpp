@@ -70,10 +70,10 @@ struct DeferredResult {
 
 //! The method. Where k > 1 and the first sample is textured, it is shaded again with the
 //! k-sample footprint so that k = m^2 gives exactly the reference (and counted).
-DeferredResult adaptiveSupersampling(const render::Scene& scene, const render::GBuffer& gbuffer,
+DeferredResult adaptiveSupersampling(const scene::Scene& scene, const scene::GBuffer& gbuffer,
                                      const AdaptiveParams& params, const Exec& exec = {});
 //! Brute force: every sample with the 1/m footprint, averaged in dither order.
-DeferredResult referenceSupersampling(const render::Scene& scene, const render::GBuffer& gbuffer,
+DeferredResult referenceSupersampling(const scene::Scene& scene, const scene::GBuffer& gbuffer,
                                       const ShadingParams& params, const Exec& exec = {});
 
 }  // namespace ssfx::deferred

@@ -18,7 +18,7 @@ struct DeferredMethodInfo : MethodDesc {
     DeferredParams (*defaults)();
     //! Throws ssfx::Error for a parameter outside its table's range.
     void (*validate)(const DeferredParams& params);
-    DeferredResult (*run)(const render::Scene& scene, const render::GBuffer& gbuffer, const DeferredParams& params,
+    DeferredResult (*run)(const scene::Scene& scene, const scene::GBuffer& gbuffer, const DeferredParams& params,
                           const Exec& exec);
 };
 

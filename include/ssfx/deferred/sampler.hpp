@@ -15,12 +15,12 @@ namespace ssfx::deferred {
 inline constexpr int kMaxAnisotropy = 16;  //!< the largest maxAnisotropy accepted (as GPUs' limit)
 
 //! Bilinear lookup in one mip level (texel centres at (i + 0.5) / size), repeat addressing.
-glm::vec4 textureBilinear(const render::TextureArray& t, int layer, int level, glm::vec2 uv);
+glm::vec4 textureBilinear(const scene::TextureArray& t, int layer, int level, glm::vec2 uv);
 //! Trilinear lookup at a level of detail (clamped to the mip chain).
-glm::vec4 textureLod(const render::TextureArray& t, int layer, glm::vec2 uv, float lod);
+glm::vec4 textureLod(const scene::TextureArray& t, int layer, glm::vec2 uv, float lod);
 //! Anisotropic lookup with explicit derivatives (du/dx, dv/dx) and (du/dy, dv/dy) in
 //! texture-coordinate units per pixel (of the footprint wanted). maxAnisotropy in [1, 16].
-glm::vec4 textureGrad(const render::TextureArray& t, int layer, glm::vec2 uv, glm::vec2 dx, glm::vec2 dy,
+glm::vec4 textureGrad(const scene::TextureArray& t, int layer, glm::vec2 uv, glm::vec2 dx, glm::vec2 dy,
                       int maxAnisotropy = kMaxAnisotropy);
 
 }  // namespace ssfx::deferred

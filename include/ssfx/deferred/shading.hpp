@@ -61,7 +61,7 @@ void validate(const ShadingParams& p);
 class SampleShader {
 public:
     //! Throws ssfx::Error when the G-buffer is empty or inconsistent, or the params are bad.
-    SampleShader(const render::Scene& scene, const render::GBuffer& gbuffer, const ShadingParams& params);
+    SampleShader(const scene::Scene& scene, const scene::GBuffer& gbuffer, const ShadingParams& params);
 
     //! The colour of G-buffer sample (sx, sy) for a sample standing for `footprint` (linear
     //! fraction of a final pixel: 1 = the whole pixel, 1/m = one of m x m samples); the
@@ -79,8 +79,8 @@ private:
         bool point;
         glm::vec3 vector, color;  // camera space: direction towards the light, or position
     };
-    const render::Scene& scene_;
-    const render::GBuffer& g_;
+    const scene::Scene& scene_;
+    const scene::GBuffer& g_;
     ShadingParams p_;
     Projection proj_;
     std::vector<LightC> lights_;

@@ -32,7 +32,7 @@ struct RendererOptions {
 
 struct DepthRender {
     ImageF depth;          //!< hardware depth in [0, 1] as stored by the format, guard band included
-    CameraSetup camera;
+    scene::CameraSetup camera;
     double gpuMs = 0;      //!< the draw, from timestamp queries
 };
 
@@ -60,12 +60,12 @@ public:
     std::vector<std::string> validationMessages() const;
 
     //! Depth of `view` at width x height plus a guard band of `guard` pixels on each side.
-    DepthRender renderDepth(const Scene& scene, const View& view, int width, int height,
+    DepthRender renderDepth(const scene::Scene& scene, const scene::View& view, int width, int height,
                             DepthFormat format = DepthFormat::D32F, int guard = 0);
     //! G-buffer at m x m supersampling (m = 1..4) of a width x height image.
-    GBuffer renderGBuffer(const Scene& scene, const View& view, int width, int height, int m);
+    scene::GBuffer renderGBuffer(const scene::Scene& scene, const scene::View& view, int width, int height, int m);
     //! Forward-shaded colour at (scale width) x (scale height).
-    ColorRender renderColor(const Scene& scene, const View& view, int width, int height, int scale = 1);
+    ColorRender renderColor(const scene::Scene& scene, const scene::View& view, int width, int height, int scale = 1);
 
 private:
     struct Impl;
@@ -75,7 +75,7 @@ private:
 //! The anti-aliasing evaluation's render set (ssfx/eval/quality.hpp) of one view: NAME.png at
 //! width x height and NAMEx2.png, NAMEx4.png, NAMEx8.png at 2, 4 and 8 times that size, all
 //! forward-shaded without anti-aliasing, written into `dir` (like the paper's sponza image).
-void writeAaRenderSet(Renderer& renderer, const Scene& scene, const View& view, int width, int height,
+void writeAaRenderSet(Renderer& renderer, const scene::Scene& scene, const scene::View& view, int width, int height,
                       const std::string& dir, const std::string& name);
 
 }  // namespace ssfx::render

@@ -15,7 +15,7 @@
 #include "ssfx/core/camera.hpp"
 #include "ssfx/scene/scene.hpp"
 
-namespace ssfx::render {
+namespace ssfx::scene {
 
 struct CameraSetup {
     int width = 0, height = 0;  //!< the image without guard band
@@ -48,4 +48,4 @@ CameraSetup cameraSetup(const View& view, int width, int height, int guard = 0);
 //! (row-major, as written).
 std::string cameraSetupJson(const CameraSetup& setup);
 
-}  // namespace ssfx::render
+}  // namespace ssfx::scene

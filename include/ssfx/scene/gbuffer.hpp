@@ -11,7 +11,7 @@
 #include "ssfx/core/image.hpp"
 #include "ssfx/scene/camera.hpp"
 
-namespace ssfx::render {
+namespace ssfx::scene {
 
 //! A G-buffer at m x m supersampling: every buffer is (m width) x (m height) samples,
 //! row-major, the final pixel (x, y) owning samples [m x, m x + m) x [m y, m y + m).
@@ -37,4 +37,4 @@ struct GBuffer {
 //! layer (-1: none) and Z (the D32F depth). Atomic (io::AtomicFile).
 void writeGBufferExr(const std::string& path, const GBuffer& g);
 
-}  // namespace ssfx::render
+}  // namespace ssfx::scene

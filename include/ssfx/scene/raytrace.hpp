@@ -9,10 +9,10 @@
 #include "ssfx/scene/camera.hpp"
 #include "ssfx/scene/scene.hpp"
 
-namespace ssfx::render {
+namespace ssfx::scene {
 
 //! The scene's triangles transformed (in double, stored as float) by the camera's view
 //! matrix, in an Embree BVH. Thread-safe for concurrent intersect() calls.
 std::unique_ptr<ao::RayScene> cameraSpaceRayScene(const Scene& scene, const CameraSetup& camera);
 
-}  // namespace ssfx::render
+}  // namespace ssfx::scene

@@ -20,7 +20,7 @@
 
 #include "ssfx/core/image.hpp"
 
-namespace ssfx::render {
+namespace ssfx::scene {
 
 struct Vertex {
     glm::vec3 position{0.0f};
@@ -123,4 +123,4 @@ Scene parseSceneFile(std::string_view text, const std::string& path, const Model
 //! A built-in name, a scene file (.json) or a model file.
 Scene loadScene(const std::string& nameOrPath);
 
-}  // namespace ssfx::render
+}  // namespace ssfx::scene
