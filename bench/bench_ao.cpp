@@ -7,15 +7,15 @@
 #include "ssfx/ao/alchemy.hpp"
 #include "ssfx/ao/sao.hpp"
 #include "ssfx/core/memory.hpp"
-#include "ssfx/eval/ao_scenes.hpp"
+#include "ssfx/scene/analytic.hpp"
 
 namespace {
 
 constexpr int kW = 1920, kH = 1080, kGuard = 192;
 
-const ssfx::eval::GeometryBuffer& room() {
+const ssfx::scene::GeometryBuffer& room() {
     static const auto g =
-        ssfx::eval::castGeometry(ssfx::eval::roomScene(), ssfx::Camera{}, kW + 2 * kGuard, kH + 2 * kGuard);
+        ssfx::scene::castGeometry(ssfx::scene::roomScene(), ssfx::Camera{}, kW + 2 * kGuard, kH + 2 * kGuard);
     return g;
 }
 

@@ -8,7 +8,7 @@
 
 #include "apps/ssfx/commands.hpp"
 #include "ssfx/ao/registry.hpp"
-#include "ssfx/eval/ao_scenes.hpp"
+#include "ssfx/scene/analytic.hpp"
 #include "ssfx/io/camera.hpp"
 #include "ssfx/io/exr.hpp"
 #include "ssfx/io/png.hpp"
@@ -79,7 +79,7 @@ void run(const AoOptions& o, const CLI::App& cmd) {
     const int guard = ao::guardBandOf(params);
     Camera cam;
     ImageF depth;
-    std::optional<eval::AnalyticScene> scene;
+    std::optional<scene::AnalyticScene> scene;
     std::unique_ptr<ao::RayScene> meshScene;  // a rendered scene's triangles (Embree)
     const bool analytic = o.scene == "corner" || o.scene == "room";
     if (!o.scene.empty() && !analytic) {
@@ -117,10 +117,10 @@ void run(const AoOptions& o, const CLI::App& cmd) {
             throw Error(fmt::format("{}: {}", o.depth, e.what()));
         }
     } else {
-        scene = eval::analyticSceneByName(o.scene);
+        scene = scene::analyticSceneByName(o.scene);
         const auto [w, h] = parseSize(o.size);
         cam.fovY = o.fovDeg * M_PI / 180.0;
-        depth = eval::castGeometry(*scene, cam, w + 2 * guard, h + 2 * guard, exec).depth;
+        depth = scene::castGeometry(*scene, cam, w + 2 * guard, h + 2 * guard, exec).depth;
     }
     if (!o.saveDepth.empty()) io::writeExr(o.saveDepth, depth.view(), "Z");
     if (!o.saveCamera.empty()) io::writeCameraJson(o.saveCamera, cam);

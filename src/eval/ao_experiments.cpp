@@ -12,7 +12,7 @@
 #include "ssfx/ao/alchemy.hpp"
 #include "ssfx/ao/raytraced.hpp"
 #include "ssfx/ao/sao.hpp"
-#include "ssfx/eval/ao_scenes.hpp"
+#include "ssfx/scene/analytic.hpp"
 #include "ssfx/eval/metrics.hpp"
 #include "ssfx/eval/plot.hpp"
 #include "ssfx/eval/timing.hpp"
@@ -49,7 +49,7 @@ ImageF difference(const ImageF& a, const ImageF& b) {
 }
 
 // Hardware depth of `g` stored in `format` (from the exact z, not from the float depth).
-ImageF depthIn(const GeometryBuffer& g, const Camera& cam, DepthFormat format) {
+ImageF depthIn(const scene::GeometryBuffer& g, const Camera& cam, DepthFormat format) {
     ImageF d(g.z.width(), g.z.height());
     for (int y = 0; y < d.height(); ++y)
         for (int x = 0; x < d.width(); ++x)
@@ -91,7 +91,7 @@ struct FlatMask {
     std::vector<char> flat;  //!< inner region, row-major
     int w = 0, h = 0, count = 0;
 };
-FlatMask flatPixels(const GeometryBuffer& g, const Camera& cam, int guard) {
+FlatMask flatPixels(const scene::GeometryBuffer& g, const Camera& cam, int guard) {
     const int W = g.z.width(), H = g.z.height();
     const Projection proj = ssfx::projection(cam, W, H);
     FlatMask m;
@@ -166,7 +166,7 @@ Block releasedComparison(const Context& c, const std::vector<AoRenderedScene>& e
     b.table.header = {"scene", "configuration", "radius (m)", "PSNR vs truth (dB)", "rms Laplacian, flat", "truth's",
                       "flat pixels"};
     for (const AoRenderedScene& e : entries) {
-        const GeometryBuffer g = castGeometry(*e.geometry, e.camera, aw + 2 * guard, ah + 2 * guard, o.exec);
+        const scene::GeometryBuffer g = scene::castGeometry(*e.geometry, e.camera, aw + 2 * guard, ah + 2 * guard, o.exec);
         const FlatMask flat = flatPixels(g, e.camera, guard);
         std::vector<std::pair<float, ImageF>> truths;  // by radius
         for (const Config& cfg : configs) {
@@ -272,7 +272,7 @@ Block zPrecisionBlock(const Context& c) {
 
 // Reconstructed-normal error (degrees) at each pixel whose 2x2 quad lies within one face of
 // the analytic geometry `g` (all hit, the same true normal, on the same plane), from `z`.
-std::vector<double> normalErrors(const GeometryBuffer& g, const ImageF& z, const Projection& proj, const Exec& exec) {
+std::vector<double> normalErrors(const scene::GeometryBuffer& g, const ImageF& z, const Projection& proj, const Exec& exec) {
     const int nw = z.width(), nh = z.height();
     const std::vector<ao::Vec3> n = ao::faceNormals(z.view(), proj, exec);
     std::vector<double> errs;
@@ -302,10 +302,10 @@ std::vector<double> normalErrors(const GeometryBuffer& g, const ImageF& z, const
 }
 
 // ---- Figure 4: normal precision ------------------------------------------------------
-Block normalPrecisionBlock(const Context& c, const AnalyticScene& room) {
+Block normalPrecisionBlock(const Context& c, const scene::AnalyticScene& room) {
     c.say("ao: normal precision (Figure 4)");
     const int nw = c.o.quick ? 320 : 1280, nh = c.o.quick ? 180 : 720;
-    const GeometryBuffer g = castGeometry(room, kCamera, nw, nh, c.o.exec);
+    const scene::GeometryBuffer g = scene::castGeometry(room, kCamera, nw, nh, c.o.exec);
     const Projection proj = ssfx::projection(kCamera, nw, nh);
     Block b;
     b.heading = "Normal precision (paper Figure 4)";
@@ -333,9 +333,9 @@ Block normalPrecisionBlock(const Context& c, const AnalyticScene& room) {
 std::vector<AoRenderedScene> accuracyScenes(const Context& c, int aw, int ah, int guard) {
     std::vector<AoRenderedScene> entries;
     for (const char* name : {"corner", "room"}) {
-        auto scene = std::make_shared<AnalyticScene>(analyticSceneByName(name));
-        GeometryBuffer g = castGeometry(*scene, kCamera, aw + 2 * guard, ah + 2 * guard, c.o.exec);
-        entries.push_back({name, std::move(g.depth), kCamera, scene});
+        auto geometry = std::make_shared<scene::AnalyticScene>(scene::analyticSceneByName(name));
+        scene::GeometryBuffer g = scene::castGeometry(*geometry, kCamera, aw + 2 * guard, ah + 2 * guard, c.o.exec);
+        entries.push_back({name, std::move(g.depth), kCamera, geometry});
     }
     if (c.o.renderedScenes)
         for (auto& r : c.o.renderedScenes(aw, ah, guard)) entries.push_back(std::move(r));
@@ -422,12 +422,12 @@ Block accuracyBlock(const Context& c, const std::vector<AoRenderedScene>& entrie
 }
 
 // ---- Figure 5: AO pass time vs radius -----------------------------------------------
-Block radiusScalingBlock(const Context& c, const AnalyticScene& room, int reps) {
+Block radiusScalingBlock(const Context& c, const scene::AnalyticScene& room, int reps) {
     const int fw = c.o.quick ? 320 : 2560, fh = c.o.quick ? 200 : 1600;
     c.say(fmt::format("ao: sample-pass time vs radius at {}x{} (Figure 5)", fw, fh));
     const std::vector<double> radii{0.1, 0.25, 0.5, 1.0, 1.5, 2.0, 3.0, 4.0};
     std::vector<Series> timing{{"alchemy", {}}, {"sao, no pyramid", {}}, {"sao", {}}};
-    const GeometryBuffer g = castGeometry(room, kCamera, fw, fh, c.o.exec);
+    const scene::GeometryBuffer g = scene::castGeometry(room, kCamera, fw, fh, c.o.exec);
     const Projection proj = ssfx::projection(kCamera, fw, fh);
     const ImageF z = ao::depthToZ(g.depth.view(), kCamera, c.o.exec);
     // The pyramid in one buffer, built once: each timing is the sample pass alone (every
@@ -476,7 +476,7 @@ Block radiusScalingBlock(const Context& c, const AnalyticScene& room, int reps) 
 }
 
 // ---- Table 3: per-pass times with guard bands ---------------------------------------
-Block passTimesBlock(const Context& c, const AnalyticScene& room, int reps) {
+Block passTimesBlock(const Context& c, const scene::AnalyticScene& room, int reps) {
     c.say("ao: per-pass times (Table 3)");
     struct Res {
         int w, h, g;
@@ -491,7 +491,7 @@ Block passTimesBlock(const Context& c, const AnalyticScene& room, int reps) {
                       "total", "ns per visible pixel"};
     for (const Res& r : sizes) {
         const int bw = r.w + 2 * r.g, bh = r.h + 2 * r.g;
-        const GeometryBuffer g = castGeometry(room, kCamera, bw, bh, c.o.exec);
+        const scene::GeometryBuffer g = scene::castGeometry(room, kCamera, bw, bh, c.o.exec);
         ao::SaoParams p;
         p.guardBand = r.g;
         std::vector<ao::SaoTimings> runs;
@@ -525,7 +525,7 @@ Section runAoExperiments(const AoExperimentOptions& o) {
     for (const char* sub : {"images", "plots", "data"}) io::makeDirectories((out / sub).string());
     nlohmann::ordered_json j;
     const Context c{o, out, j};
-    const AnalyticScene room = roomScene();
+    const scene::AnalyticScene room = scene::roomScene();
     const int aw = o.quick ? 192 : 960, ah = o.quick ? 108 : 540, guard = o.quick ? 16 : 64;
     const int rays = o.quick ? 32 : 256, reps = o.quick ? 1 : 3;
 

@@ -6,7 +6,7 @@
 
 #include "ssfx/ao/depth.hpp"
 #include "ssfx/ao/raytraced.hpp"
-#include "ssfx/eval/ao_scenes.hpp"
+#include "ssfx/scene/analytic.hpp"
 
 using namespace ssfx;
 using namespace ssfx::ao;

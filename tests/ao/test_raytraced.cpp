@@ -6,7 +6,7 @@
 
 #include "ssfx/ao/depth.hpp"
 #include "ssfx/ao/raytraced.hpp"
-#include "ssfx/eval/ao_scenes.hpp"
+#include "ssfx/scene/analytic.hpp"
 
 using namespace ssfx;
 using namespace ssfx::ao;
@@ -18,8 +18,8 @@ TEST(Raytraced, MatchesAQuadratureOfTheObscuranceIntegral) {
     // in (theta, phi) about the floor normal, independently of raytraced().
     Camera cam;
     const int w = 32, h = 24;
-    const auto scene = eval::cornerScene();
-    const auto geo = eval::castGeometry(scene, cam, w, h);
+    const auto scene = scene::cornerScene();
+    const auto geo = scene::castGeometry(scene, cam, w, h);
     RaytracedParams p;
     p.raysPerPixel = 4096;
     const ImageF a = raytraced(scene, cam, w, h, p);
@@ -47,7 +47,7 @@ TEST(Raytraced, MatchesAQuadratureOfTheObscuranceIntegral) {
     }
     EXPECT_GE(checked, 3);
     // An open plane: nothing within the radius, A = 1 exactly.
-    eval::AnalyticScene plane;
+    scene::AnalyticScene plane;
     plane.addPlane({0, 0, -3}, {0, 0, 1});
     const ImageF open = raytraced(plane, cam, 16, 12, {});
     for (float v : open.pixels()) ASSERT_EQ(v, 1.0f);

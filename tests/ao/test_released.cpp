@@ -9,7 +9,7 @@
 #include "ssfx/ao/depth.hpp"
 #include "ssfx/ao/sao.hpp"
 #include "ssfx/core/error.hpp"
-#include "ssfx/eval/ao_scenes.hpp"
+#include "ssfx/scene/analytic.hpp"
 
 using namespace ssfx;
 using namespace ssfx::ao;
@@ -178,8 +178,8 @@ TEST(Released, BlurWeightsZeroOutsideAndEpsilonByHand) {
 }
 
 namespace {
-const eval::GeometryBuffer& room() {
-    static const eval::GeometryBuffer g = eval::castGeometry(eval::roomScene(), Camera{}, 192 + 32, 108 + 32);
+const scene::GeometryBuffer& room() {
+    static const scene::GeometryBuffer g = scene::castGeometry(scene::roomScene(), Camera{}, 192 + 32, 108 + 32);
     return g;
 }
 }  // namespace
@@ -223,7 +223,7 @@ TEST(Released, VectorKernelMatchesTheScalarReferenceInTheReleasedConfiguration) 
     const Camera cam;
     SaoParams p = saoPreset("released");
     p.guardBand = 16;
-    const auto big = eval::castGeometry(eval::roomScene(), cam, 960 + 32, 540 + 32);
+    const auto big = scene::castGeometry(scene::roomScene(), cam, 960 + 32, 540 + 32);
     const ImageF a = sao(big.depth.view(), cam, p), r = saoReference(big.depth.view(), cam, p);
     ASSERT_EQ(a.width(), r.width());
     double mx = 0, sum = 0;

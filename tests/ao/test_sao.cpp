@@ -12,7 +12,7 @@
 #include "ssfx/ao/depth.hpp"
 #include "ssfx/ao/raytraced.hpp"
 #include "ssfx/ao/sao.hpp"
-#include "ssfx/eval/ao_scenes.hpp"
+#include "ssfx/scene/analytic.hpp"
 
 using namespace ssfx;
 using namespace ssfx::ao;
@@ -150,8 +150,8 @@ TEST(Sao, InsideCornerMatchesTheRaytracedValue) {
     // (measured: 0.49 vs 0.50 at 320x240); AlchemyAO's estimator is scaled differently.
     Camera cam;
     const int w = 320, h = 240;
-    const auto scene = eval::cornerScene();
-    const auto geo = eval::castGeometry(scene, cam, w, h);
+    const auto scene = scene::cornerScene();
+    const auto geo = scene::castGeometry(scene, cam, w, h);
     const ImageF s = sao(geo.depth.view(), cam);
     const ImageF t = raytraced(scene, cam, w, h);
     // The last wall row above the floor (the corner line) in the middle column.
@@ -172,7 +172,7 @@ TEST(Sao, VectorKernelMatchesTheScalarReference) {
     // (measured on the room at 640x360: SAO max 1e-7, AlchemyAO max 4e-4 in 7 pixels).
     // Bound: every pixel within 2e-3, mean difference below 1e-6.
     Camera cam;
-    const auto geo = eval::castGeometry(eval::roomScene(), cam, 320 + 32, 180 + 32);
+    const auto geo = scene::castGeometry(scene::roomScene(), cam, 320 + 32, 180 + 32);
     auto compare = [](const ImageF& a, const ImageF& r, const char* what) {
         ASSERT_EQ(a.width(), r.width());
         double mx = 0, sum = 0;
@@ -193,7 +193,7 @@ TEST(Sao, VectorKernelMatchesTheScalarReference) {
     ap.guardBand = 16;
     compare(alchemy(geo.depth.view(), cam, ap), alchemyReference(geo.depth.view(), cam, ap), "alchemy");
     // Odd sizes: the last column's quad partner is clamped, the scalar loop finishes rows.
-    const auto odd = eval::castGeometry(eval::cornerScene(), cam, 101, 77);
+    const auto odd = scene::castGeometry(scene::cornerScene(), cam, 101, 77);
     compare(sao(odd.depth.view(), cam), saoReference(odd.depth.view(), cam), "sao odd size");
     // An odd guard band: vectors start on odd columns, so the quad-pair normal gathers its
     // partners (even starts take them from the vector's own lanes).
@@ -215,7 +215,7 @@ TEST(Sao, PackedBlurInputByHandAndItsEffect) {
     for (float z = -0.1f; z > -199.0f; z *= 1.37f) EXPECT_LE(std::abs(packZ(z, -200.0f) - z), 1.54e-3f) << z;
     // On the room, the packed blur input changes A by little more than the 8-bit step.
     Camera cam;
-    const auto geo = eval::castGeometry(eval::roomScene(), cam, 320 + 32, 180 + 32);
+    const auto geo = scene::castGeometry(scene::roomScene(), cam, 320 + 32, 180 + 32);
     SaoParams p;
     p.guardBand = 16;
     const ImageF a = sao(geo.depth.view(), cam, p);
@@ -314,7 +314,7 @@ TEST(Sao, OneBufferPyramidGivesTheSameLevelsAndPasses) {
     // zPyramid into one buffer (the layout sao() uses) holds the same levels as the
     // level-by-level form, and the sample passes on either input give the same bits.
     Camera cam;
-    const auto geo = eval::castGeometry(eval::roomScene(), cam, 161, 97);
+    const auto geo = scene::castGeometry(scene::roomScene(), cam, 161, 97);
     const ImageF z = depthToZ(geo.depth.view(), cam);
     const Projection proj = projection(cam, 161, 97);
     const auto levels = zPyramid(z.view(), 4);

@@ -9,7 +9,7 @@
 #include "ssfx/ao/depth.hpp"
 #include "ssfx/ao/raytraced.hpp"
 #include "ssfx/ao/sao.hpp"
-#include "ssfx/eval/ao_scenes.hpp"
+#include "ssfx/scene/analytic.hpp"
 #include "ssfx/io/exr.hpp"
 
 using namespace ssfx;
@@ -25,8 +25,8 @@ Camera cameraWithFar(double zFar) {
 
 // A floor, a back wall 2.5 m high at 12 m with sky above it, a box and a sphere on the
 // floor (silhouettes against the sky and against the wall).
-eval::AnalyticScene yard() {
-    eval::AnalyticScene s;
+scene::AnalyticScene yard() {
+    scene::AnalyticScene s;
     s.addPlane({0, -1.5, 0}, {0, 1, 0});
     s.addBox({-40, -1.5, -13}, {40, 1.0, -12});
     s.addBox({-2, -1.5, -8}, {0, 0.5, -6});
@@ -37,7 +37,7 @@ eval::AnalyticScene yard() {
 // The yard as a depth buffer in `format`: 1 where the primary ray hits nothing (or beyond
 // the far plane), the exact hit's depth quantised else.
 ImageF yardDepth(const Camera& cam, DepthFormat format, int w, int h) {
-    const eval::GeometryBuffer g = eval::castGeometry(yard(), cam, w, h);
+    const scene::GeometryBuffer g = scene::castGeometry(yard(), cam, w, h);
     ImageF d(w, h);
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x)
@@ -117,10 +117,10 @@ TEST(Sky, NothingDrawnStaysOneWithAFiniteFarPlaneInEveryFormat) {
 TEST(Sky, RaytracedTruthTreatsHitsBeyondTheFarPlaneAsSky) {
     // With the far plane at 3 m the corner's back wall (5 m) is clipped: a rasteriser leaves
     // depth 1 there, and the truth must see sky (A = 1), not the wall occluded by the floor.
-    const eval::AnalyticScene corner = eval::cornerScene();
+    const scene::AnalyticScene corner = scene::cornerScene();
     const int w = 64, h = 48;
     const Camera nearFar = cameraWithFar(-3), inf = cameraWithFar(-double(INFINITY));
-    const eval::GeometryBuffer gb = eval::castGeometry(corner, nearFar, w, h);
+    const scene::GeometryBuffer gb = scene::castGeometry(corner, nearFar, w, h);
     RaytracedParams rp;
     rp.raysPerPixel = 16;
     const ImageF clipped = raytraced(corner, nearFar, w, h, rp), full = raytraced(corner, inf, w, h, rp);

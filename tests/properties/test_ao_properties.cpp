@@ -8,7 +8,7 @@
 
 #include "ssfx/ao/registry.hpp"
 #include "ssfx/core/error.hpp"
-#include "ssfx/eval/ao_scenes.hpp"
+#include "ssfx/scene/analytic.hpp"
 
 using namespace ssfx;
 
@@ -26,10 +26,10 @@ std::vector<const ao::AoMethodInfo*> all() {
 
 // The analytic room: its depth buffer, and the room itself for the ray-traced truth.
 struct Room {
-    eval::AnalyticScene scene = eval::analyticSceneByName("room");
+    scene::AnalyticScene scene = scene::analyticSceneByName("room");
     Camera camera;
     ImageF depth;
-    Room(int w, int h) { depth = eval::castGeometry(scene, camera, w, h, Exec{1}).depth; }
+    Room(int w, int h) { depth = scene::castGeometry(scene, camera, w, h, Exec{1}).depth; }
     ao::AoInput input() const { return {depth.view(), camera, &scene}; }
 };
 

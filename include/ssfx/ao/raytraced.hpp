@@ -7,7 +7,7 @@
 // Hammersley set of N directions per pixel, rotated per pixel by a hash (Cranley-Patterson),
 // so the estimate is deterministic and its noise far below a random set's.
 //
-// The geometry comes through RayScene: analytic scenes (ssfx/eval/ao_scenes.hpp) now,
+// The geometry comes through RayScene: analytic scenes (ssfx/scene/analytic.hpp) now,
 // Embree meshes with the scene renderer.
 #pragma once
 

@@ -1,5 +1,5 @@
 // The SAO paper's experiments (spec sao.md "Experiments to reproduce"), on the analytic
-// scenes of ao_scenes.hpp and, for the accuracy table, on scenes rendered by the Vulkan
+// scenes of scene/analytic.hpp and, for the accuracy table, on scenes rendered by the Vulkan
 // renderer (supplied by the caller, which links it):
 //   Figure 3  z precision: camera-space z error vs distance for D16 / D24 / D32F depth,
 //             each with a finite and an infinite far plane;

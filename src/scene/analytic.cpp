@@ -1,5 +1,5 @@
-// Analytic scenes for the AO work (see ao_scenes.hpp).
-#include "ssfx/eval/ao_scenes.hpp"
+// Analytic scenes for the AO work (see scene/analytic.hpp).
+#include "ssfx/scene/analytic.hpp"
 
 #include <fmt/format.h>
 
@@ -7,7 +7,7 @@
 
 #include "ssfx/core/error.hpp"
 
-namespace ssfx::eval {
+namespace ssfx::scene {
 
 using ao::RayHit;
 using ao::Vec3d;
@@ -124,4 +124,4 @@ GeometryBuffer castGeometry(const ao::RayScene& scene, const Camera& camera, int
     return g;
 }
 
-}  // namespace ssfx::eval
+}  // namespace ssfx::scene

@@ -12,7 +12,7 @@
 #include "ssfx/core/image.hpp"
 #include "ssfx/core/parallel.hpp"
 
-namespace ssfx::eval {
+namespace ssfx::scene {
 
 class AnalyticScene : public ao::RayScene {
 public:
@@ -56,4 +56,4 @@ struct GeometryBuffer {
 GeometryBuffer castGeometry(const ao::RayScene& scene, const Camera& camera, int width, int height,
                             const Exec& exec = {});
 
-}  // namespace ssfx::eval
+}  // namespace ssfx::scene
