@@ -8,7 +8,7 @@ OUT=$2
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 REF="$ROOT/../shared/reference/ppaa"
 args=(eval report --out "$OUT")
-if [ -d "$REF" ]; then args+=(--reference "$REF"); else echo "demo: $REF absent, the paper's rows are left out" >&2; fi
+if [ -d "$REF" ]; then args+=(--author-data "$REF"); else echo "demo: $REF absent, the paper's rows are left out" >&2; fi
 "$SSFX" "${args[@]}"
 echo
 echo "Quality (PSNR, x8 upscale vs x8 render; the paper's Table 2 protocol):"

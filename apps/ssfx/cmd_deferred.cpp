@@ -1,4 +1,4 @@
-// ssfx deferred: adaptive supersampling of a rendered G-buffer, with its reference.
+// ssfx deferred: adaptive supersampling of a rendered G-buffer, beside brute-force supersampling.
 #include <fmt/format.h>
 
 #include <cmath>
@@ -21,7 +21,7 @@ struct DeferredOptions {
     std::string scene, view, size = "1024x768", out, device;
     std::vector<std::string> params;
     int m = 4, stall = 0, threads = 0;
-    bool reference = false;
+    bool bruteForce = false;
 };
 
 void run(const DeferredOptions& o) {
@@ -43,8 +43,8 @@ void run(const DeferredOptions& o) {
     const scene::GBuffer g = renderer.renderGBuffer(scene, view, w, h, o.m);
     const Exec exec{o.threads};
     const auto a = deferred::adaptiveSupersampling(scene, g, p, exec);
-    std::optional<deferred::DeferredResult> ref;
-    if (o.reference) ref = deferred::referenceSupersampling(scene, g, p.shading, exec);
+    std::optional<deferred::DeferredResult> ref;  // brute force
+    if (o.bruteForce) ref = deferred::bruteForceSupersampling(scene, g, p.shading, exec);
 
     namespace fs = std::filesystem;
     io::makeDirectories(o.out);
@@ -63,10 +63,10 @@ void run(const DeferredOptions& o) {
                scene.name, w, h, o.m, renderer.device().name, g.gpuMs, a.totalMs(), a.firstMs, a.evaluateMs, a.restMs,
                a.shadedPercent());
     if (ref) {
-        io::writePng((dir / "reference.png").string(), deferred::toRgba8(ref->image).view());
+        io::writePng((dir / "brute_force.png").string(), deferred::toRgba8(ref->image).view());
         io::writePng((dir / "error.png").string(), eval::heatMap(deferred::absoluteError(a.image, ref->image).view(), 0.0f, 0.05f).view());
         const double mse = deferred::mse(a.image, ref->image);
-        fmt::print("; reference {:.1f} ms; MSE {:.3g} (x1e-5: {:.2f}), PSNR {:.2f} dB", ref->restMs, mse, mse * 1e5,
+        fmt::print("; brute force {:.1f} ms; MSE {:.3g} (x1e-5: {:.2f}), PSNR {:.2f} dB", ref->restMs, mse, mse * 1e5,
                    eval::psnrFromMse(mse));
     }
     fmt::print(" -> {}\n", o.out);
@@ -76,7 +76,7 @@ void run(const DeferredOptions& o) {
 
 void addDeferredCommand(CLI::App& app) {
     auto o = std::make_shared<DeferredOptions>();
-    auto* cmd = app.add_subcommand("deferred", "Adaptive supersampling for deferred shading (and its brute-force reference)");
+    auto* cmd = app.add_subcommand("deferred", "Adaptive supersampling for deferred shading (beside brute-force supersampling)");
     cmd->add_option("--scene", o->scene, "atrium, cornell, a scene .json or a model file");
     cmd->add_option("--view", o->view, "Named viewpoint (default: the scene's first)");
     cmd->add_option("--size", o->size, "Final image size WxH (default 1024x768)");
@@ -84,18 +84,18 @@ void addDeferredCommand(CLI::App& app) {
         ->check(CLI::Range(1, 4));
     cmd->add_option("--stall", o->stall, "Extra dependent operations per shaded sample (emulates a heavy shader)")
         ->check(CLI::Range(0, 10000000));
-    cmd->add_flag("--reference", o->reference, "Also shade every sample; write reference.png and error.png, print MSE/PSNR");
+    cmd->add_flag("--brute-force", o->bruteForce, "Also shade every sample (brute-force supersampling); write brute_force.png and error.png, print MSE/PSNR against it");
     std::string names;  // from the registry's table
     for (const ParamInfo& p : deferred::deferredMethodById("adaptive").params)
         names += fmt::format(" {} ({})", p.name, p.valueText(p.defaultValue()));
     cmd->add_option("-p,--param", o->params,
                     "NAME=VALUE (repeatable; ranges: ssfx methods --family deferred):" + names);
     cmd->add_option("--out", o->out, "Output folder: image.png, samples.png (k heat map), k_depth/k_normal/k_shading.png "
-                                     "(each metric's k), with --reference reference.png, error.png (|error| 0..0.05)");
+                                     "(each metric's k), with --brute-force brute_force.png, error.png (|error| 0..0.05)");
     cmd->add_option("--device", o->device, "Vulkan device index or part of its name");
     cmd->add_option("--threads", o->threads, "Worker threads (0 = all)")->check(CLI::Range(0, 1024));
     cmd->footer("docs/methods/adaptive.md. Example:\n"
-                "  ssfx deferred --scene atrium --view nave --size 1024x768 --ss 4 --reference --out out/deferred");
+                "  ssfx deferred --scene atrium --view nave --size 1024x768 --ss 4 --brute-force --out out/deferred");
     cmd->callback([o] {
         io::OutputSet outputs;  // the images, the heat maps and the numbers: all or none
         run(*o);

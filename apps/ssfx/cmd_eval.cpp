@@ -84,9 +84,9 @@ void addTemporal(CLI::App& eval) {
     cmd->add_option("--image", o->name, "Animation name (default: animated)");
     cmd->add_option("--source", o->source,
                     "compute: run each method on the frames; given: score the NAME_METHOD.png animations in --dir "
-                    "(outputs made elsewhere, e.g. the DDAA author's) against the same x8 reference")
+                    "(outputs made elsewhere, e.g. the DDAA author's) against the same x8 truth")
         ->check(CLI::IsMember({"compute", "given"}));
-    cmd->add_option("--out", o->out, "Write NAME_METHOD.png and NAME_reference.png (APNG) to this directory");
+    cmd->add_option("--out", o->out, "Write NAME_METHOD.png and NAME_truth.png (APNG) to this directory");
     cmd->add_option("--json", o->json, "Also write the results as JSON");
     cmd->add_option("--md", o->markdown, "Also write the results as Markdown");
     cmd->add_option("--methods", o->methods,
@@ -153,7 +153,7 @@ void addTemporal(CLI::App& eval) {
                             (std::filesystem::path(o->out) / (o->name + "_" + suffix + ".png")).string(), ref.width(),
                             ref.height(), std::uint32_t(source->frames())));
                     };
-                    open("reference");
+                    open("truth");
                     for (const auto& n : names) open(n);
                 }
                 writers[0]->add(ref.view(), 1, std::uint16_t(fps));
@@ -264,7 +264,7 @@ void addReport(CLI::App& eval) {
     auto threads = std::make_shared<int>(0);
     auto* cmd = eval.add_subcommand("report", "Run the whole evaluation and write the HTML report");
     cmd->add_option("--out", o->outDir, "Output directory (created if missing); open DIR/index.html")->required();
-    cmd->add_option("--reference", o->referenceDir,
+    cmd->add_option("--author-data", o->authorDataDir,
                     "The DDAA author's data (e.g. ../shared/reference/ppaa): adds the paper's rows reproduced");
     cmd->add_option("--methods", o->methods, "Methods (default: all, in the paper's order)")->delimiter(',');
     cmd->add_option("--reps", o->speedRepetitions, "Timed repetitions per method and image (default 20)")
@@ -280,13 +280,13 @@ void addReport(CLI::App& eval) {
     cmd->add_flag("--no-render", *noRender,
                   "Leave out what needs the Vulkan renderer: the atrium in the quality table, adaptive supersampling");
     cmd->callback([o, threads, scenes, noRender] {
-        // --reference must name the data, and is not silently dropped by --quick.
-        if (!o->referenceDir.empty() && !std::filesystem::is_directory(o->referenceDir))
-            throw Error(fmt::format("--reference {}: no such directory (the DDAA author's data, e.g. "
+        // --author-data must name the data, and is not silently dropped by --quick.
+        if (!o->authorDataDir.empty() && !std::filesystem::is_directory(o->authorDataDir))
+            throw Error(fmt::format("--author-data {}: no such directory (the DDAA author's data, e.g. "
                                     "../shared/reference/ppaa)",
-                                    o->referenceDir));
-        if (!o->referenceDir.empty() && o->quick)
-            throw Error("--reference with --quick: the quick report leaves the paper's rows out; drop one of them");
+                                    o->authorDataDir));
+        if (!o->authorDataDir.empty() && o->quick)
+            throw Error("--author-data with --quick: the quick report leaves the paper's rows out; drop one of them");
         if (!(scenes->size() == 1 && scenes->front() == "none")) o->renderedScenes = renderedAoScenes(*scenes);
 #ifdef SSFX_HAVE_RENDER
         // The atrium's nave, forward-shaded at 1x..8x, joins the quality table (like the paper's sponza).
@@ -331,7 +331,7 @@ void addDeferred(CLI::App& eval) {
     auto threads = std::make_shared<int>(0);
     auto size = std::make_shared<std::string>("1024x768");
     auto* cmd = eval.add_subcommand("deferred", "The adaptive supersampling paper's Table 1: time, stalled time, "
-                                                "MSE/PSNR vs the reference and samples shaded for m = 1..4");
+                                                "MSE/PSNR vs brute force and samples shaded for m = 1..4");
     cmd->add_option("--out", o->outDir, "Output directory: images/, data/deferred.json, data/deferred.md")->required();
     cmd->add_option("--scene", o->scene, "Scene (default atrium)");
     cmd->add_option("--view", o->view, "View (default nave)");

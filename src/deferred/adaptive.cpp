@@ -197,7 +197,7 @@ DeferredResult adaptiveSupersampling(const scene::Scene& scene, const scene::GBu
     return r;
 }
 
-DeferredResult referenceSupersampling(const scene::Scene& scene, const scene::GBuffer& g, const ShadingParams& p,
+DeferredResult bruteForceSupersampling(const scene::Scene& scene, const scene::GBuffer& g, const ShadingParams& p,
                                       const Exec& exec) {
     checkM(g);
     const SampleShader shader(scene, g, p);

@@ -43,11 +43,11 @@ const std::array<DeferredMethodInfo, 2> kDeferredMethods{{
           [](const scene::Scene& s, const scene::GBuffer& g, const DeferredParams& p, const Exec& e) {
               return adaptiveSupersampling(s, g, as<AdaptiveParams>(p, "adaptive"), e);
           }),
-    entry({"brute-force", "every G-buffer sample shaded and averaged (the reference)", kCite, kInput}, kShadingParams,
+    entry({"brute-force", "every G-buffer sample shaded and averaged (brute-force supersampling)", kCite, kInput}, kShadingParams,
           [] { return DeferredParams{ShadingParams{}}; },
           [](const DeferredParams& p) { validate(as<ShadingParams>(p, "brute-force")); },
           [](const scene::Scene& s, const scene::GBuffer& g, const DeferredParams& p, const Exec& e) {
-              return referenceSupersampling(s, g, as<ShadingParams>(p, "brute-force"), e);
+              return bruteForceSupersampling(s, g, as<ShadingParams>(p, "brute-force"), e);
           }),
 }};
 

@@ -80,9 +80,9 @@ Section runDeferredExperiment(const DeferredExperimentOptions& o) {
         std::vector<double> refMs, refStallMs, oursMs, oursStallMs, tiledMs, tiledStallMs, fxaaMs;
         deferred::DeferredResult ref, ours;
         for (int r = 0; r < reps; ++r) {
-            ref = deferred::referenceSupersampling(scene, g, o.params.shading, o.exec);
+            ref = deferred::bruteForceSupersampling(scene, g, o.params.shading, o.exec);
             refMs.push_back(ref.totalMs());
-            refStallMs.push_back(deferred::referenceSupersampling(scene, g, stalled, o.exec).totalMs());
+            refStallMs.push_back(deferred::bruteForceSupersampling(scene, g, stalled, o.exec).totalMs());
             if (m == 1) {
                 const ImageRgba8 img = deferred::toRgba8(ref.image);
                 const auto t0 = std::chrono::steady_clock::now();
@@ -100,7 +100,7 @@ Section runDeferredExperiment(const DeferredExperimentOptions& o) {
             tiledStallMs.push_back(deferred::adaptiveSupersampling(scene, g, tiledStalledParams, o.exec).totalMs());
         }
         const std::string ss = fmt::format("{0}x{0}", m);
-        io::writePng((out / "images" / fmt::format("deferred_m{}_reference.png", m)).string(), deferred::toRgba8(ref.image).view());
+        io::writePng((out / "images" / fmt::format("deferred_m{}_brute_force.png", m)).string(), deferred::toRgba8(ref.image).view());
         if (m == 1) {
             rows.push_back({ss, "default", gbufferMs, median(refMs), median(refStallMs), NAN, NAN, NAN});
             const double f = median(fxaaMs);
@@ -109,7 +109,7 @@ Section runDeferredExperiment(const DeferredExperimentOptions& o) {
         }
         const double mse = deferred::mse(ours.image, ref.image);
         const double psnr = psnrFromMse(mse);
-        rows.push_back({ss, "reference", gbufferMs, median(refMs), median(refStallMs), NAN, NAN, 100.0});
+        rows.push_back({ss, "brute force", gbufferMs, median(refMs), median(refStallMs), NAN, NAN, 100.0});
         rows.push_back({ss, "ours", gbufferMs, median(oursMs), median(oursStallMs), mse, psnr, ours.shadedPercent()});
         rows.push_back({ss, "ours, 8x8 tiles by k", gbufferMs, median(tiledMs), median(tiledStallMs), mse, psnr,
                         ours.shadedPercent()});
@@ -131,14 +131,14 @@ Section runDeferredExperiment(const DeferredExperimentOptions& o) {
     section.title = "Adaptive supersampling for deferred shading (the paper's Table 1)";
     // The note is laid out in the report, whose root its links are relative to.
     section.note = "The method ([doc](methods/adaptive.html)) against brute-force supersampling on the atrium's G-buffer "
-                   "from the Vulkan renderer. Images at 4x4: the reference, ours, the per-pixel sample count (blue 1 .. "
+                   "from the Vulkan renderer. Images at 4x4: brute force, ours, the per-pixel sample count (blue 1 .. "
                    "red 16), the absolute error (0 .. 0.05) and each metric's k (paper Figure 8). Data: "
                    "[deferred/data/deferred.json](deferred/data/deferred.json).";
     Block b;
     b.heading = fmt::format("Adaptive supersampling (paper Table 1) on {} / {}, {}x{}", o.scene, o.view, w, h);
     b.text = fmt::format(
         "Device for the G-buffer: {} (GPU time of the draw). Shading on the CPU ({} threads), median of {} run(s); "
-        "stalled: {} extra dependent operations per shaded sample. MSE and PSNR of ours against the reference at the "
+        "stalled: {} extra dependent operations per shaded sample. MSE and PSNR of ours against brute force at the "
         "same m (RGB in [0, 1]). \"8x8 tiles by k\": the same method shading each 8x8 tile's pixels grouped by "
         "sample count (the paper's future work; identical output). Constants: cDepth {}, cNormal {}, cShading {}, thresholds {} / {}.",
         renderer.device().name, o.exec.threads == 0 ? std::string("all") : std::to_string(o.exec.threads),
@@ -154,9 +154,9 @@ Section runDeferredExperiment(const DeferredExperimentOptions& o) {
                              {"psnr", std::isfinite(r.psnr) ? nlohmann::ordered_json(r.psnr) : nlohmann::ordered_json()},
                              {"samples_percent", std::isfinite(r.samples) ? nlohmann::ordered_json(r.samples) : nlohmann::ordered_json()}});
     }
-    b.after = fmt::format("At 4x4: ours is {:.2f}x faster than the reference in shading, {:.2f}x with the stall (same run).",
+    b.after = fmt::format("At 4x4: ours is {:.2f}x faster than brute force in shading, {:.2f}x with the stall (same run).",
                           speedupPlain, speedupStalled);
-    for (const char* name : {"reference", "ours", "samples", "error", "k_depth", "k_normal", "k_shading"})
+    for (const char* name : {"brute_force", "ours", "samples", "error", "k_depth", "k_normal", "k_shading"})
         b.figures.push_back({fmt::format("images/deferred_m4_{}.png", name), fmt::format("4x4: {}", name),
                              Figure::Kind::Image, 0, 0});
     section.blocks.push_back(std::move(b));

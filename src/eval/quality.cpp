@@ -84,13 +84,13 @@ std::vector<std::string> findRenderSets(const std::string& dir) {
 double QualityTable::meanPsnr(std::size_t m) const { return meanOf(psnr, m); }
 double QualityTable::meanSsim(std::size_t m) const { return meanOf(ssim, m); }
 
-Score scoreAgainstX8(ImageView<const Rgba8> output1x, ImageView<const Rgba8> reference8x, const Exec& exec) {
-    if (std::int64_t{output1x.width()} * 8 != reference8x.width() ||
-        std::int64_t{output1x.height()} * 8 != reference8x.height())
-        throw Error(fmt::format("the x8 reference is {}x{}, expected 8 times {}x{}", reference8x.width(),
-                                reference8x.height(), output1x.width(), output1x.height()));
+Score scoreAgainstX8(ImageView<const Rgba8> output1x, ImageView<const Rgba8> render8x, const Exec& exec) {
+    if (std::int64_t{output1x.width()} * 8 != render8x.width() ||
+        std::int64_t{output1x.height()} * 8 != render8x.height())
+        throw Error(fmt::format("the x8 render is {}x{}, expected 8 times {}x{}", render8x.width(),
+                                render8x.height(), output1x.width(), output1x.height()));
     const ImageRgba8 up = aa::upscaleMitchell(output1x, 8, {}, exec);
-    return {psnr(up.view(), reference8x, exec), ssim(up.view(), reference8x, exec)};
+    return {psnr(up.view(), render8x, exec), ssim(up.view(), render8x, exec)};
 }
 
 MethodSettings settingsFor(const MethodInfo& m, const MethodSettings& s) {

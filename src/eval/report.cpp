@@ -61,10 +61,10 @@ Figure plot(const std::string& file, const std::string& alt, int width, int heig
     return Figure{"plots/" + file, alt, Figure::Kind::Plot, width, height};
 }
 
-// ---- the render sets: test images at 1x..8x, the x8 render resolved to 1x (the viewer's
-// reference), and render sets from elsewhere (3-D scenes) with theirs ---------------------
-void writeReference(const Run& r, const std::string& name, const ImageRgba8& x8) {
-    io::writePng(r.path("images", name + "_reference.png"), aa::downscaleMitchell(x8.view(), 8, {}, r.o.exec).view());
+// ---- the render sets: test images at 1x..8x, the x8 render resolved to 1x (the truth the
+// viewer shows beside the outputs), and render sets from elsewhere (3-D scenes) with theirs ---------------------
+void writeTruth(const Run& r, const std::string& name, const ImageRgba8& x8) {
+    io::writePng(r.path("images", name + "_truth.png"), aa::downscaleMitchell(x8.view(), 8, {}, r.o.exec).view());
 }
 
 void drawTestImageSets(const Run& r) {
@@ -74,7 +74,7 @@ void drawTestImageSets(const Run& r) {
         for (int s : {1, 2, 4, 8}) {
             const ImageRgba8 img = drawTestImage(t.name, s);
             io::writePng(r.path("images", renderSetFile(std::string(t.name), s)), img.view());
-            if (s == 8) writeReference(r, std::string(t.name), img);
+            if (s == 8) writeTruth(r, std::string(t.name), img);
         }
     }
 }
@@ -84,7 +84,7 @@ std::map<std::string, std::string> addRenderSets(const Run& r) {
     if (!r.o.addRenderSets) return extra;
     for (const auto& [name, description] : r.o.addRenderSets(r.images())) {
         extra[name] = description;
-        writeReference(r, name, io::readPng(renderSetPath(r.images(), name, 8)));
+        writeTruth(r, name, io::readPng(renderSetPath(r.images(), name, 8)));
     }
     return extra;
 }
@@ -144,18 +144,18 @@ Section qualitySection(const Run& r, const QualityTable& quality) {
 // ---- The paper's rows from the DDAA author's data, when present ----------------------
 std::optional<Block> authorRowsBlock(Run& r) {
     const ReportOptions& o = r.o;
-    if (o.referenceDir.empty() || !fs::is_directory(o.referenceDir) || o.quick) return std::nullopt;
+    if (o.authorDataDir.empty() || !fs::is_directory(o.authorDataDir) || o.quick) return std::nullopt;
     QualityOptions ro;
     ro.methods = {"ssaax4", "ssaax2", "blur", "fxaa3c", "fxaa3d", "ddaa1", "ddaa2", "ddaa2p"};
     ro.exec = o.exec;
     ro.progress = o.progress;
     ro.source = OutputSource::Given;
-    const QualityTable given = evaluateQuality(o.referenceDir, ro);
+    const QualityTable given = evaluateQuality(o.authorDataDir, ro);
     ro.source = OutputSource::Compute;
-    const QualityTable ours = evaluateQuality(o.referenceDir, ro);
-    r.data("", "reference_given", qualityJson(given));
-    r.data("", "reference_ours", qualityJson(ours));
-    r.all["reference"] = {{"given", nlohmann::ordered_json::parse(qualityJson(given))},
+    const QualityTable ours = evaluateQuality(o.authorDataDir, ro);
+    r.data("", "author_given", qualityJson(given));
+    r.data("", "author_ours", qualityJson(ours));
+    r.all["author_data"] = {{"given", nlohmann::ordered_json::parse(qualityJson(given))},
                           {"ours", nlohmann::ordered_json::parse(qualityJson(ours))}};
     // The paper's published (rounded) values for its two images (spec ppaa.md section 3).
     const std::vector<std::vector<double>> published{{17.3, 17.2, 16.2, 16.2, 16.0, 17.1, 16.9, NAN},
@@ -220,12 +220,12 @@ Section colourAwareSection(Run& r, const QualityTable& quality) {
     const ImageRgba8 x2 = io::readPng(renderSetPath(r.images(), "circles", 2));
     const ImageRgba8 x8 = io::readPng(renderSetPath(r.images(), "circles", 8));
     const ImageRgba8 ref8 = crop(x8, 640, 2560, 640, 640);
-    const ImageRgba8 reference = crop(io::readPng(r.path("images", "circles_reference.png")), 80, 320, 80, 80);
-    io::writePng(r.path("images", "green_on_grey_reference.png"), reference.view());
+    const ImageRgba8 truth = crop(io::readPng(r.path("images", "circles_truth.png")), 80, 320, 80, 80);
+    io::writePng(r.path("images", "green_on_grey_truth.png"), truth.view());
     io::writePng(r.path("images", "green_on_grey_noaa.png"), crop(x1, 80, 320, 80, 80).view());
     Block b;
     b.figures = {{"images/green_on_grey_noaa.png", "input", Figure::Kind::Crop, 0, 0},
-                 {"images/green_on_grey_reference.png", "reference", Figure::Kind::Crop, 0, 0}};
+                 {"images/green_on_grey_truth.png", "truth (x8 resolved)", Figure::Kind::Crop, 0, 0}};
     std::vector<double> cellDefault, cellColour, cellDefault1x, cellColour1x;
     for (const auto& id : lumaIds) {
         const MethodInfo& m = methodById(id);
@@ -236,8 +236,8 @@ Section colourAwareSection(Run& r, const QualityTable& quality) {
         const ImageRgba8 c = crop(m.run(in.view(), on, o.exec), 80, 320, 80, 80);
         cellDefault.push_back(scoreAgainstX8(a.view(), ref8.view(), o.exec).psnr);
         cellColour.push_back(scoreAgainstX8(c.view(), ref8.view(), o.exec).psnr);
-        cellDefault1x.push_back(psnr(a.view(), reference.view(), o.exec));
-        cellColour1x.push_back(psnr(c.view(), reference.view(), o.exec));
+        cellDefault1x.push_back(psnr(a.view(), truth.view(), o.exec));
+        cellColour1x.push_back(psnr(c.view(), truth.view(), o.exec));
         io::writePng(r.path("images", fmt::format("green_on_grey_{}.png", id)), a.view());
         io::writePng(r.path("images", fmt::format("green_on_grey_{}_colour.png", id)), c.view());
         b.figures.push_back({fmt::format("images/green_on_grey_{}.png", id), id, Figure::Kind::Crop, 0, 0});
@@ -248,9 +248,9 @@ Section colourAwareSection(Run& r, const QualityTable& quality) {
     delta.push_back(cellDefault);
     rows.push_back(fmt::format("circles, green-on-grey cell: chromaWeight {}", kChroma));
     delta.push_back(cellColour);
-    rows.push_back("same cell vs the resolved x8 reference at 1x: default");
+    rows.push_back("same cell vs the x8 render resolved to 1x: default");
     delta.push_back(cellDefault1x);
-    rows.push_back(fmt::format("same cell vs the resolved x8 reference at 1x: chromaWeight {}", kChroma));
+    rows.push_back(fmt::format("same cell vs the x8 render resolved to 1x: chromaWeight {}", kChroma));
     delta.push_back(cellColour1x);
     b.table = numericTable("image", rows, lumaIds, delta, 3, true);
     Section s;
@@ -273,7 +273,7 @@ Section viewersSection(const Run& r, const QualityTable& quality, const std::map
     s.title = "Compare the outputs";
     s.note = "Pick one or more methods; \"side by side\" shows them together, \"flip\" shows one at a time (button "
              "\"next\" or key `f`, or auto-flip). Zoom is nearest-neighbour; drag or scroll to pan (all panes move together). "
-             "`reference` is the x8 render resolved to 1x with the Mitchell filter.";
+             "`truth` is the x8 render resolved to 1x with the Mitchell filter.";
     for (const auto& name : quality.images) {
         Viewer v;
         v.id = name;
@@ -289,7 +289,7 @@ Section viewersSection(const Run& r, const QualityTable& quality, const std::map
             v.width = info.width;
             v.height = info.height;
         }
-        v.sources = {{"reference", "images/" + name + "_reference.png"}};
+        v.sources = {{"truth", "images/" + name + "_truth.png"}};
         for (const auto& id : r.methodIds) v.sources.emplace_back(id, fmt::format("images/{}_{}.png", name, id));
         v.initial = {"noaa", "ddaa2"};
         Block b;
@@ -311,14 +311,14 @@ Table temporalTable(const std::vector<TemporalResult>& results) {
     return numericTable("method", names, {"flicker (levels)", "tPSNR (dB)", "PSNR (dB)"}, rows, 3, false);
 }
 
-// The author's animation, when the reference data has it (animatedx8.png and
+// The author's animation, when the author's data has it (animatedx8.png and
 // animated_METHOD.png): the given outputs and ssfx's on the same frames, streamed.
 std::optional<Block> authorAnimationBlock(Run& r, const TemporalOptions& to) {
     const ReportOptions& o = r.o;
-    if (o.referenceDir.empty() || o.quick || !fs::exists(renderSetPath(o.referenceDir, "animated", 8))) return std::nullopt;
+    if (o.authorDataDir.empty() || o.quick || !fs::exists(renderSetPath(o.authorDataDir, "animated", 8))) return std::nullopt;
     std::vector<std::pair<std::string, std::string>> given;
     for (const auto& id : r.methodIds) {
-        const fs::path file = fs::path(o.referenceDir) / fmt::format("animated_{}.png", id);
+        const fs::path file = fs::path(o.authorDataDir) / fmt::format("animated_{}.png", id);
         if (fs::exists(file)) given.emplace_back(id, file.string());
     }
     if (given.empty()) return std::nullopt;
@@ -326,9 +326,9 @@ std::optional<Block> authorAnimationBlock(Run& r, const TemporalOptions& to) {
     go.keepOutputs = false;
     go.methods.clear();
     for (const auto& g : given) go.methods.push_back(g.first);
-    const TemporalRun g = evaluateTemporalGiven(*apngFrames(o.referenceDir, "animated"), given, go);
-    const TemporalRun ours = evaluateTemporal(*apngFrames(o.referenceDir, "animated"), go);
-    r.all["temporal_reference"] = {{"given", nlohmann::ordered_json::parse(temporalJson(g.results))},
+    const TemporalRun g = evaluateTemporalGiven(*apngFrames(o.authorDataDir, "animated"), given, go);
+    const TemporalRun ours = evaluateTemporal(*apngFrames(o.authorDataDir, "animated"), go);
+    r.all["temporal_author"] = {{"given", nlohmann::ordered_json::parse(temporalJson(g.results))},
                                    {"ours", nlohmann::ordered_json::parse(temporalJson(ours.results))}};
     std::vector<TemporalResult> rows;
     for (std::size_t m = 0; m < g.results.size(); ++m) {
@@ -339,7 +339,7 @@ std::optional<Block> authorAnimationBlock(Run& r, const TemporalOptions& to) {
     }
     Block b;
     b.heading = "The author's animation: given outputs and ssfx's";
-    b.text = "The DDAA author's `animated` frames (x8 resolved as the reference), scored from the author's GPU outputs "
+    b.text = "The DDAA author's `animated` frames (the x8 frames resolved as the truth), scored from the author's GPU outputs "
              "(`ssfx eval temporal --source given`) and from ssfx's outputs on the same inputs; frames are streamed, one "
              "x8 frame in memory at a time.";
     b.table = temporalTable(rows);
@@ -362,16 +362,16 @@ Section temporalSection(Run& r) {
         for (const auto& img : images) a.frames.push_back({img, std::uint16_t(stride), std::uint16_t(anim.fps)});
         io::writeApng(r.path("anim", fmt::format("{}_{}.png", anim.name, suffix)), a);
     };
-    saveAnim("reference", temporal.reference);
+    saveAnim("truth", temporal.truth);
     for (std::size_t m = 0; m < r.methodIds.size(); ++m) saveAnim(r.methodIds[m], temporal.outputs[m]);
     r.data("temporal", "temporal", temporalJson(temporal.results), temporalMarkdown(temporal.results));
 
     Section s;
     s.title = "Temporal stability";
     s.note = fmt::format(
-        "Each method applied to every frame of `animated` ({} frames{}); the reference is the x8 animation resolved to "
-        "1x. Flicker is the RMS error of the method's frame-to-frame differences against the reference's (around the "
-        "loop), in 8-bit levels; tPSNR is the same as a PSNR; PSNR compares each frame with the reference frame "
+        "Each method applied to every frame of `animated` ({} frames{}); the truth is the x8 animation resolved to "
+        "1x. Flicker is the RMS error of the method's frame-to-frame differences against the truth's (around the "
+        "loop), in 8-bit levels; tPSNR is the same as a PSNR; PSNR compares each frame with the truth's "
         "(docs/evaluation.md).",
         frames, o.quick ? ", every 4th frame" : "");
     Block table;
@@ -388,7 +388,7 @@ Section temporalSection(Run& r) {
                      .view());
     Block pictures;
     pictures.figures = {plot("flicker.png", "flicker per method", 880, 360),
-                        {"anim/animated_reference.png", "reference (x8 resolved)", Figure::Kind::Animation, 0, 0}};
+                        {"anim/animated_truth.png", "truth (x8 resolved)", Figure::Kind::Animation, 0, 0}};
     for (const auto& t : temporal.results)
         pictures.figures.push_back({fmt::format("anim/animated_{}.png", t.method),
                                     fmt::format("{}: flicker {:.2f}", t.method, t.flickerLevels), Figure::Kind::Animation,
@@ -396,7 +396,7 @@ Section temporalSection(Run& r) {
     s.blocks.push_back(std::move(pictures));
     Block zoomable;
     zoomable.heading = "Animation, zoomable";
-    Viewer v{"animated", anim.width, anim.height, {{"reference", "anim/animated_reference.png"}}, {"noaa", "ddaa2"}};
+    Viewer v{"animated", anim.width, anim.height, {{"truth", "anim/animated_truth.png"}}, {"noaa", "ddaa2"}};
     for (const auto& id : r.methodIds) v.sources.emplace_back(id, fmt::format("anim/animated_{}.png", id));
     zoomable.viewers.push_back(std::move(v));
     s.blocks.push_back(std::move(zoomable));

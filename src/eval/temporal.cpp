@@ -110,9 +110,9 @@ private:
     Stream streams_[4];
 };
 
-// The reference frame R_t: frame t at x8, resolved to 1x with the Mitchell filter, checked
+// The truth's frame R_t: frame t at x8, resolved to 1x with the Mitchell filter, checked
 // against the 1x size.
-ImageRgba8 referenceFrame(FrameSource& source, int t, int w, int h, const Exec& exec) {
+ImageRgba8 truthFrame(FrameSource& source, int t, int w, int h, const Exec& exec) {
     const ImageView<const Rgba8> x8 = source.frame(t, 8);
     if (x8.width() != 8 * w || x8.height() != 8 * h)
         throw Error(fmt::format("temporal: the x8 frame {} is {}x{}, expected 8 times {}x{}", t, x8.width(), x8.height(),
@@ -137,7 +137,7 @@ void TemporalScorer::add(ImageView<const Rgba8> out, ImageView<const Rgba8> ref)
 }
 
 TemporalResult TemporalScorer::result() const {
-    if (frames_ < 2) throw Error("temporal: need at least 2 frames and as many reference frames");
+    if (frames_ < 2) throw Error("temporal: need at least 2 frames and as many truth frames");
     // Around the loop: the last frame to the first.
     const std::uint64_t sum =
         flickerSum_ + flickerSum(prevOut_.view(), firstOut_.view(), prevRef_.view(), firstRef_.view(), exec_);
@@ -149,7 +149,7 @@ TemporalResult TemporalScorer::result() const {
 TemporalResult temporalScore(const std::vector<ImageRgba8>& out, const std::vector<ImageRgba8>& ref,
                              const Exec& exec) {
     if (out.size() < 2 || ref.size() != out.size())
-        throw Error("temporal: need at least 2 frames and as many reference frames");
+        throw Error("temporal: need at least 2 frames and as many truth frames");
     TemporalScorer s(exec);
     for (std::size_t t = 0; t < out.size(); ++t) s.add(out[t].view(), ref[t].view());
     return s.result();
@@ -178,7 +178,7 @@ TemporalRun runTemporal(FrameSource& source, const std::vector<std::string>& nam
     for (int t = 0; t < frames; ++t) {
         if (o.progress) o.progress(fmt::format("temporal: frame {}/{}", t + 1, frames));
         const std::vector<ImageRgba8> outputs = outputsOf(t);
-        const ImageRgba8 ref = referenceFrame(source, t, outputs[0].width(), outputs[0].height(), o.exec);
+        const ImageRgba8 ref = truthFrame(source, t, outputs[0].width(), outputs[0].height(), o.exec);
         for (std::size_t m = 0; m < names.size(); ++m) {
             if (outputs[m].width() != ref.width() || outputs[m].height() != ref.height())
                 throw Error(fmt::format("temporal: {} frame {} is {}x{}, the animation {}x{}", names[m], t,
@@ -188,7 +188,7 @@ TemporalRun runTemporal(FrameSource& source, const std::vector<std::string>& nam
         if (o.onFrame) o.onFrame(t, outputs, ref);
         if (o.keepOutputs) {
             for (std::size_t m = 0; m < names.size(); ++m) run.outputs[m].push_back(ImageRgba8::copyOf(outputs[m].view()));
-            run.reference.push_back(ImageRgba8::copyOf(ref.view()));
+            run.truth.push_back(ImageRgba8::copyOf(ref.view()));
         }
     }
     for (std::size_t m = 0; m < names.size(); ++m) {

@@ -157,7 +157,7 @@ check testscene_big 2 "$SSFX" testscene --out "$OUT/big_scene" --width 5000 --he
 [ -z "$(ls -A "$OUT/big_scene" 2>/dev/null)" ] || { echo "FAIL testscene_big: files were written"; fail=1; }
 check ao_save_badparam 2 "$SSFX" ao --scene room --size 32x24 --save-depth "$OUT/sd.exr" -p radius=-1 -o "$OUT/x.png"
 [ -e "$OUT/sd.exr" ] && { echo "FAIL ao_save_badparam: --save-depth was written"; fail=1; }
-check report_noref 2 "$SSFX" eval report --quick --no-ao --no-render --out "$OUT/rep" --reference "$OUT/no/such/dir"
+check report_noref 2 "$SSFX" eval report --quick --no-ao --no-render --out "$OUT/rep" --author-data "$OUT/no/such/dir"
 [ -e "$OUT/x.png" ] && { echo "FAIL: a refused run wrote x.png"; fail=1; }
 check ao_badparam 2 "$SSFX" ao --scene room --size 32x24 -p radius=-2 -o "$OUT/x.png"
 contains ao_badparam "$OUT/ao_badparam.err" "radius"
@@ -235,10 +235,10 @@ if "$SSFX" --help 2>/dev/null | grep -qE '^ +render '; then
     ASAN_OPTIONS=detect_leaks=0 "$SSFX" render cornell --out "$OUT/x"
   contains render_nodriver "$OUT/render_nodriver.err" "Vulkan"
   [ ! -e "$OUT/x" ] || { echo "FAIL render: a failed run left $OUT/x"; fail=1; }
-  # Adaptive supersampling on a rendered G-buffer, with its reference; the Table 1 experiment.
+  # Adaptive supersampling on a rendered G-buffer, beside brute force; the Table 1 experiment.
   check help_deferred 0 $VK "$SSFX" deferred --help
-  check deferred 0 $VK "$SSFX" deferred --scene atrium --size 64x48 --ss 3 --reference --stall 10 --out "$OUT/d"
-  for f in image.png samples.png k_depth.png k_normal.png k_shading.png reference.png error.png; do
+  check deferred 0 $VK "$SSFX" deferred --scene atrium --size 64x48 --ss 3 --brute-force --stall 10 --out "$OUT/d"
+  for f in image.png samples.png k_depth.png k_normal.png k_shading.png brute_force.png error.png; do
     [ -s "$OUT/d/$f" ] || { echo "FAIL deferred: no $f"; fail=1; }
   done
   contains deferred "$OUT/deferred.out" "PSNR"

@@ -127,7 +127,7 @@ TEST(Adaptive, AllSamplesReproduceTheReferenceExactly) {
         AdaptiveParams p;
         p.cDepth = 1e9f;  // every window has depth variance: k = m^2 everywhere
         const auto a = adaptiveSupersampling(scene, g, p);
-        const auto r = referenceSupersampling(scene, g, p.shading);
+        const auto r = bruteForceSupersampling(scene, g, p.shading);
         for (auto k : a.samples.pixels()) ASSERT_EQ(k, m * m);
         EXPECT_EQ(a.image, r.image) << "m = " << m;  // bit for bit
         // Every sample, plus the first one again (textured: its footprint changed).
@@ -174,7 +174,7 @@ TEST(Adaptive, BadParametersAreRejected) {
     EXPECT_THROW(adaptiveSupersampling(scene, g, {}), Error);
     g = handMade(scene, 4, 4, 2, false);
     g.material[3] = 999;
-    EXPECT_THROW(referenceSupersampling(scene, g, {}), Error);
+    EXPECT_THROW(bruteForceSupersampling(scene, g, {}), Error);
 }
 
 // Properties of every method of the deferred registry (new ones are covered automatically):
@@ -220,7 +220,7 @@ TEST_F(RenderTest, AdaptiveOnARenderedGBufferIsCloseToTheReferenceWithFewerSampl
     const auto a2 = adaptiveSupersampling(scene, g, p, Exec{2});
     EXPECT_EQ(a1.image, a2.image);  // deterministic for any thread count
     EXPECT_EQ(a1.shaded, a2.shaded);
-    const auto r = referenceSupersampling(scene, g, p.shading, Exec{2});
+    const auto r = bruteForceSupersampling(scene, g, p.shading, Exec{2});
     const double psnr = 10.0 * std::log10(1.0 / mse(a1.image, r.image));
     EXPECT_GT(psnr, 35.0);
     EXPECT_LT(a1.shadedPercent(), 75.0);

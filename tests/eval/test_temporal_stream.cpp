@@ -106,7 +106,7 @@ TEST(TemporalStream, ApngFramesGiveTheFiguresOfTheDrawnFramesAndOfANaiveComputat
         for (int t = 0; t < frames; ++t) {
             const int u = (t + 1) % frames;
             const auto &o0 = drawn.outputs[m][std::size_t(t)], &o1 = drawn.outputs[m][std::size_t(u)];
-            const auto &r0 = drawn.reference[std::size_t(t)], &r1 = drawn.reference[std::size_t(u)];
+            const auto &r0 = drawn.truth[std::size_t(t)], &r1 = drawn.truth[std::size_t(u)];
             for (int y = 0; y < h; ++y)
                 for (int x = 0; x < w; ++x)
                     for (int c = 0; c < 3; ++c) {
@@ -124,11 +124,11 @@ TEST(TemporalStream, ApngFramesGiveTheFiguresOfTheDrawnFramesAndOfANaiveComputat
     o.onFrame = [&](int t, const std::vector<ImageRgba8>& outs, const ImageRgba8& ref) {
         EXPECT_EQ(t, seen++);
         EXPECT_EQ(outs.size(), 4u);
-        EXPECT_EQ(ref, drawn.reference[std::size_t(t)]);
+        EXPECT_EQ(ref, drawn.truth[std::size_t(t)]);
     };
     const auto again = eval::evaluateTemporal(*eval::apngFrames(dir.string(), "bar"), o);
     EXPECT_EQ(seen, frames);
-    EXPECT_TRUE(again.outputs.empty() && again.reference.empty());
+    EXPECT_TRUE(again.outputs.empty() && again.truth.empty());
     EXPECT_EQ(again.results[1].flickerLevels, drawn.results[1].flickerLevels);
 }
 

@@ -2,7 +2,7 @@
 // Supersampling for Deferred Anti-Aliasing", JCGT 2(1) 2013; spec adaptive_ss.md): shade
 // the first sample of each pixel's m x m G-buffer window, decide per pixel how many samples
 // k it needs from depth variance, normal cone and luminance range, shade k - 1 more in
-// ordered-dither order and average. The reference shades all m^2 samples.
+// ordered-dither order and average. Brute-force supersampling shades all m^2 samples.
 #pragma once
 
 #include <array>
@@ -63,17 +63,17 @@ struct DeferredResult {
     ImageF kDepth, kNormal, kShading; //!< the metrics' values (adaptive only; paper Figure 8)
     std::int64_t shaded = 0;          //!< samples shaded (a reshaded first sample counts again)
     std::int64_t possible = 0;        //!< width * height * m^2
-    double firstMs = 0, evaluateMs = 0, restMs = 0;  //!< per phase (adaptive); restMs = all (reference)
+    double firstMs = 0, evaluateMs = 0, restMs = 0;  //!< per phase (adaptive); restMs = all (brute force)
     double shadedPercent() const { return possible ? 100.0 * double(shaded) / double(possible) : 0.0; }
     double totalMs() const { return firstMs + evaluateMs + restMs; }
 };
 
 //! The method. Where k > 1 and the first sample is textured, it is shaded again with the
-//! k-sample footprint so that k = m^2 gives exactly the reference (and counted).
+//! k-sample footprint so that k = m^2 gives exactly brute force (and counted).
 DeferredResult adaptiveSupersampling(const scene::Scene& scene, const scene::GBuffer& gbuffer,
                                      const AdaptiveParams& params, const Exec& exec = {});
 //! Brute force: every sample with the 1/m footprint, averaged in dither order.
-DeferredResult referenceSupersampling(const scene::Scene& scene, const scene::GBuffer& gbuffer,
+DeferredResult bruteForceSupersampling(const scene::Scene& scene, const scene::GBuffer& gbuffer,
                                       const ShadingParams& params, const Exec& exec = {});
 
 }  // namespace ssfx::deferred

@@ -1,5 +1,5 @@
 // The deferred family's registry: adaptive (the paper's method) and brute-force (every
-// sample shaded, the reference it is measured against). MethodDesc plus how each is run.
+// sample shaded, brute force, which it is measured against). MethodDesc plus how each is run.
 #pragma once
 
 #include <span>

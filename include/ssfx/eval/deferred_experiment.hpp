@@ -1,7 +1,7 @@
 // The adaptive supersampling paper's Table 1 on our scenes (adaptive_ss.md "Evaluation to
 // reproduce"): for m = 1 (plain and + fxaa3d), 2, 3, 4 the time per frame (G-buffer on the
 // Vulkan device, shading on the CPU, total), the shading time with a stall that makes
-// shading dominate, MSE and PSNR against the reference at the same m, and the percentage of
+// shading dominate, MSE and PSNR against brute-force supersampling at the same m, and the percentage of
 // samples shaded; plus the images of the paper's figures (sample-count heat map, absolute
 // error, the metrics' separate contributions). Built in the ssfx_deferred library (it
 // needs the renderer).

@@ -1,6 +1,6 @@
 // The DDAA paper's quality protocol (spec ppaa.md section 3, Table 2), on any directory of
 // renders named like ssfx's test images: NAME.png (1x), NAMEx2.png, NAMEx4.png and
-// NAMEx8.png (the reference), optionally NAME_METHOD.png (a method's output, for
+// NAMEx8.png (the truth), optionally NAME_METHOD.png (a method's output, for
 // OutputSource::Given).
 //
 // For every image and method: the method's 1x output (ssaax2 and ddaa2p take the x2
@@ -57,11 +57,11 @@ struct QualityTable {
     double meanSsim(std::size_t m) const;
 };
 
-//! PSNR and SSIM of a 1x output against an x8 reference (the output is upscaled x8).
+//! PSNR and SSIM of a 1x output against the x8 render (the truth) (the output is upscaled x8).
 struct Score {
     double psnr, ssim;
 };
-Score scoreAgainstX8(ImageView<const Rgba8> output1x, ImageView<const Rgba8> reference8x, const Exec& exec = {});
+Score scoreAgainstX8(ImageView<const Rgba8> output1x, ImageView<const Rgba8> render8x, const Exec& exec = {});
 
 QualityTable evaluateQuality(const std::string& dir, const QualityOptions& options);
 

@@ -3,8 +3,8 @@
 // animations. `ssfx eval report --out DIR` and `make demo` write it.
 //
 //   DIR/index.html                 tables, plots, viewers, method notes
-//   DIR/images/NAME*.png           renders (x1..x8), NAME_METHOD.png outputs, NAME_reference.png
-//   DIR/anim/NAME_METHOD.png       animated outputs (APNG), NAME_reference.png, NAME_input.png
+//   DIR/images/NAME*.png           renders (x1..x8), NAME_METHOD.png outputs, NAME_truth.png (x8 resolved)
+//   DIR/anim/NAME_METHOD.png       animated outputs (APNG), NAME_truth.png, NAME_input.png
 //   DIR/plots/*.png                charts (Cairo)
 //   DIR/data/*.json, *.md          every table as data
 //   DIR/methods/ID.html            each method's doc (embedded in the binary at build time)
@@ -29,7 +29,7 @@ struct ReportOptions {
     int speedRepetitions = 20;         //!< per method and image
     //! The DDAA author's data (../shared/reference/ppaa); when it exists the report adds the
     //! reproduction of the paper's rows from the author's outputs and from ours.
-    std::string referenceDir;
+    std::string authorDataDir;
     //! Fewer repetitions and every 4th animation frame: for tests of the report itself.
     bool quick = false;
     //! Also run the SAO experiments (eval/ao_experiments.hpp) into DIR/ao/ and show them.

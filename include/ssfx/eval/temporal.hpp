@@ -3,14 +3,14 @@
 //
 // Given an animation of T frames rendered at 1x, 2x, 4x and 8x (same geometry), let
 // R_t = the x8 frame t resolved to 1x with the Mitchell filter (aa::downscaleMitchell, the
-// supersampled reference) and O_t = the method's output for frame t (ssaax2/ddaa2p take the
+// supersampled truth) and O_t = the method's output for frame t (ssaax2/ddaa2p take the
 // x2 frame, ssaax4 the x4 frame). With frame-to-frame differences, taken around the loop,
 //   dO_t = O_{(t+1) mod T} - O_t,   dR_t = R_{(t+1) mod T} - R_t   (RGB in [0, 1], signed),
 //   flicker   = sqrt(mean over t, pixels and RGB of (dO_t - dR_t)^2)   (reported in levels, x255)
 //   tPSNR     = 10 log10(1 / mean((dO_t - dR_t)^2))                   (dB, higher is steadier)
 //   PSNR      = 10 log10(1 / mean over t of mse(O_t, R_t))             (per-frame quality at 1x)
-// A method that changes a pixel exactly as the reference changes it has flicker 0; an
-// aliased edge that jumps a whole pixel while the reference moves smoothly scores badly.
+// A method that changes a pixel exactly as the truth changes it has flicker 0; an
+// aliased edge that jumps a whole pixel while the truth moves smoothly scores badly.
 #pragma once
 
 #include <cstdint>
@@ -50,11 +50,11 @@ struct TemporalOptions {
     MethodSettings settings;
     Exec exec;
     std::function<void(const std::string&)> progress;
-    //! Keep every 1x output and reference frame in TemporalRun (off: memory stays a few 1x
+    //! Keep every 1x output and truth frame in TemporalRun (off: memory stays a few 1x
     //! frames per method; use onFrame to write them out as they come).
     bool keepOutputs = true;
     //! Called for every frame with the methods' outputs (in `methods` order) and R_t.
-    std::function<void(int t, const std::vector<ImageRgba8>& outputs, const ImageRgba8& reference)> onFrame;
+    std::function<void(int t, const std::vector<ImageRgba8>& outputs, const ImageRgba8& truth)> onFrame;
 };
 
 struct TemporalResult {
@@ -67,7 +67,7 @@ struct TemporalResult {
 struct TemporalRun {
     std::vector<TemporalResult> results;            //!< one per method, in order
     std::vector<std::vector<ImageRgba8>> outputs;   //!< outputs[m][t] (with keepOutputs)
-    std::vector<ImageRgba8> reference;              //!< R_t (with keepOutputs)
+    std::vector<ImageRgba8> truth;                  //!< R_t (with keepOutputs)
 };
 
 //! Runs every method on every frame, streaming: frame t of each scale is read, the x8 one
@@ -88,8 +88,8 @@ TemporalRun evaluateTemporalGiven(FrameSource& source, const std::vector<std::pa
 class TemporalScorer {
 public:
     explicit TemporalScorer(Exec exec = {}) : exec_(exec) {}
-    //! Output and reference of the next frame (all frames of one size).
-    void add(ImageView<const Rgba8> output, ImageView<const Rgba8> reference);
+    //! Output and truth of the next frame (all frames of one size).
+    void add(ImageView<const Rgba8> output, ImageView<const Rgba8> truth);
     //! The scores, closing the loop from the last frame to the first. Needs >= 2 frames.
     TemporalResult result() const;
 
@@ -101,8 +101,8 @@ private:
     int frames_ = 0;
 };
 
-//! The metrics for one sequence of outputs against a reference sequence (same sizes).
-TemporalResult temporalScore(const std::vector<ImageRgba8>& outputs, const std::vector<ImageRgba8>& reference,
+//! The metrics for one sequence of outputs against the truth's sequence (same sizes).
+TemporalResult temporalScore(const std::vector<ImageRgba8>& outputs, const std::vector<ImageRgba8>& truth,
                              const Exec& exec = {});
 
 //! Markdown table (method, flicker, tPSNR, PSNR) and JSON {"METHOD": {"flicker_levels", ...}}.

@@ -2,7 +2,7 @@
 // fontconfig/FreeType with the DejaVu fonts). Each image is one vector description in
 // units of its scale-1 size; scale 2, 4 and 8 render the same geometry with coordinates
 // and line widths multiplied, which is what the DDAA paper's protocol needs (spec ppaa.md
-// section 3: the x8 render is the reference, the x2/x4 renders feed the resolves).
+// section 3: the x8 render is the truth, the x2/x4 renders feed the resolves).
 //
 //   lines     600x600  stars of thin/thick lines, growing squares and circles, near-horizontal
 //                      fans, grids rotated by 0/1/5/10/20/45 degrees (cells 10, 5, 2 px)
