@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 #include <vector>
 
@@ -45,13 +46,31 @@ nlohmann::ordered_json toJson(const MethodDesc& m) {
         } else {
             // A float member's default as the shortest decimal that names it (0.166, not 0.165999...).
             r["default"] = p.kind == ParamKind::Real ? nlohmann::ordered_json(std::stod(p.valueText(p.defaultValue())))
-                                                    : nlohmann::ordered_json(std::int64_t(p.defaultValue()));
+                                                     : nlohmann::ordered_json(std::int64_t(p.defaultValue()));
             r["min"] = p.min, r["max"] = p.max;
         }
         r["doc"] = p.doc;
         j["params"].push_back(r);
     }
     return j;
+}
+
+// A Markdown table cell: pipes escaped (a range "0|1" or "|dz|" would split the row).
+std::string cell(std::string_view text) {
+    std::string out;
+    for (char c : text) out += c == '|' ? std::string("\\|") : std::string(1, c);
+    return out;
+}
+
+// One method's parameter table (docs/parameters.md, and the block between the markers in
+// docs/methods/ID.md).
+std::string paramsTable(const MethodDesc& m) {
+    if (m.params.empty()) return "No parameters.\n";
+    std::string md = "| parameter | kind | default | range | unit | meaning |\n|---|---|---|---|---|---|\n";
+    for (const ParamInfo& p : m.params)
+        md += fmt::format("| `{}` | {} | {} | {} | {} | {} |\n", p.name, kindName(p.kind),
+                          cell(p.valueText(p.defaultValue())), cell(p.rangeText()), cell(p.unit), cell(p.doc));
+    return md;
 }
 
 std::string markdown(const std::vector<const MethodDesc*>& all) {
@@ -63,17 +82,10 @@ std::string markdown(const std::vector<const MethodDesc*>& all) {
         if (m->family != family) md += fmt::format("\n## Family `{}`\n", family = m->family);
         md += fmt::format("\n### `{}`: {}\n\nInput: {}. Backends: {}.", m->id, m->summary, m->inputs,
                           fmt::join(m->backends, ", "));
-        if (!m->presets.empty()) md += fmt::format(" Presets: {} (the first is the default).", fmt::join(m->presets, ", "));
+        if (!m->presets.empty())
+            md += fmt::format(" Presets: {} (the first is the default).", fmt::join(m->presets, ", "));
         if (!m->citation.empty()) md += fmt::format(" {}.", m->citation);
-        md += "\n";
-        if (m->params.empty()) {
-            md += "\nNo parameters.\n";
-            continue;
-        }
-        md += "\n| parameter | kind | default | range | unit | meaning |\n|---|---|---|---|---|---|\n";
-        for (const ParamInfo& p : m->params)
-            md += fmt::format("| `{}` | {} | {} | {} | {} | {} |\n", p.name, kindName(p.kind), p.valueText(p.defaultValue()),
-                              p.rangeText(), p.unit, p.doc);
+        md += "\n\n" + paramsTable(*m);
     }
     return md;
 }
@@ -81,7 +93,8 @@ std::string markdown(const std::vector<const MethodDesc*>& all) {
 void printText(const MethodDesc& m) {
     fmt::print("{:<12} {:<9} {:<8} {}\n", m.id, m.family, fmt::format("{}", fmt::join(m.backends, ",")), m.summary);
     std::string notes = fmt::format("input: {}", m.inputs);
-    if (!m.presets.empty()) notes += fmt::format("; presets: {} (the first is the default)", fmt::join(m.presets, ", "));
+    if (!m.presets.empty())
+        notes += fmt::format("; presets: {} (the first is the default)", fmt::join(m.presets, ", "));
     if (!m.citation.empty()) notes += "; " + std::string(m.citation);
     fmt::print("             {}\n", notes);
     for (const ParamInfo& p : m.params)
@@ -97,29 +110,49 @@ void addMethodsCommand(CLI::App& app) {
     auto json = std::make_shared<bool>(false);
     auto md = std::make_shared<bool>(false);
     auto family = std::make_shared<std::string>();
+    auto method = std::make_shared<std::string>();
     cmd->add_flag("--ids", *idsOnly, "Print only the method ids, one per line");
-    cmd->add_flag("--json", *json, "Print JSON: an array of methods with their parameters (kind, unit, default, range)");
+    cmd->add_flag("--json", *json,
+                  "Print JSON: an array of methods with their parameters (kind, unit, default, range)");
     cmd->add_flag("--markdown", *md, "Print the parameter tables as Markdown (docs/parameters.md)");
     cmd->add_option("--family", *family, fmt::format("Only one family: {}", fmt::join(kFamilies, ", ")));
-    cmd->footer("Columns: id, family, backends, summary; then the inputs, presets, citation and each -p parameter\n"
-                "with its default, range (or choices) and unit. The tables are the params structs' own\n"
-                "(include/ssfx/*/...: one declaration per parameter).");
-    cmd->callback([idsOnly, json, md, family] {
+    cmd->add_option("--method", *method,
+                    "With --markdown: only this method's parameter table (the block in docs/methods/ID.md)");
+    cmd->footer(
+        "Columns: id, family, backends, summary; then the inputs, presets, citation and each -p parameter\n"
+        "with its default, range (or choices) and unit. The tables are the params structs' own\n"
+        "(include/ssfx/*/...: one declaration per parameter).");
+    cmd->callback([idsOnly, json, md, family, method] {
         bool known = family->empty();
         for (const std::string_view f : kFamilies) known = known || f == *family;
         if (!known) throw Error(fmt::format("--family '{}' is not one of {}", *family, fmt::join(kFamilies, ", ")));
         std::vector<const MethodDesc*> chosen;
         for (const MethodDesc* m : allMethods())
             if (family->empty() || m->family == *family) chosen.push_back(m);
+        if (!method->empty()) {
+            if (!*md) throw Error("--method goes with --markdown");
+            const auto it =
+                std::find_if(chosen.begin(), chosen.end(), [&](const MethodDesc* m) { return m->id == *method; });
+            if (it == chosen.end()) {
+                std::vector<std::string_view> ids;
+                for (const MethodDesc* m : chosen) ids.push_back(m->id);
+                throw Error(fmt::format("--method '{}' is not one of {}", *method, fmt::join(ids, ", ")));
+            }
+            fmt::print("{}", paramsTable(**it));
+            return;
+        }
         if (*md) {
             fmt::print("{}", markdown(chosen));
             return;
         }
         nlohmann::ordered_json all = nlohmann::ordered_json::array();
         for (const MethodDesc* m : chosen) {
-            if (*json) all.push_back(toJson(*m));
-            else if (*idsOnly) fmt::print("{}\n", m->id);
-            else printText(*m);
+            if (*json)
+                all.push_back(toJson(*m));
+            else if (*idsOnly)
+                fmt::print("{}\n", m->id);
+            else
+                printText(*m);
         }
         if (*json) fmt::print("{}\n", all.dump(2));
     });

@@ -33,11 +33,16 @@ contains methods_ao "$OUT/methods_ao.out" "pyramidFilter=rotated-grid"
 check methods_json 0 "$SSFX" methods --json
 contains methods_json "$OUT/methods_json.out" '"backends"'
 check methods_family 2 "$SSFX" methods --family nope
-# docs/parameters.md is the tables as the tool prints them (with every family built).
+# docs/parameters.md and the parameter block of each docs/methods/ID.md are the tables as
+# the tool prints them (with every family built; scripts/update_docs.sh regenerates them).
 check methods_md 0 "$SSFX" methods --markdown
+check methods_md_one 0 "$SSFX" methods --markdown --method sao
+contains methods_md_one "$OUT/methods_md_one.out" "numSpiralTurns"
+check methods_md_unknown 2 "$SSFX" methods --markdown --method nope
+contains methods_md_unknown "$OUT/methods_md_unknown.err" "is not one of"
 if grep -q '^## Family `deferred`' "$OUT/methods_md.out"; then
-  cmp -s "$OUT/methods_md.out" "$SRC/docs/parameters.md" ||
-    { echo "FAIL methods_md: docs/parameters.md differs from ssfx methods --markdown (regenerate it)"; fail=1; }
+  bash "$SRC/scripts/update_docs.sh" --check "$SSFX" "$OUT/docs_check" ||
+    { echo "FAIL methods_md: the parameter docs differ from the tables (run scripts/update_docs.sh)"; fail=1; }
 fi
 check presets 0 "$SSFX" aa --list-presets
 contains presets "$OUT/presets.out" "extreme"

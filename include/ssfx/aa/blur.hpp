@@ -5,8 +5,8 @@
 #include <array>
 
 #include "ssfx/core/image.hpp"
-#include "ssfx/core/params.hpp"
 #include "ssfx/core/parallel.hpp"
+#include "ssfx/core/params.hpp"
 
 namespace ssfx::aa {
 
@@ -15,7 +15,9 @@ struct BlurParams {
 };
 //! BlurParams' table (params.hpp): ranges, docs; defaults are the initialisers above.
 inline constexpr std::array kBlurParams{
-    real<&BlurParams::sigma>("sigma", "px", 0.05, 10, "Gaussian sigma"),
+    real<&BlurParams::sigma>("sigma", "px", 0.05, 10,
+                             "Gaussian sigma (section 3.1: 0.6); weights 1, w1 = exp(-1 / (2 sigma^2)) at the edges, "
+                             "w1^2 at the corners"),
 };
 
 //! Blurs RGB; alpha is copied from the centre pixel. Clamp-to-edge at the borders.

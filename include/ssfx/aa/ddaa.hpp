@@ -7,9 +7,9 @@
 #include <array>
 
 #include "ssfx/aa/presets.hpp"
-#include "ssfx/core/params.hpp"
 #include "ssfx/core/image.hpp"
 #include "ssfx/core/parallel.hpp"
+#include "ssfx/core/params.hpp"
 #include "ssfx/core/sample.hpp"
 
 namespace ssfx::aa {
@@ -38,19 +38,23 @@ constexpr std::array<ParamInfo, 5> ddaa1Rows() {
         realIn<P, &Ddaa1Params::edgeThresholdMin>("edgeThresholdMin", "luma", 0, 1, kEdgeThresholdMinDoc),
         realIn<P, &Ddaa1Params::edgeThreshold>("edgeThreshold", "ratio", 0, 1, kEdgeThresholdDoc),
         realIn<P, &Ddaa1Params::strength>("strength", "", 0, 100,
-                                             "DDAA_STRENGTH: diffusion = min(1, strength * sqrt(|gradient|))"),
-        realIn<P, &Ddaa1Params::maxDiffusion>("maxDiffusion", "px", 0, 1, "largest diffusion offset"),
-        realIn<P, &Ddaa1Params::ridgeFactor>("ridgeFactor", "", 0, 1000,
-                                                "small-structure preservation: ridges/valleys diffuse less"),
+                                          "DDAA_STRENGTH: diffusion = min(1, strength * sqrt(|gradient|))"),
+        realIn<P, &Ddaa1Params::maxDiffusion>("maxDiffusion", "px", 0, 1,
+                                              "largest offset of the two reads (\"about half a pixel\", Figure 5)"),
+        realIn<P, &Ddaa1Params::ridgeFactor>(
+            "ridgeFactor", "", 0, 1000,
+            "ridges and valleys diffuse less: strength *= 1 - min(1, ridgeFactor min(|g1|, |g2|))"),
     }};
 }
 }  // namespace detail
 //! Ddaa1Params' and Ddaa2Params' tables (params.hpp); the defaults are the initialisers above.
-inline constexpr auto kDdaa1Params = concat(detail::ddaa1Rows<Ddaa1Params>(), std::array{
-    real<&Ddaa1Params::chromaWeight>("chromaWeight", "", 0, 4, kChromaWeightDoc)});
-inline constexpr auto kDdaa2Params = concat(detail::ddaa1Rows<Ddaa2Params>(), std::array{
-    integer<&Ddaa2Params::searchRounds>("searchRounds", "", 1, 5, "edge-search rounds of 3 pixels per side"),
-    realIn<Ddaa2Params, &Ddaa1Params::chromaWeight>("chromaWeight", "", 0, 4, kChromaWeightDoc)});
+inline constexpr auto kDdaa1Params =
+    concat(detail::ddaa1Rows<Ddaa1Params>(),
+           std::array{real<&Ddaa1Params::chromaWeight>("chromaWeight", "", 0, 4, kChromaWeightDoc)});
+inline constexpr auto kDdaa2Params = concat(
+    detail::ddaa1Rows<Ddaa2Params>(),
+    std::array{integer<&Ddaa2Params::searchRounds>("searchRounds", "", 1, 5, "edge-search rounds of 3 pixels per side"),
+               realIn<Ddaa2Params, &Ddaa1Params::chromaWeight>("chromaWeight", "", 0, 4, kChromaWeightDoc)});
 
 Ddaa1Params ddaa1ParamsFor(Preset p);
 Ddaa2Params ddaa2ParamsFor(Preset p);

@@ -7,9 +7,9 @@
 #include <array>
 
 #include "ssfx/aa/presets.hpp"
-#include "ssfx/core/params.hpp"
 #include "ssfx/core/image.hpp"
 #include "ssfx/core/parallel.hpp"
+#include "ssfx/core/params.hpp"
 #include "ssfx/core/sample.hpp"
 
 namespace ssfx::aa {
@@ -29,8 +29,12 @@ struct Fxaa3cParams {
 inline constexpr std::array kFxaa3cParams{
     real<&Fxaa3cParams::edgeThresholdMin>("edgeThresholdMin", "luma", 0, 1, kEdgeThresholdMinDoc),
     real<&Fxaa3cParams::edgeThreshold>("edgeThreshold", "ratio", 0, 1, kEdgeThresholdDoc),
-    real<&Fxaa3cParams::edgeSharpness>("edgeSharpness", "", 1, 64, "FXAA console sharpness (limits the long taps)"),
-    real<&Fxaa3cParams::diagonalOffset>("diagonalOffset", "px", 1e-3, 2, "offset of the diagonal reads (Lottes: 0.5)"),
+    real<&Fxaa3cParams::edgeSharpness>(
+        "edgeSharpness", "", 1, 64,
+        "FXAA_CONSOLE__EDGE_SHARPNESS: d2 = clamp(d1 / (min(|d1.x|, |d1.y|) edgeSharpness), -2, 2)"),
+    real<&Fxaa3cParams::diagonalOffset>(
+        "diagonalOffset", "px", 1e-3, 2,
+        "offset of the diagonal reads (the DDAA paper's comparison: 1; Lottes' shader: 0.5)"),
     real<&Fxaa3cParams::chromaWeight>("chromaWeight", "", 0, 4, kChromaWeightDoc),
 };
 
@@ -49,9 +53,10 @@ struct Fxaa3dParams {
 inline constexpr std::array kFxaa3dParams{
     real<&Fxaa3dParams::edgeThresholdMin>("edgeThresholdMin", "luma", 0, 1, kEdgeThresholdMinDoc),
     real<&Fxaa3dParams::edgeThreshold>("edgeThreshold", "ratio", 0, 1, kEdgeThresholdDoc),
-    real<&Fxaa3dParams::subpix>("subpix", "", 0, 1, "sub-pixel aliasing removal amount"),
+    real<&Fxaa3dParams::subpix>("subpix", "", 0, 1, "fxaaQualitySubpix: the sub-pixel aliasing removal amount"),
     boolean<&Fxaa3dParams::paperSearchQuirk>(
-        "paperSearchQuirk", "1: side 2 steps back after its first read, as in the paper's shader; 0: FXAA 3.11 as written"),
+        "paperSearchQuirk",
+        "1: side 2 steps back after its first read, as in the paper's shader; 0: FXAA 3.11 as written"),
     real<&Fxaa3dParams::chromaWeight>("chromaWeight", "", 0, 4, kChromaWeightDoc),
 };
 

@@ -30,9 +30,9 @@ struct Region {
 
 //! The separable bilateral reconstruction (section 2.4); shared with the baseline.
 struct BilateralParams {
-    int blurRadius = 3;           //!< taps on each side (the paper's 7-tap filter)
-    int blurStride = 3;           //!< px between taps (the 2x2 pass already averaged)
-    float blurSigma = 2.0f;       //!< Gaussian sigma in taps (the paper gives none; our choice)
+    int blurRadius = 3;      //!< taps on each side (the paper's 7-tap filter)
+    int blurStride = 3;      //!< px between taps (the 2x2 pass already averaged)
+    float blurSigma = 2.0f;  //!< Gaussian sigma in taps (the paper gives none; our choice)
     //! 1/m: a tap's weight is multiplied by max(0, 1 - edgeSharpness * |z_tap - z|).
     //! The paper's 2^11 on its key z / (-200 m) is 2048 / 200 = 10.24 per metre.
     float edgeSharpness = 10.24f;
@@ -53,39 +53,42 @@ struct BilateralParams {
 template <auto Blur>
 constexpr std::array<ParamInfo, 7> bilateralRows() {
     return {{
-        integer<Blur, &BilateralParams::blurRadius>("blurRadius", "taps", 0, 8, "taps on each side of the bilateral blur"),
+        integer<Blur, &BilateralParams::blurRadius>(
+            "blurRadius", "taps", 0, 8, "taps on each side of the bilateral blur (the paper: 7 taps, stride 3)"),
         integer<Blur, &BilateralParams::blurStride>("blurStride", "px", 1, 8, "pixels between the blur's taps"),
-        real<Blur, &BilateralParams::blurSigma>("blurSigma", "taps", 1e-3, 16, "Gaussian sigma of the blur's weights"),
-        real<Blur, &BilateralParams::edgeSharpness>("edgeSharpness", "1/m", 0, 1e6,
-                                                     "depth edge: a tap weighs max(0, 1 - edgeSharpness |z_tap - z|)"),
+        real<Blur, &BilateralParams::blurSigma>(
+            "blurSigma", "taps", 1e-3, 16, "Gaussian sigma of the blur's weights (the paper gives none; our choice)"),
+        real<Blur, &BilateralParams::edgeSharpness>(
+            "edgeSharpness", "1/m", 0, 1e6,
+            "depth edge: a tap weighs max(0, 1 - edgeSharpness |z_tap - z|) (the paper: 2^11 on the key z / -200 m)"),
         boolean<Blur, &BilateralParams::blurReleasedWeights>(
             "blurReleasedWeights", "the released blur's spatial weights 0.3 + gaussian[|t|] (blurRadius <= 4)"),
         boolean<Blur, &BilateralParams::blurZeroOutside>("blurZeroOutside",
                                                          "taps beyond the region weigh 0 (the released passes)"),
         real<Blur, &BilateralParams::blurEpsilon>("blurEpsilon", "", 0, 1,
-                                                   "A = sum / (sum of weights + blurEpsilon); released: 1e-4"),
+                                                  "A = sum / (sum of weights + blurEpsilon); released: 1e-4"),
     }};
 }
 
 struct SaoParams {
-    float radius = 1.0f;        //!< m: world-space sample radius r
-    float bias = 0.01f;         //!< m: beta, ignores tiny occluders from depth precision
-    float epsilon = 0.01f;      //!< m^2: keeps the falloff finite as v.v -> 0
-    float intensity = 1.0f;     //!< A is raised to this power
-    int numSamples = 9;         //!< s (paper: 9)
-    int numSpiralTurns = 7;     //!< tau (paper: 7 for s = 9; see spiralTurnsFor())
-    int logQ = 3;               //!< log2 q', the mip-level switch distance (2^3..2^5 equivalent)
-    int maxMip = 5;             //!< MAX_MIP, pyramid levels above 0
-    bool usePyramid = true;     //!< false: every tap reads level 0 ("SAO without pyramid", Fig. 5)
+    float radius = 1.0f;     //!< m: world-space sample radius r
+    float bias = 0.01f;      //!< m: beta, ignores tiny occluders from depth precision
+    float epsilon = 0.01f;   //!< m^2: keeps the falloff finite as v.v -> 0
+    float intensity = 1.0f;  //!< A is raised to this power
+    int numSamples = 9;      //!< s (paper: 9)
+    int numSpiralTurns = 7;  //!< tau (paper: 7 for s = 9; see spiralTurnsFor())
+    int logQ = 3;            //!< log2 q', the mip-level switch distance (2^3..2^5 equivalent)
+    int maxMip = 5;          //!< MAX_MIP, pyramid levels above 0
+    bool usePyramid = true;  //!< false: every tap reads level 0 ("SAO without pyramid", Fig. 5)
     PyramidFilter pyramidFilter = PyramidFilter::RotatedGrid;
     float quadThreshold = 0.02f;  //!< m: 2x2 bilateral averages where |dz| is below this
     BilateralParams blur;
-    int guardBand = 0;          //!< px on each side of the depth buffer not output
+    int guardBand = 0;  //!< px on each side of the depth buffer not output
     //! The paper's bandwidth option (section 2.3, "pack A and z"): the blur reads A as 8 bits
     //! and z as a 16-bit key, key = z / packZMin in [0, 1] stored as its integer and fraction
     //! parts of key * 256 (two 8-bit channels). Default off: the blur reads float A and z.
     bool packBlurInput = false;
-    float packZMin = -200.0f;   //!< m: z_min of the key (the paper's -200 m)
+    float packZMin = -200.0f;  //!< m: z_min of the key (the paper's -200 m)
     //! With packBlurInput: the buffer as the released shaders store it between the passes
     //! (RGB8: A in R, the key in G and B), key = clamp(z * (1 / packZMin), 0, 1) packed as
     //! (floor(256 key) / 256, 256 key - floor(256 key)) and read back as
@@ -114,27 +117,31 @@ inline constexpr auto kSaoParams = concat(
         real<&SaoParams::epsilon>("epsilon", "m^2", 1e-9, 1, "keeps the falloff finite as v.v -> 0"),
         real<&SaoParams::intensity>("intensity", "", 0, 10, "A is raised to this power (linearIntensity: a factor)"),
         integer<&SaoParams::numSamples>("numSamples", "", 1, 64, "s, taps per pixel"),
-        integer<&SaoParams::numSpiralTurns>("numSpiralTurns", "", 1, 64, "tau, turns of the tap spiral"),
+        integer<&SaoParams::numSpiralTurns>(
+            "numSpiralTurns", "", 1, 64,
+            "tau, turns of the tap spiral (spiralTurnsFor(s) gives the discrepancy-minimising table)"),
         integer<&SaoParams::logQ>("logQ", "", 0, 8, "log2 q': the distance at which a tap moves up a pyramid level"),
         integer<&SaoParams::maxMip>("maxMip", "", 0, 16, "MAX_MIP: pyramid levels above 0"),
         boolean<&SaoParams::usePyramid>("usePyramid", "0: every tap reads level 0 (SAO without the pyramid)"),
         choice<&SaoParams::pyramidFilter>("pyramidFilter", kPyramidFilterNames,
                                           "z pyramid filter (rotated-grid: the paper's; others: Table 1)"),
-        real<&SaoParams::quadThreshold>("quadThreshold", "m", 0, 10, "2x2 bilateral averages where |dz| is below this"),
+        real<&SaoParams::quadThreshold>("quadThreshold", "m", 0, 10,
+                                        "the 2x2 quad bilateral averages where |dz| is below this (released code)"),
     },
-    concat(bilateralRows<&SaoParams::blur>(),
-           std::array{
-               integer<&SaoParams::guardBand>("guardBand", "px", 0, 4096, "guard band on each side, not output"),
-               boolean<&SaoParams::packBlurInput>("packBlurInput", "the blur reads A as 8 bits and z as a 16-bit key"),
-               real<&SaoParams::packZMin>("packZMin", "m", -1e5, -1e-3, "z_min of the packed key"),
-               boolean<&SaoParams::releasedPacking>("releasedPacking",
-                                                    "with packBlurInput: the released shaders' RGB8 storage"),
-               real<&SaoParams::spiralTurnAngle>("spiralTurnAngle", "rad", 6, 6.5,
-                                                 "angle of one spiral turn (2 pi; released: 6.28)"),
-               boolean<&SaoParams::spinInFloat>("spinInFloat", "the released tapLocation(): tap angles summed in float"),
-               boolean<&SaoParams::linearIntensity>("linearIntensity",
-                                                    "the released estimator: intensity as a linear factor"),
-           }));
+    concat(
+        bilateralRows<&SaoParams::blur>(),
+        std::array{
+            integer<&SaoParams::guardBand>("guardBand", "px", 0, 4096, "guard band on each side, not output"),
+            boolean<&SaoParams::packBlurInput>("packBlurInput", "the blur reads A as 8 bits and z as a 16-bit key"),
+            real<&SaoParams::packZMin>("packZMin", "m", -1e5, -1e-3, "z_min of the packed key"),
+            boolean<&SaoParams::releasedPacking>("releasedPacking",
+                                                 "with packBlurInput: the released shaders' RGB8 storage"),
+            real<&SaoParams::spiralTurnAngle>("spiralTurnAngle", "rad", 6, 6.5,
+                                              "angle of one spiral turn (2 pi; released: 6.28)"),
+            boolean<&SaoParams::spinInFloat>("spinInFloat", "the released tapLocation(): tap angles summed in float"),
+            boolean<&SaoParams::linearIntensity>("linearIntensity",
+                                                 "the released estimator: intensity as a linear factor"),
+        }));
 
 //! Named configurations of SaoParams (the same mechanism as `ssfx aa --preset`):
 //!   "paper"    the defaults: the paper's text (s = 9, tau = 7, r = 1 m, beta = 0.01 m,
@@ -197,8 +204,8 @@ void quadBilateral(ImageF& a, ImageView<const float> z, Region region, float thr
 
 //! One separable bilateral pass (horizontal or vertical) over the region; taps are clamped
 //! to the region, sky pixels stay 1 and do not contribute.
-ImageF bilateralPass(const ImageF& a, ImageView<const float> z, Region region, const BilateralParams& p, bool horizontal,
-                     const Exec& exec = {});
+ImageF bilateralPass(const ImageF& a, ImageView<const float> z, Region region, const BilateralParams& p,
+                     bool horizontal, const Exec& exec = {});
 //! Into `out` (reallocated only when its size differs from the region's).
 void bilateralPass(const ImageF& a, ImageView<const float> z, Region region, const BilateralParams& p, bool horizontal,
                    ImageF& out, const Exec& exec = {});

@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "ssfx/core/camera.hpp"
-#include "ssfx/core/params.hpp"
 #include "ssfx/core/image.hpp"
+#include "ssfx/core/params.hpp"
 #include "ssfx/scene/gbuffer.hpp"
 
 namespace ssfx::deferred {
@@ -25,7 +25,9 @@ struct ImageRgbF {
     ImageRgbF() = default;
     ImageRgbF(int w, int h) : width(w), height(h), pixels(std::size_t(w) * std::size_t(h), glm::vec3(0.0f)) {}
     glm::vec3& operator()(int x, int y) { return pixels[std::size_t(y) * std::size_t(width) + std::size_t(x)]; }
-    const glm::vec3& operator()(int x, int y) const { return pixels[std::size_t(y) * std::size_t(width) + std::size_t(x)]; }
+    const glm::vec3& operator()(int x, int y) const {
+        return pixels[std::size_t(y) * std::size_t(width) + std::size_t(x)];
+    }
     friend bool operator==(const ImageRgbF&, const ImageRgbF&) = default;
 };
 //! Clamped to [0, 1] and rounded to 8 bits, alpha 255.
@@ -46,7 +48,8 @@ struct ShadingParams {
 template <auto... Path>
 constexpr std::array<ParamInfo, 4> shadingRows() {
     return {{
-        real<Path..., &ShadingParams::specular>("specular", "", 0, 1, "Blinn-Phong specular colour (white x light)"),
+        real<Path..., &ShadingParams::specular>(
+            "specular", "", 0, 1, "Blinn-Phong specular colour (white x light), added to the Lambert diffuse"),
         real<Path..., &ShadingParams::shininess>("shininess", "", 1, 10000, "Blinn-Phong exponent"),
         integer<Path..., &ShadingParams::maxAnisotropy>("maxAnisotropy", "", 1, 16, "probes of the anisotropic lookup"),
         integer<Path..., &ShadingParams::stall>("stall", "ops", 0, 1e7,
