@@ -6,7 +6,7 @@ BUILD := build/$(PRESET)
 SSFX := $(BUILD)/ssfx
 FUZZ_SECONDS ?= 60
 
-.PHONY: all setup configure build demo test asan fuzz fuzz-smoke bench install-check clean
+.PHONY: all setup configure build demo test asan fuzz fuzz-smoke bench install-check format clean
 
 all: build
 
@@ -43,6 +43,10 @@ bench: build
 	@$(BUILD)/bench/bench_ao --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 	@$(BUILD)/bench/bench_render --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 	@$(SSFX) bench
+
+# Applies .clang-format (clang-format 14) to every C++ source and header; ctest format.check checks it.
+format:
+	@find src include apps tests bench fuzz -name node_modules -prune -o \( -name '*.cpp' -o -name '*.hpp' -o -name '*.h' \) -print | xargs clang-format-14 -i
 
 clean:
 	rm -rf build out

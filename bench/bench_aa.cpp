@@ -31,9 +31,8 @@ void runMethod(benchmark::State& state, const ssfx::MethodInfo* m, int threads) 
 const bool registered = [] {
     for (const auto& m : ssfx::methods())
         for (int threads : {1, 0})
-            benchmark::RegisterBenchmark(
-                (std::string(m.id) + (threads == 1 ? "/threads:1" : "/threads:all")).c_str(),
-                [mp = &m, threads](benchmark::State& s) { runMethod(s, mp, threads); })
+            benchmark::RegisterBenchmark((std::string(m.id) + (threads == 1 ? "/threads:1" : "/threads:all")).c_str(),
+                                         [mp = &m, threads](benchmark::State& s) { runMethod(s, mp, threads); })
                 ->Unit(benchmark::kMillisecond)
                 ->UseRealTime();
     return true;

@@ -43,7 +43,8 @@ void samplePass(benchmark::State& state, bool sao, float radius) {
     ssfx::ao::AlchemyParams ap;
     ap.radius = radius;
     for (auto _ : state) {
-        auto a = sao ? ssfx::ao::saoSamplePass(pyr, proj, region, sp) : ssfx::ao::alchemySamplePass(pyr, proj, region, ap);
+        auto a =
+            sao ? ssfx::ao::saoSamplePass(pyr, proj, region, sp) : ssfx::ao::alchemySamplePass(pyr, proj, region, ap);
         benchmark::DoNotOptimize(a.data());
     }
     state.SetItemsProcessed(state.iterations() * kW * kH);

@@ -55,12 +55,14 @@ int main(int argc, char** argv) {
     }
     std::vector<std::pair<const scene::Scene*, std::string>> scenes{{&atrium, "nave"}};
     if (sponza) scenes.emplace_back(sponza.get(), "atrium");
-    const std::pair<What, const char*> kinds[] = {
-        {What::Depth, "depth_1080p"}, {What::Color, "colour_1080p"}, {What::GBuffer1, "gbuffer_1x1_1080p"},
-        {What::GBuffer4, "gbuffer_4x4_1080p"}};
+    const std::pair<What, const char*> kinds[] = {{What::Depth, "depth_1080p"},
+                                                  {What::Color, "colour_1080p"},
+                                                  {What::GBuffer1, "gbuffer_1x1_1080p"},
+                                                  {What::GBuffer4, "gbuffer_4x4_1080p"}};
     for (const auto& [scene, view] : scenes)
         for (const auto& [what, name] : kinds)
-            benchmark::RegisterBenchmark(fmt::format("{}/{}", scene->name, name).c_str(), renderBench, scene, view, what)
+            benchmark::RegisterBenchmark(fmt::format("{}/{}", scene->name, name).c_str(), renderBench, scene, view,
+                                         what)
                 ->UseManualTime()
                 ->Unit(benchmark::kMillisecond)
                 ->Iterations(what == What::GBuffer4 ? 2 : 5);

@@ -14,12 +14,12 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     static const ssfx::scene::Scene model = ssfx::scene::cornellBox();
     try {
-        const ssfx::scene::Scene s = ssfx::scene::parseSceneFile(
-            std::string_view(reinterpret_cast<const char*>(data), size), "/fuzz/scene.json",
-            [](const std::string&, double scale) {
-                if (!(scale > 0.0)) throw ssfx::Error("scale");  // importModel's own check
-                return model;
-            });
+        const ssfx::scene::Scene s =
+            ssfx::scene::parseSceneFile(std::string_view(reinterpret_cast<const char*>(data), size), "/fuzz/scene.json",
+                                        [](const std::string&, double scale) {
+                                            if (!(scale > 0.0)) throw ssfx::Error("scale");  // importModel's own check
+                                            return model;
+                                        });
         if (s.views.empty() || s.lights.empty()) __builtin_trap();
         for (const auto& [name, view] : s.views) (void)ssfx::scene::cameraSetup(view, 16, 16, 0);  // must not throw
     } catch (const ssfx::Error&) {

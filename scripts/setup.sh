@@ -15,6 +15,7 @@ PACKAGES=(
   libembree-dev                      # ray-traced AO ground truth
   libcli11-dev nlohmann-json3-dev libfmt-dev   # CLI, JSON, formatting
   clang libclang-rt-14-dev           # libFuzzer targets (fuzz smoke run in make test)
+  clang-format-14                    # the formatting check (.clang-format is pinned to 14)
   chromium                           # the HTML report's browser test (headless, via playwright-core)
 )
 

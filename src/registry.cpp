@@ -27,7 +27,8 @@ P applySettings(std::string_view id, P params, const std::array<ParamInfo, N>& t
 }
 
 void rejectParams(std::string_view id, const MethodSettings& s) {
-    if (!s.params.empty()) throw Error(fmt::format("{}: unknown parameter '{}' (this method has none)", id, s.params[0].first));
+    if (!s.params.empty())
+        throw Error(fmt::format("{}: unknown parameter '{}' (this method has none)", id, s.params[0].first));
 }
 
 void rejectPreset(std::string_view id, const MethodSettings& s) {
@@ -45,8 +46,8 @@ template <RunIntoFn Into, int Scale>
 ImageRgba8 allocating(ImageView<const Rgba8> in, const MethodSettings& s, const Exec& e) {
     checkDimensions(in.width(), in.height(), "input");
     if (in.width() % Scale != 0 || in.height() % Scale != 0)
-        throw Error(fmt::format("input size {}x{} is not divisible by {} (the method takes the {}x render)",
-                                in.width(), in.height(), Scale, Scale));
+        throw Error(fmt::format("input size {}x{} is not divisible by {} (the method takes the {}x render)", in.width(),
+                                in.height(), Scale, Scale));
     ImageRgba8 out(in.width() / Scale, in.height() / Scale);
     Into(in, out.view(), s, e);
     return out;
@@ -57,8 +58,8 @@ void intoNoaa(ImageView<const Rgba8> in, ImageView<Rgba8> out, const MethodSetti
     rejectParams("noaa", s);
     checkDimensions(in.width(), in.height(), "noaa input");
     if (out.width() != in.width() || out.height() != in.height())
-        throw Error(fmt::format("noaa: output is {}x{}, expected {}x{}", out.width(), out.height(), in.width(),
-                                in.height()));
+        throw Error(
+            fmt::format("noaa: output is {}x{}, expected {}x{}", out.width(), out.height(), in.width(), in.height()));
     for (int y = 0; y < in.height(); ++y) std::copy(in.row(y), in.row(y) + in.width(), out.row(y));
 }
 
@@ -74,8 +75,8 @@ ImageRgba8 refBlur(ImageView<const Rgba8> in, const MethodSettings& s, const Exe
 }
 
 Fxaa3cParams fxaa3cParams(const MethodSettings& s) {
-    return applySettings("fxaa3c", withFiltering(fxaa3cParamsFor(s.preset.value_or(Preset::Medium)), s),
-                         kFxaa3cParams, s);
+    return applySettings("fxaa3c", withFiltering(fxaa3cParamsFor(s.preset.value_or(Preset::Medium)), s), kFxaa3cParams,
+                         s);
 }
 void intoFxaa3c(ImageView<const Rgba8> in, ImageView<Rgba8> out, const MethodSettings& s, const Exec& e) {
     fxaa3c(in, out, fxaa3cParams(s), e);
@@ -85,8 +86,8 @@ ImageRgba8 refFxaa3c(ImageView<const Rgba8> in, const MethodSettings& s, const E
 }
 
 Fxaa3dParams fxaa3dParams(const MethodSettings& s) {
-    return applySettings("fxaa3d", withFiltering(fxaa3dParamsFor(s.preset.value_or(Preset::Medium)), s),
-                         kFxaa3dParams, s);
+    return applySettings("fxaa3d", withFiltering(fxaa3dParamsFor(s.preset.value_or(Preset::Medium)), s), kFxaa3dParams,
+                         s);
 }
 void intoFxaa3d(ImageView<const Rgba8> in, ImageView<Rgba8> out, const MethodSettings& s, const Exec& e) {
     fxaa3d(in, out, fxaa3dParams(s), e);
@@ -167,8 +168,8 @@ MethodInfo entry(Text t, std::span<const ParamInfo> params, std::string_view kin
 }
 
 const std::array<MethodInfo, 9> kMethods{{
-    entry({"noaa", "no anti-aliasing: the input unchanged", "", kImage}, {}, "ppaa", false, 1,
-          allocating<intoNoaa, 1>, intoNoaa, allocating<intoNoaa, 1>),
+    entry({"noaa", "no anti-aliasing: the input unchanged", "", kImage}, {}, "ppaa", false, 1, allocating<intoNoaa, 1>,
+          intoNoaa, allocating<intoNoaa, 1>),
     entry({"blur", "3x3 truncated Gaussian (sigma 0.6), the quality and speed baseline", "DDAA paper section 3.1",
            kImage},
           kBlurParams, "ppaa", false, 1, allocating<intoBlur, 1>, intoBlur, refBlur),
@@ -180,8 +181,8 @@ const std::array<MethodInfo, 9> kMethods{{
           kDdaa1Params, "ppaa", true, 1, allocating<intoDdaa1, 1>, intoDdaa1, refDdaa1),
     entry({"ddaa2", "DDAA 2: diffusion plus a clean batched edge search (the proposed method)", kDdaaCite, kImage},
           kDdaa2Params, "ppaa", true, 1, allocating<intoDdaa2, 1>, intoDdaa2, refDdaa2),
-    entry({"ssaax2", "2x supersampling resolve: Mitchell filter in 12 bilinear reads (input: 2x render)",
-           kMitchellCite, kImage2x},
+    entry({"ssaax2", "2x supersampling resolve: Mitchell filter in 12 bilinear reads (input: 2x render)", kMitchellCite,
+           kImage2x},
           {}, "resolve", false, 2, allocating<intoSsaax2, 2>, intoSsaax2, refSsaax2),
     entry({"ssaax4", "4x supersampling resolve: direct Mitchell taps (input: 4x render)", kMitchellCite, kImage4x},
           kMitchellParams, "resolve", false, 4, allocating<intoSsaax4, 4>, intoSsaax4, refSsaax4),

@@ -15,7 +15,9 @@ namespace ssfx::cli {
 std::pair<int, int> parseSize(const std::string& text, const std::string& option, int maxSide) {
     // WIDTHxHEIGHT, each a whole number in 1..maxSide: no sign, no overflow (4294967360x36
     // is refused, not read as 64x36).
-    const auto bad = [&] { return Error(fmt::format("{} '{}' is not WIDTHxHEIGHT (1..{} each)", option, text, maxSide)); };
+    const auto bad = [&] {
+        return Error(fmt::format("{} '{}' is not WIDTHxHEIGHT (1..{} each)", option, text, maxSide));
+    };
     const auto x = text.find('x');
     if (x == std::string::npos) throw bad();
     auto side = [&](std::string_view s) {
@@ -46,7 +48,7 @@ std::pair<std::string, double> parseParam(const std::string& text) {
 }
 
 std::pair<std::string, double> parseParam(const std::string& text, std::span<const ParamInfo> table,
-                                         std::string_view id) {
+                                          std::string_view id) {
     const auto eq = text.find('=');
     if (eq == std::string::npos || eq == 0)
         throw Error(fmt::format("parameter '{}' is not of the form NAME=VALUE", text));
@@ -63,10 +65,10 @@ struct AaOptions {
     bool listPresets = false;
 };
 
-
 void printPresets() {
-    fmt::print("Edge-threshold presets of fxaa3c, fxaa3d, ddaa1, ddaa2, ddaa2p: a pixel is left unchanged\n"
-               "when its luma contrast < max(edgeThresholdMin, lumaMax * edgeThreshold).\n\n");
+    fmt::print(
+        "Edge-threshold presets of fxaa3c, fxaa3d, ddaa1, ddaa2, ddaa2p: a pixel is left unchanged\n"
+        "when its luma contrast < max(edgeThresholdMin, lumaMax * edgeThreshold).\n\n");
     fmt::print("{:<8} {:>16} {:>14}  {}\n", "preset", "edgeThresholdMin", "edgeThreshold", "");
     for (const auto& p : aa::kPresets)
         fmt::print("{:<8} {:>16} {:>14}  {}\n", p.name, p.thresholds.edgeThresholdMin, p.thresholds.edgeThreshold,

@@ -8,13 +8,13 @@
 
 #include "apps/ssfx/commands.hpp"
 #include "ssfx/ao/registry.hpp"
-#include "ssfx/scene/analytic.hpp"
 #include "ssfx/io/camera.hpp"
 #include "ssfx/io/exr.hpp"
 #include "ssfx/io/png.hpp"
+#include "ssfx/scene/analytic.hpp"
 #ifdef SSFX_HAVE_RENDER
-#include "ssfx/scene/raytrace.hpp"
 #include "ssfx/render/renderer.hpp"
+#include "ssfx/scene/raytrace.hpp"
 #endif
 
 namespace ssfx::cli {
@@ -51,7 +51,8 @@ void run(const AoOptions& o, const CLI::App& cmd) {
     const bool analyticScene = o.scene == "corner" || o.scene == "room";
     if (!o.depth.empty())
         for (const char* opt : {"--size", "--fov", "--view", "--device"})
-            if (cmd.count(opt)) throw Error(fmt::format("{} does not apply to --depth (the depth file has its size and camera)", opt));
+            if (cmd.count(opt))
+                throw Error(fmt::format("{} does not apply to --depth (the depth file has its size and camera)", opt));
     if (analyticScene)
         for (const char* opt : {"--view", "--device"})
             if (cmd.count(opt)) throw Error(fmt::format("{} does not apply to the analytic scene '{}'", opt, o.scene));
@@ -66,8 +67,7 @@ void run(const AoOptions& o, const CLI::App& cmd) {
     }
     if (o.scene.empty() == o.depth.empty()) throw Error("give either --depth FILE (with --camera) or --scene NAME");
     const Exec exec{o.threads};
-    if (!o.preset.empty() && method.presets.empty())
-        throw Error(fmt::format("--preset: {} has no presets", o.method));
+    if (!o.preset.empty() && method.presets.empty()) throw Error(fmt::format("--preset: {} has no presets", o.method));
     // The preset first, then the -p overrides, every one checked before any work.
     ao::AoParams params = method.defaults(o.preset);
     if (method.needsGeometry) std::get<ao::RaytracedParams>(params).raysPerPixel = o.rays;
@@ -94,7 +94,8 @@ void run(const AoOptions& o, const CLI::App& cmd) {
         cam = r.camera.camera;
         if (method.needsGeometry) meshScene = scene::cameraSpaceRayScene(rs, r.camera);
 #else
-        throw Error(fmt::format("scene '{}': this ssfx was built without the renderer (analytic scenes: corner, room)", o.scene));
+        throw Error(fmt::format("scene '{}': this ssfx was built without the renderer (analytic scenes: corner, room)",
+                                o.scene));
 #endif
     } else if (!o.depth.empty()) {
         if (method.needsGeometry) throw Error(fmt::format("{} needs the geometry: use --scene", o.method));
@@ -106,7 +107,8 @@ void run(const AoOptions& o, const CLI::App& cmd) {
             if (depth.width() != stated.width + 2 * stated.guard || depth.height() != stated.height + 2 * stated.guard)
                 throw Error(fmt::format("{} is {}x{}, but {} describes {}x{} with a guard band of {} ({}x{} in all)",
                                         o.depth, depth.width(), depth.height(), o.camera, stated.width, stated.height,
-                                        stated.guard, stated.width + 2 * stated.guard, stated.height + 2 * stated.guard));
+                                        stated.guard, stated.width + 2 * stated.guard,
+                                        stated.height + 2 * stated.guard));
             if (guard != stated.guard)
                 throw Error(fmt::format("-p guardBand={} but {} has a guard band of {} (give -p guardBand={})", guard,
                                         o.camera, stated.guard, stated.guard));
@@ -170,14 +172,15 @@ void addAoCommand(CLI::App& app) {
     cmd->add_option("--save-depth", o->saveDepth, "Also write the depth buffer used (EXR, channel Z)");
     cmd->add_option("--save-camera", o->saveCamera, "Also write its camera (JSON)");
     cmd->add_option("--threads", o->threads, "Worker threads (0 = all)")->check(CLI::Range(0, 1024));
-    cmd->footer("Depth d in [0, 1] (0 = near plane); d = 1 exactly is nothing drawn (sky, A = 1) for any far plane;\n"
-                "camera space looks down -z (docs/methods/sao.md).\n"
-                "Examples:\n"
-                "  ssfx ao --scene room --size 960x540 -p guardBand=64 -o ao.png --save-depth d.exr --save-camera c.json\n"
-                "  ssfx ao --scene atrium --view colonnade --size 960x540 -p guardBand=64 -o ao.png\n"
-                "  ssfx ao --preset released --depth d.exr --camera c.json -p guardBand=64 -o released.png\n"
-                "  ssfx ao -m raytraced --scene scenes/sponza.json --size 480x270 --rays 256 -o truth.exr\n"
-                "  ssfx ao -m alchemy --depth d.exr --camera c.json -p guardBand=64 -o alchemy.exr");
+    cmd->footer(
+        "Depth d in [0, 1] (0 = near plane); d = 1 exactly is nothing drawn (sky, A = 1) for any far plane;\n"
+        "camera space looks down -z (docs/methods/sao.md).\n"
+        "Examples:\n"
+        "  ssfx ao --scene room --size 960x540 -p guardBand=64 -o ao.png --save-depth d.exr --save-camera c.json\n"
+        "  ssfx ao --scene atrium --view colonnade --size 960x540 -p guardBand=64 -o ao.png\n"
+        "  ssfx ao --preset released --depth d.exr --camera c.json -p guardBand=64 -o released.png\n"
+        "  ssfx ao -m raytraced --scene scenes/sponza.json --size 480x270 --rays 256 -o truth.exr\n"
+        "  ssfx ao -m alchemy --depth d.exr --camera c.json -p guardBand=64 -o alchemy.exr");
     cmd->callback([o, cmd] {
         io::OutputSet outputs;  // -o, --save-depth and --save-camera: all or none
         run(*o, *cmd);

@@ -39,13 +39,14 @@ void run(const BenchOptions& o) {
     for (const auto& id : ids) methodById(id);  // every id checked before any work
     const ImageRgba8 first = input(1);
     const auto results = eval::timeMethodsOn(
-        ids, [&](int scale) { return scale == 1 ? first : input(scale); }, o.reps, o.warmup, exec, [](int r, int n) {
+        ids, [&](int scale) { return scale == 1 ? first : input(scale); }, o.reps, o.warmup, exec,
+        [](int r, int n) {
             std::fprintf(stderr, "\rbench: round %d/%d", r, n);
             if (r == n) std::fprintf(stderr, "\n");
         });
     const eval::MachineInfo mi = eval::machineInfo(resolvedThreads(exec));
-    fmt::print("image: {} ({}x{}); {} repetitions, methods interleaved, fastest and slowest quarter dropped\n",
-               source, first.width(), first.height(), o.reps);
+    fmt::print("image: {} ({}x{}); {} repetitions, methods interleaved, fastest and slowest quarter dropped\n", source,
+               first.width(), first.height(), o.reps);
     fmt::print("machine: {}, {} threads used of {}, SIMD target {}\n\n", mi.cpu, mi.threads, mi.hardwareThreads,
                mi.simdTarget);
     fmt::print("{:<8} {:>10} {:>12} {:>14}\n", "method", "median ms", "trimmed ms", "% of blur");
@@ -59,11 +60,13 @@ void run(const BenchOptions& o) {
                         {"threads", mi.threads},
                         {"simd_target", mi.simdTarget}};
         j["image"] = {{"path", source}, {"width", first.width()}, {"height", first.height()}};
-        j["protocol"] = {{"repetitions", o.reps}, {"warmup", o.warmup}, {"baseline", "blur"},
+        j["protocol"] = {{"repetitions", o.reps},
+                         {"warmup", o.warmup},
+                         {"baseline", "blur"},
                          {"relative", "trimmed mean (middle half) / blur's trimmed mean * 100"}};
         for (const auto& r : results)
-            j["methods"][r.id] = {{"median_ms", r.medianMs}, {"trimmed_mean_ms", r.trimmedMeanMs},
-                                  {"relative", r.relative}};
+            j["methods"][r.id] = {
+                {"median_ms", r.medianMs}, {"trimmed_mean_ms", r.trimmedMeanMs}, {"relative", r.relative}};
         const std::string text = j.dump(2) + "\n";
         io::writeTextAtomic(o.json, text);
     }

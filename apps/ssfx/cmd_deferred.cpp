@@ -58,13 +58,15 @@ void run(const DeferredOptions& o) {
     io::writePng((dir / "k_depth.png").string(), eval::heatMap(a.kDepth.view(), 0.0f, n).view());
     io::writePng((dir / "k_normal.png").string(), eval::heatMap(a.kNormal.view(), 0.0f, n).view());
     io::writePng((dir / "k_shading.png").string(), eval::heatMap(a.kShading.view(), 0.0f, n).view());
-    fmt::print("{} {}x{} m={} on {}: G-buffer {:.1f} ms (GPU); adaptive {:.1f} ms (first {:.1f}, evaluate {:.1f}, rest "
-               "{:.1f}), {:.2f} % of the samples",
-               scene.name, w, h, o.m, renderer.device().name, g.gpuMs, a.totalMs(), a.firstMs, a.evaluateMs, a.restMs,
-               a.shadedPercent());
+    fmt::print(
+        "{} {}x{} m={} on {}: G-buffer {:.1f} ms (GPU); adaptive {:.1f} ms (first {:.1f}, evaluate {:.1f}, rest "
+        "{:.1f}), {:.2f} % of the samples",
+        scene.name, w, h, o.m, renderer.device().name, g.gpuMs, a.totalMs(), a.firstMs, a.evaluateMs, a.restMs,
+        a.shadedPercent());
     if (ref) {
         io::writePng((dir / "brute_force.png").string(), deferred::toRgba8(ref->image).view());
-        io::writePng((dir / "error.png").string(), eval::heatMap(deferred::absoluteError(a.image, ref->image).view(), 0.0f, 0.05f).view());
+        io::writePng((dir / "error.png").string(),
+                     eval::heatMap(deferred::absoluteError(a.image, ref->image).view(), 0.0f, 0.05f).view());
         const double mse = deferred::mse(a.image, ref->image);
         fmt::print("; brute force {:.1f} ms; MSE {:.3g} (x1e-5: {:.2f}), PSNR {:.2f} dB", ref->restMs, mse, mse * 1e5,
                    eval::psnrFromMse(mse));
@@ -76,7 +78,8 @@ void run(const DeferredOptions& o) {
 
 void addDeferredCommand(CLI::App& app) {
     auto o = std::make_shared<DeferredOptions>();
-    auto* cmd = app.add_subcommand("deferred", "Adaptive supersampling for deferred shading (beside brute-force supersampling)");
+    auto* cmd = app.add_subcommand("deferred",
+                                   "Adaptive supersampling for deferred shading (beside brute-force supersampling)");
     cmd->add_option("--scene", o->scene, "atrium, cornell, a scene .json or a model file");
     cmd->add_option("--view", o->view, "Named viewpoint (default: the scene's first)");
     cmd->add_option("--size", o->size, "Final image size WxH (default 1024x768)");
@@ -84,18 +87,22 @@ void addDeferredCommand(CLI::App& app) {
         ->check(CLI::Range(1, 4));
     cmd->add_option("--stall", o->stall, "Extra dependent operations per shaded sample (emulates a heavy shader)")
         ->check(CLI::Range(0, 10000000));
-    cmd->add_flag("--brute-force", o->bruteForce, "Also shade every sample (brute-force supersampling); write brute_force.png and error.png, print MSE/PSNR against it");
+    cmd->add_flag("--brute-force", o->bruteForce,
+                  "Also shade every sample (brute-force supersampling); write brute_force.png and error.png, print "
+                  "MSE/PSNR against it");
     std::string names;  // from the registry's table
     for (const ParamInfo& p : deferred::deferredMethodById("adaptive").params)
         names += fmt::format(" {} ({})", p.name, p.valueText(p.defaultValue()));
     cmd->add_option("-p,--param", o->params,
                     "NAME=VALUE (repeatable; ranges: ssfx methods --family deferred):" + names);
-    cmd->add_option("--out", o->out, "Output folder: image.png, samples.png (k heat map), k_depth/k_normal/k_shading.png "
-                                     "(each metric's k), with --brute-force brute_force.png, error.png (|error| 0..0.05)");
+    cmd->add_option("--out", o->out,
+                    "Output folder: image.png, samples.png (k heat map), k_depth/k_normal/k_shading.png "
+                    "(each metric's k), with --brute-force brute_force.png, error.png (|error| 0..0.05)");
     cmd->add_option("--device", o->device, "Vulkan device index or part of its name");
     cmd->add_option("--threads", o->threads, "Worker threads (0 = all)")->check(CLI::Range(0, 1024));
-    cmd->footer("docs/methods/adaptive.md. Example:\n"
-                "  ssfx deferred --scene atrium --view nave --size 1024x768 --ss 4 --brute-force --out out/deferred");
+    cmd->footer(
+        "docs/methods/adaptive.md. Example:\n"
+        "  ssfx deferred --scene atrium --view nave --size 1024x768 --ss 4 --brute-force --out out/deferred");
     cmd->callback([o] {
         io::OutputSet outputs;  // the images, the heat maps and the numbers: all or none
         run(*o);

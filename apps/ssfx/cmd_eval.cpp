@@ -18,8 +18,8 @@
 #include "ssfx/io/png.hpp"
 #ifdef SSFX_HAVE_RENDER
 #include "ssfx/eval/deferred_experiment.hpp"
-#include "ssfx/scene/raytrace.hpp"
 #include "ssfx/render/renderer.hpp"
+#include "ssfx/scene/raytrace.hpp"
 #endif
 
 namespace ssfx::cli {
@@ -44,16 +44,18 @@ void addQuality(CLI::App& eval) {
                     "compute: run each method on the renders; given: score the NAME_METHOD.png files in DIR")
         ->check(CLI::IsMember({"compute", "given"}));
     cmd->add_option("--outputs", o->outputs, "With --source compute: also write NAME_METHOD.png to this directory");
-    cmd->add_option("--methods", o->methods, "Method columns (default: ssaax4,ssaax2,blur,fxaa3c,fxaa3d,ddaa1,ddaa2,"
-                                             "ddaa2p,noaa)")
+    cmd->add_option("--methods", o->methods,
+                    "Method columns (default: ssaax4,ssaax2,blur,fxaa3c,fxaa3d,ddaa1,ddaa2,"
+                    "ddaa2p,noaa)")
         ->delimiter(',');
     cmd->add_option("--images", o->images, "Image rows (default: every NAME with NAMEx8.png in DIR)")->delimiter(',');
     cmd->add_option("-p,--param", o->params,
                     "NAME=VALUE for the methods that have parameter NAME (repeatable), e.g. -p chromaWeight=1");
     cmd->add_option("--threads", o->threads, "Worker threads (0 = all)")->check(CLI::Range(0, 1024));
-    cmd->footer("Each method's 1x output (x2 render for ssaax2/ddaa2p, x4 for ssaax4) is upscaled x8 with the\n"
-                "Mitchell filter and compared with NAMEx8.png: PSNR = 10 log10(1 / MSE) over RGB in [0,1];\n"
-                "SSIM on non-overlapping 8x8 windows (docs/evaluation.md).");
+    cmd->footer(
+        "Each method's 1x output (x2 render for ssaax2/ddaa2p, x4 for ssaax4) is upscaled x8 with the\n"
+        "Mitchell filter and compared with NAMEx8.png: PSNR = 10 log10(1 / MSE) over RGB in [0,1];\n"
+        "SSIM on non-overlapping 8x8 windows (docs/evaluation.md).");
     cmd->callback([o] {
         eval::QualityOptions q;
         q.methods = o->methods;
@@ -93,22 +95,23 @@ void addTemporal(CLI::App& eval) {
                     "Methods (default: the quality table's; with --source given: those whose NAME_METHOD.png exists)")
         ->delimiter(',');
     cmd->add_option("--threads", o->threads, "Worker threads (0 = all)")->check(CLI::Range(0, 1024));
-    cmd->footer("flicker = RMS over frames, pixels and RGB of (dO_t - dR_t), in 8-bit levels, where dO_t is the\n"
-                "method's frame-to-frame difference and dR_t that of the x8 render resolved to 1x (around the\n"
-                "loop); tPSNR is the same as a PSNR; PSNR compares each output frame with the resolved frame.\n"
-                "Frames are streamed: one frame of each scale is in memory at a time (a 4800x4800 x8 frame is\n"
-                "92 MB), plus two 1x frames per method (and each 1x frame with --out: APNGs are written as they\n"
-                "come), whatever the number of frames (docs/evaluation.md).");
+    cmd->footer(
+        "flicker = RMS over frames, pixels and RGB of (dO_t - dR_t), in 8-bit levels, where dO_t is the\n"
+        "method's frame-to-frame difference and dR_t that of the x8 render resolved to 1x (around the\n"
+        "loop); tPSNR is the same as a PSNR; PSNR compares each output frame with the resolved frame.\n"
+        "Frames are streamed: one frame of each scale is in memory at a time (a 4800x4800 x8 frame is\n"
+        "92 MB), plus two 1x frames per method (and each 1x frame with --out: APNGs are written as they\n"
+        "come), whatever the number of frames (docs/evaluation.md).");
     cmd->callback([o] {
-        if (o->source == "given" && o->dir.empty()) throw Error("--source given needs --dir (where NAME_METHOD.png are)");
+        if (o->source == "given" && o->dir.empty())
+            throw Error("--source given needs --dir (where NAME_METHOD.png are)");
         std::unique_ptr<eval::FrameSource> source;
         int fps = 25;
         if (o->dir.empty()) {
             const auto& info = eval::testImageByName(o->name);
             fps = info.fps;
-            source = eval::drawnFrames(info.frames, [name = o->name](int t, int scale) {
-                return eval::drawTestImage(name, scale, t);
-            });
+            source = eval::drawnFrames(
+                info.frames, [name = o->name](int t, int scale) { return eval::drawTestImage(name, scale, t); });
         } else {
             const std::string x8 = eval::renderSetPath(o->dir, o->name, 8);
             if (!std::filesystem::exists(x8))
@@ -127,9 +130,12 @@ void addTemporal(CLI::App& eval) {
         if (o->source == "given") {
             const std::vector<std::string> ids = o->methods.empty() ? eval::paperMethodOrder() : o->methods;
             for (const auto& id : ids) {
-                const std::string file = (std::filesystem::path(o->dir) / fmt::format("{}_{}.png", o->name, id)).string();
-                if (std::filesystem::exists(file)) given.emplace_back(id, file);
-                else if (!o->methods.empty()) throw Error(fmt::format("{}: no such file (given outputs of {})", file, id));
+                const std::string file =
+                    (std::filesystem::path(o->dir) / fmt::format("{}_{}.png", o->name, id)).string();
+                if (std::filesystem::exists(file))
+                    given.emplace_back(id, file);
+                else if (!o->methods.empty())
+                    throw Error(fmt::format("{}: no such file (given outputs of {})", file, id));
             }
             if (given.empty())
                 throw Error(fmt::format("--source given: no {}_METHOD.png animation in {}", o->name, o->dir));
@@ -157,7 +163,8 @@ void addTemporal(CLI::App& eval) {
                     for (const auto& n : names) open(n);
                 }
                 writers[0]->add(ref.view(), 1, std::uint16_t(fps));
-                for (std::size_t m = 0; m < outputs.size(); ++m) writers[m + 1]->add(outputs[m].view(), 1, std::uint16_t(fps));
+                for (std::size_t m = 0; m < outputs.size(); ++m)
+                    writers[m + 1]->add(outputs[m].view(), 1, std::uint16_t(fps));
             };
         }
         const eval::TemporalRun run =
@@ -201,7 +208,8 @@ void addSpeed(CLI::App& eval) {
         int threads = 0;
     };
     auto o = std::make_shared<Options>();
-    auto* cmd = eval.add_subcommand("speed", "Time every method on each image relative to blur = 100 (paper's Table 3)");
+    auto* cmd =
+        eval.add_subcommand("speed", "Time every method on each image relative to blur = 100 (paper's Table 3)");
     cmd->add_option("dir", o->dir, "Directory with NAME.png, NAMEx2/x4/x8.png (e.g. from 'ssfx testimages')")
         ->required();
     cmd->add_option("--methods", o->s.methods, "Methods (default: the quality table's; blur is always timed)")
@@ -272,9 +280,10 @@ void addReport(CLI::App& eval) {
     cmd->add_flag("--quick", o->quick, "Fewer repetitions and every 4th animation frame (tests)");
     cmd->add_flag("!--no-ao", o->ambientObscurance, "Leave out the ambient obscurance experiments");
     auto scenes = std::make_shared<std::vector<std::string>>(kDefaultAoScenes);
-    cmd->add_option("--ao-scene", *scenes, "Rendered scenes for the AO accuracy table, SCENE[:VIEW] (repeatable; "
-                                           "default atrium:colonnade cornell:corner scenes/sponza.json:arcade "
-                                           "scenes/bunny.json:front; 'none' for none)");
+    cmd->add_option("--ao-scene", *scenes,
+                    "Rendered scenes for the AO accuracy table, SCENE[:VIEW] (repeatable; "
+                    "default atrium:colonnade cornell:corner scenes/sponza.json:arcade "
+                    "scenes/bunny.json:front; 'none' for none)");
     cmd->add_option("--threads", *threads, "Worker threads (0 = all)")->check(CLI::Range(0, 1024));
     auto noRender = std::make_shared<bool>(false);
     cmd->add_flag("--no-render", *noRender,
@@ -282,9 +291,10 @@ void addReport(CLI::App& eval) {
     cmd->callback([o, threads, scenes, noRender] {
         // --author-data must name the data, and is not silently dropped by --quick.
         if (!o->authorDataDir.empty() && !std::filesystem::is_directory(o->authorDataDir))
-            throw Error(fmt::format("--author-data {}: no such directory (the DDAA author's data, e.g. "
-                                    "../shared/reference/ppaa)",
-                                    o->authorDataDir));
+            throw Error(
+                fmt::format("--author-data {}: no such directory (the DDAA author's data, e.g. "
+                            "../shared/reference/ppaa)",
+                            o->authorDataDir));
         if (!o->authorDataDir.empty() && o->quick)
             throw Error("--author-data with --quick: the quick report leaves the paper's rows out; drop one of them");
         if (!(scenes->size() == 1 && scenes->front() == "none")) o->renderedScenes = renderedAoScenes(*scenes);
@@ -300,7 +310,8 @@ void addReport(CLI::App& eval) {
                 return std::vector<std::pair<std::string, std::string>>{
                     {"atrium", fmt::format("The procedural atrium (view nave), {}x{}, rasterised with Vulkan and "
                                            "forward-shaded without anti-aliasing: checker floor, brick walls, thin "
-                                           "bars, curtain folds (ssfx render atrium --view nave --aa-set).", w, h)}};
+                                           "bars, curtain folds (ssfx render atrium --view nave --aa-set).",
+                                           w, h)}};
             };
 #endif
 #ifdef SSFX_HAVE_RENDER
@@ -330,8 +341,9 @@ void addDeferred(CLI::App& eval) {
     auto o = std::make_shared<eval::DeferredExperimentOptions>();
     auto threads = std::make_shared<int>(0);
     auto size = std::make_shared<std::string>("1024x768");
-    auto* cmd = eval.add_subcommand("deferred", "The adaptive supersampling paper's Table 1: time, stalled time, "
-                                                "MSE/PSNR vs brute force and samples shaded for m = 1..4");
+    auto* cmd = eval.add_subcommand("deferred",
+                                    "The adaptive supersampling paper's Table 1: time, stalled time, "
+                                    "MSE/PSNR vs brute force and samples shaded for m = 1..4");
     cmd->add_option("--out", o->outDir, "Output directory: images/, data/deferred.json, data/deferred.md")->required();
     cmd->add_option("--scene", o->scene, "Scene (default atrium)");
     cmd->add_option("--view", o->view, "View (default nave)");
@@ -354,19 +366,22 @@ void addDeferred(CLI::App& eval) {
 void addAo(CLI::App& eval) {
     auto o = std::make_shared<eval::AoExperimentOptions>();
     auto threads = std::make_shared<int>(0);
-    auto* cmd = eval.add_subcommand("ao", "The SAO paper's experiments on analytic scenes (z and normal precision, "
-                                          "pyramid filters, radius scaling, pass times, accuracy)");
+    auto* cmd = eval.add_subcommand("ao",
+                                    "The SAO paper's experiments on analytic scenes (z and normal precision, "
+                                    "pyramid filters, radius scaling, pass times, accuracy)");
     cmd->add_option("--out", o->outDir, "Output directory: images/, plots/, data/ao.json, data/ao.md")->required();
     cmd->add_flag("--quick", o->quick, "Small sizes and few repetitions (tests)");
     auto scenes = std::make_shared<std::vector<std::string>>(kDefaultAoScenes);
-    cmd->add_option("--ao-scene", *scenes, "Rendered scenes for the accuracy table, SCENE[:VIEW] (repeatable; "
-                                           "'none' for none)");
+    cmd->add_option("--ao-scene", *scenes,
+                    "Rendered scenes for the accuracy table, SCENE[:VIEW] (repeatable; "
+                    "'none' for none)");
     cmd->add_option("--threads", *threads, "Worker threads (0 = all)")->check(CLI::Range(0, 1024));
-    cmd->footer("Scenes: 'corner' (floor meeting a wall) and 'room' (walls, boxes from 5 cm to 2 m, a stair, a\n"
-                "column, spheres), ray cast exactly; for the accuracy table also the atrium, the Cornell box,\n"
-                "Sponza and the bunny rasterised with Vulkan (the last two when ../shared/assets is present),\n"
-                "their triangles ray traced with Embree. The ground truth is ray-traced obscurance with SAO's\n"
-                "falloff (docs/evaluation.md).");
+    cmd->footer(
+        "Scenes: 'corner' (floor meeting a wall) and 'room' (walls, boxes from 5 cm to 2 m, a stair, a\n"
+        "column, spheres), ray cast exactly; for the accuracy table also the atrium, the Cornell box,\n"
+        "Sponza and the bunny rasterised with Vulkan (the last two when ../shared/assets is present),\n"
+        "their triangles ray traced with Embree. The ground truth is ray-traced obscurance with SAO's\n"
+        "falloff (docs/evaluation.md).");
     cmd->callback([o, threads, scenes] {
         if (!(scenes->size() == 1 && scenes->front() == "none")) o->renderedScenes = renderedAoScenes(*scenes);
         o->exec = Exec{*threads};

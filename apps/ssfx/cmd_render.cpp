@@ -32,7 +32,6 @@ DepthFormat parseDepthFormat(const std::string& f) {
     throw Error(fmt::format("--depth-format '{}' (d16, d24, d32f)", f));
 }
 
-
 void run(const RenderOptions& o) {
     if (o.listDevices) {
         for (const auto& d : vkx::listDevices())
@@ -42,17 +41,19 @@ void run(const RenderOptions& o) {
                                    : "unsuitable (needs Vulkan 1.3)");
         return;
     }
-    if (o.scene.empty()) throw Error("no scene given (a built-in name: atrium, cornell; a scene .json; or a model file)");
+    if (o.scene.empty())
+        throw Error("no scene given (a built-in name: atrium, cornell; a scene .json; or a model file)");
     scene::Scene scene = scene::loadScene(o.scene);
     if (o.listViews) {
         for (const auto& [name, v] : scene.views)
-            fmt::print("{}: eye ({:.3g}, {:.3g}, {:.3g}) target ({:.3g}, {:.3g}, {:.3g}) fov {:.3g} deg\n", name, v.eye.x,
-                       v.eye.y, v.eye.z, v.target.x, v.target.y, v.target.z, v.fovYDeg);
+            fmt::print("{}: eye ({:.3g}, {:.3g}, {:.3g}) target ({:.3g}, {:.3g}, {:.3g}) fov {:.3g} deg\n", name,
+                       v.eye.x, v.eye.y, v.eye.z, v.target.x, v.target.y, v.target.z, v.fovYDeg);
         return;
     }
     if (o.out.empty()) throw Error("no output folder given (--out DIR)");
     scene::View view = o.view.empty() ? scene.views.at(0).second : scene.view(o.view);
-    if (!(std::isfinite(o.near) && o.near >= 0)) throw Error(fmt::format("--near {}: a finite distance > 0 (m)", o.near));
+    if (!(std::isfinite(o.near) && o.near >= 0))
+        throw Error(fmt::format("--near {}: a finite distance > 0 (m)", o.near));
     if (o.near > 0) view.zNear = o.near;
     if (!o.far.empty()) {
         if (o.far == "inf") {
@@ -60,7 +61,8 @@ void run(const RenderOptions& o) {
         } else {
             char* end = nullptr;
             view.zFar = std::strtod(o.far.c_str(), &end);
-            if (!end || *end || !(view.zFar > view.zNear)) throw Error(fmt::format("--far '{}': a distance > near, or inf", o.far));
+            if (!end || *end || !(view.zFar > view.zNear))
+                throw Error(fmt::format("--far '{}': a distance > near, or inf", o.far));
         }
     }
     const auto [w, h] = parseSize(o.size);
@@ -73,10 +75,12 @@ void run(const RenderOptions& o) {
         if (o.aaSet) {
             sizes.emplace_back(std::int64_t(w) * 8, std::int64_t(h) * 8, "the x8 colour image of --aa-set");
         } else {
-            sizes.emplace_back(std::int64_t(w) + 2 * o.guard, std::int64_t(h) + 2 * o.guard, "the depth buffer (with --guard)");
+            sizes.emplace_back(std::int64_t(w) + 2 * o.guard, std::int64_t(h) + 2 * o.guard,
+                               "the depth buffer (with --guard)");
             sizes.emplace_back(std::int64_t(w) * o.scale, std::int64_t(h) * o.scale, "the colour image (with --scale)");
             if (o.gbuffer > 0)
-                sizes.emplace_back(std::int64_t(w) * o.gbuffer, std::int64_t(h) * o.gbuffer, "the G-buffer (with --gbuffer)");
+                sizes.emplace_back(std::int64_t(w) * o.gbuffer, std::int64_t(h) * o.gbuffer,
+                                   "the G-buffer (with --gbuffer)");
         }
         for (const auto& [bw, bh, what] : sizes) {
             checkDimensions(bw, bh, what);
@@ -120,8 +124,10 @@ void run(const RenderOptions& o) {
 
 void addRenderCommand(CLI::App& app) {
     auto o = std::make_shared<RenderOptions>();
-    auto* cmd = app.add_subcommand("render", "Render a scene with Vulkan: depth buffer, G-buffer, forward-shaded colour");
-    cmd->add_option("scene", o->scene, "Built-in scene (atrium, cornell), a scene file (.json) or a model (OBJ, glTF, Collada)");
+    auto* cmd =
+        app.add_subcommand("render", "Render a scene with Vulkan: depth buffer, G-buffer, forward-shaded colour");
+    cmd->add_option("scene", o->scene,
+                    "Built-in scene (atrium, cornell), a scene file (.json) or a model (OBJ, glTF, Collada)");
     cmd->add_option("--view", o->view, "Named viewpoint (default: the scene's first; see --list-views)");
     cmd->add_option("--size", o->size, "Image size WxH without guard band (default 960x540)");
     cmd->add_option("--scale", o->scale, "Colour image rendered at scale x size (1..16; for the AA evaluation)")
@@ -140,13 +146,14 @@ void addRenderCommand(CLI::App& app) {
                   "Instead: the colour images at 1x, 2x, 4x, 8x as NAME.png, NAMEx2.png, ... for ssfx eval quality");
     cmd->add_flag("--list-views", o->listViews, "List the scene's viewpoints and exit");
     cmd->add_flag("--list-devices", o->listDevices, "List the Vulkan devices and exit");
-    cmd->footer("Depth is hardware depth in [0, 1] (0 = near); camera.json holds fov_y_deg, z_near, z_far (read by\n"
-                "ssfx ao), the size, guard band and the projection and view matrices (docs/render.md).\n"
-                "Examples:\n"
-                "  ssfx render atrium --view nave --size 1280x720 --guard 128 --out out/atrium\n"
-                "  ssfx render scenes/sponza.json --list-views\n"
-                "  ssfx render cornell --size 256x256 --gbuffer 4 --depth-format d24 --out out/cornell\n"
-                "  ssfx render atrium --view nave --size 640x360 --aa-set --out imgs && ssfx eval quality imgs");
+    cmd->footer(
+        "Depth is hardware depth in [0, 1] (0 = near); camera.json holds fov_y_deg, z_near, z_far (read by\n"
+        "ssfx ao), the size, guard band and the projection and view matrices (docs/render.md).\n"
+        "Examples:\n"
+        "  ssfx render atrium --view nave --size 1280x720 --guard 128 --out out/atrium\n"
+        "  ssfx render scenes/sponza.json --list-views\n"
+        "  ssfx render cornell --size 256x256 --gbuffer 4 --depth-format d24 --out out/cornell\n"
+        "  ssfx render atrium --view nave --size 640x360 --aa-set --out imgs && ssfx eval quality imgs");
     cmd->callback([o] { run(*o); });
 }
 

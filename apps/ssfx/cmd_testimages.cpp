@@ -26,9 +26,10 @@ void addTestimagesCommand(CLI::App& app) {
     cmd->add_option("--scales", o->scales, "Scales to draw (default: 1,2,4,8)")
         ->delimiter(',')
         ->check(CLI::Range(1, 16));
-    cmd->footer("Files: NAME.png at scale 1 and NAMExS.png at scale S. 'animated' is written as a looping\n"
-                "APNG (32 frames, 25 fps). Same geometry at every scale: the x8 render is the reference of\n"
-                "'ssfx eval quality', the x2/x4 renders are the inputs of the resolves.");
+    cmd->footer(
+        "Files: NAME.png at scale 1 and NAMExS.png at scale S. 'animated' is written as a looping\n"
+        "APNG (32 frames, 25 fps). Same geometry at every scale: the x8 render is the reference of\n"
+        "'ssfx eval quality', the x2/x4 renders are the inputs of the resolves.");
     cmd->callback([o] {
         std::vector<std::string> names = o->names;
         if (names.empty())

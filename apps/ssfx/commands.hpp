@@ -17,7 +17,7 @@ std::pair<std::string, double> parseParam(const std::string& text);
 //! The same for one method's table: the name must be one of its rows, a Choice's value may be
 //! a name (sampling=hardware), a Boolean's true/false. Throws ssfx::Error naming `id`.
 std::pair<std::string, double> parseParam(const std::string& text, std::span<const ParamInfo> table,
-                                         std::string_view id);
+                                          std::string_view id);
 //! Parses WIDTHxHEIGHT with both in [1, maxSide]; throws ssfx::Error naming `option`.
 std::pair<int, int> parseSize(const std::string& text, const std::string& option = "--size", int maxSide = 16384);
 

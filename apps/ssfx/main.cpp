@@ -12,9 +12,10 @@
 
 int main(int argc, char** argv) {
     ssfx::tuneAllocatorForImages();  // frames and benchmark repetitions reuse their buffers
-    CLI::App app{"ssfx: screen-space rendering effects (post-processing anti-aliasing, resolves, ambient obscurance)\n"
-                 "Run 'ssfx <command> --help' for the options of a command.",
-                 "ssfx"};
+    CLI::App app{
+        "ssfx: screen-space rendering effects (post-processing anti-aliasing, resolves, ambient obscurance)\n"
+        "Run 'ssfx <command> --help' for the options of a command.",
+        "ssfx"};
     app.require_subcommand(1);
     app.set_version_flag("--version", "ssfx 0.1.0");
     // A batch user's lower pixel limit for every input (before the command: ssfx --max-pixels N aa ...).

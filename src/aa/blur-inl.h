@@ -43,9 +43,8 @@ inline void ToFloatRow(const Rgba8* HWY_RESTRICT in, int w, float* HWY_RESTRICT 
 // computed: toUnorm8()'s rounding of the exact product v * 255 (the float product is within
 // 2^-17 of it, so it rounds the same way unless it lands on a tie: such (rare) vectors take
 // toUnorm8() lane by lane). Alpha comes from the source pixel.
-inline void BlurRowQuantized(const float* HWY_RESTRICT fa, const float* HWY_RESTRICT fc,
-                             const float* HWY_RESTRICT fb, int w, const BlurWeights& k, const Rgba8* HWY_RESTRICT src,
-                             Rgba8* HWY_RESTRICT dst) {
+inline void BlurRowQuantized(const float* HWY_RESTRICT fa, const float* HWY_RESTRICT fc, const float* HWY_RESTRICT fb,
+                             int w, const BlurWeights& k, const Rgba8* HWY_RESTRICT src, Rgba8* HWY_RESTRICT dst) {
     const hn::ScalableTag<float> df;
     const hn::RebindToSigned<decltype(df)> di;
     const hn::Rebind<std::uint8_t, decltype(df)> d8;
@@ -68,8 +67,8 @@ inline void BlurRowQuantized(const float* HWY_RESTRICT fa, const float* HWY_REST
         const float* a = fa + 4 + i;
         const float* c = fc + 4 + i;
         const float* b = fb + 4 + i;
-        const auto horizontal = hn::Add(hn::LoadU(df, c - 4), hn::LoadU(df, c + 4));   // w + e
-        const auto vertical = hn::Add(hn::LoadU(df, a), hn::LoadU(df, b));             // s + n
+        const auto horizontal = hn::Add(hn::LoadU(df, c - 4), hn::LoadU(df, c + 4));    // w + e
+        const auto vertical = hn::Add(hn::LoadU(df, a), hn::LoadU(df, b));              // s + n
         const auto cornersAbove = hn::Add(hn::LoadU(df, a - 4), hn::LoadU(df, a + 4));  // sw + se
         const auto cornersBelow = hn::Add(hn::LoadU(df, b - 4), hn::LoadU(df, b + 4));  // nw + ne
         const auto direct = hn::Mul(hn::Add(horizontal, vertical), w1);

@@ -47,8 +47,9 @@ void blur(ImageView<const Rgba8> in, ImageView<Rgba8> out, const BlurParams& par
     detail::checkInput("blur", in);
     detail::checkOutput("blur", in, out);
     const detail::BlurWeights w = detail::blurWeights(params);
-    parallelRows(in.height(), exec,
-                 [&](int y0, int y1) { HWY_DYNAMIC_DISPATCH(detail::BlurRows)(in, out, y0, y1, w); });
+    parallelRows(in.height(), exec, [&](int y0, int y1) {
+        HWY_DYNAMIC_DISPATCH(detail::BlurRows)(in, out, y0, y1, w);
+    });
 }
 
 ImageRgba8 blur(ImageView<const Rgba8> in, const BlurParams& params, const Exec& exec) {

@@ -122,7 +122,7 @@ HWY_INLINE void SearchBothSides(const LumaPlanes& planes, const hn::Mask<DF>& ho
         if (contiguous) {
             const float* h0 = planes.data + planes.rowH(y) + x + offset;      // between rows y - 1 and y
             const float* h1 = planes.data + planes.rowH(y + 1) + x + offset;  // between rows y and y + 1
-            const float* v0 = planes.data + planes.rowV(yk) + x;             // between columns x - 1 and x
+            const float* v0 = planes.data + planes.rowV(yk) + x;              // between columns x - 1 and x
             const VF alongH = hn::IfThenElse(steep2, hn::LoadU(df, h1), hn::LoadU(df, h0));
             const VF alongV = hn::IfThenElse(steep2, hn::LoadU(df, v0 + 1), hn::LoadU(df, v0));
             return hn::IfThenElse(horizontal, alongH, alongV);
@@ -203,10 +203,9 @@ inline void Ddaa1RowSimd(const Texture& tex, const LumaRows& L, int y, std::uint
     RowChunks(L.width, exitMask, [&](int x) { Ddaa1Chunk(tex, L, x, y, exitMask, p, src, dst); });
 }
 
-inline void Ddaa2RowSimd(const Texture& tex, const LumaRows& L, const LumaPlanes& planes, int y,
-                         std::uint8_t* exitMask, const Ddaa2Params& p, const Rgba8* src, Rgba8* dst) {
-    RowChunks(L.width, exitMask,
-              [&](int x) { Ddaa2Chunk(tex, L, planes, x, y, exitMask, p, src, dst); });
+inline void Ddaa2RowSimd(const Texture& tex, const LumaRows& L, const LumaPlanes& planes, int y, std::uint8_t* exitMask,
+                         const Ddaa2Params& p, const Rgba8* src, Rgba8* dst) {
+    RowChunks(L.width, exitMask, [&](int x) { Ddaa2Chunk(tex, L, planes, x, y, exitMask, p, src, dst); });
 }
 
 }  // namespace HWY_NAMESPACE

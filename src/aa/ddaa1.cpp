@@ -32,8 +32,7 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Ddaa1Params& p, 
         return diffuse(tex, x, y, d, p.maxDiffusion, 0.0f, 0.0f);
     };
     // The vector kernel across pixels covers the GPU filtering model (the default).
-    auto rows = [&](int y, const LumaRows& band, const LumaPlanes&, std::uint8_t* mask, const Rgba8* src,
-                    Rgba8* dst) {
+    auto rows = [&](int y, const LumaRows& band, const LumaPlanes&, std::uint8_t* mask, const Rgba8* src, Rgba8* dst) {
         if (!scalar && p.filtering == Filtering::Gpu)
             HWY_DYNAMIC_DISPATCH(Ddaa1RowSimd)(tex, band, y, mask, p, src, dst);
     };

@@ -65,8 +65,8 @@ float edgeSearchOffset(const Texture& tex, int x, int y, const Luma3x3& n, const
     // Delta of a read at `along` (split coordinate along the edge) plus an integer texel
     // offset along the edge.
     auto deltaAt = [&](const Texture::AxisPos& along, int texelOffset) {
-        const Rgb c = s.horizontal ? tex.sample(along, acrossPos, texelOffset, 0)
-                                   : tex.sample(acrossPos, along, 0, texelOffset);
+        const Rgb c =
+            s.horizontal ? tex.sample(along, acrossPos, texelOffset, 0) : tex.sample(acrossPos, along, 0, texelOffset);
         return edgeLuma(c, chromaWeight) - localAverage;
     };
     auto alongAxis = [&](float move) { return s.horizontal ? tex.axisU(cu + move) : tex.axisV(cv + move); };
@@ -163,20 +163,21 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Ddaa2Params& p, 
                     Rgba8* dst) {
         if (vector) HWY_DYNAMIC_DISPATCH(Ddaa2RowSimd)(tex, band, planes, y, mask, p, src, dst);
     };
-    runLumaMethod(in, out, scalar, p.chromaWeight, p.edgeThresholdMin, p.edgeThreshold, exec, needs,
-                  [&](int x, int y, const Luma3x3& n, float) {
-                      const EdgeSides s = edgeSides(n);
-                      Diffusion d = diffusion(n, s, p);
-                      const float offset = edgeSearchOffset(tex, x, y, n, s, p.searchRounds, p.chromaWeight);
-                      // Combination (section 2.3): the search offset moves both diffusion
-                      // reads, and a large offset (near an edge's end) weakens the diffusion.
-                      const float edgeStrength = minf(1.0f, 2.0f * std::fabs(offset));
-                      d.strength *= 1.0f - edgeStrength;
-                      const float offU = s.horizontal ? 0.0f : offset * tex.invW();
-                      const float offV = s.horizontal ? offset * tex.invH() : 0.0f;
-                      return diffuse(tex, x, y, d, p.maxDiffusion, offU, offV);
-                  },
-                  rows);
+    runLumaMethod(
+        in, out, scalar, p.chromaWeight, p.edgeThresholdMin, p.edgeThreshold, exec, needs,
+        [&](int x, int y, const Luma3x3& n, float) {
+            const EdgeSides s = edgeSides(n);
+            Diffusion d = diffusion(n, s, p);
+            const float offset = edgeSearchOffset(tex, x, y, n, s, p.searchRounds, p.chromaWeight);
+            // Combination (section 2.3): the search offset moves both diffusion
+            // reads, and a large offset (near an edge's end) weakens the diffusion.
+            const float edgeStrength = minf(1.0f, 2.0f * std::fabs(offset));
+            d.strength *= 1.0f - edgeStrength;
+            const float offU = s.horizontal ? 0.0f : offset * tex.invW();
+            const float offV = s.horizontal ? offset * tex.invH() : 0.0f;
+            return diffuse(tex, x, y, d, p.maxDiffusion, offU, offV);
+        },
+        rows);
 }
 
 }  // namespace

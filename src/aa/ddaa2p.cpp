@@ -10,8 +10,8 @@ namespace {
 void checkInput2x(ImageView<const Rgba8> in2x) {
     detail::checkInput("ddaa2p", in2x);
     if (in2x.width() % 2 != 0 || in2x.height() % 2 != 0)
-        throw Error(fmt::format("ddaa2p: input size {}x{} is not divisible by 2 (it takes the 2x render)",
-                                in2x.width(), in2x.height()));
+        throw Error(fmt::format("ddaa2p: input size {}x{} is not divisible by 2 (it takes the 2x render)", in2x.width(),
+                                in2x.height()));
 }
 }  // namespace
 

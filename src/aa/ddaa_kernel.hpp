@@ -10,11 +10,9 @@
 
 namespace ssfx::aa::detail {
 
-
 //! True when every read of ddaa2's edge search on an image of this size equals a pair-plane
 //! value (then the vector kernel runs; otherwise the scalar one). In ddaa2.cpp.
 bool searchReadsArePairReads(const Texture& tex, int rounds);
-
 
 //! Diffusion direction (unit edge vector) and strength, after the small-structure rule.
 struct Diffusion {

@@ -77,8 +77,9 @@ HWY_INLINE void Fxaa3cChunk(const Texture& tex, const LumaRows& L, int x, int y,
     const RgbV result{hn::IfThenElse(twoTap, hn::Mul(A.r, half), B.r), hn::IfThenElse(twoTap, hn::Mul(A.g, half), B.g),
                       hn::IfThenElse(twoTap, hn::Mul(A.b, half), B.b)};
     const VU srcV = hn::LoadU(du, reinterpret_cast<const std::uint32_t*>(src + x));
-    const VU rgb = hn::Or(hn::Or(hn::BitCast(du, Quantize(result.r)), hn::ShiftLeft<8>(hn::BitCast(du, Quantize(result.g)))),
-                          hn::ShiftLeft<16>(hn::BitCast(du, Quantize(result.b))));
+    const VU rgb =
+        hn::Or(hn::Or(hn::BitCast(du, Quantize(result.r)), hn::ShiftLeft<8>(hn::BitCast(du, Quantize(result.g)))),
+               hn::ShiftLeft<16>(hn::BitCast(du, Quantize(result.b))));
     const VU out = hn::Or(rgb, hn::And(srcV, hn::Set(du, 0xFF000000u)));
     hn::StoreU(hn::IfThenElse(hn::RebindMask(du, keep), srcV, out), du, reinterpret_cast<std::uint32_t*>(dst + x));
 }

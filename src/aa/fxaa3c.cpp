@@ -48,8 +48,7 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Fxaa3cParams& p,
         const float lumaM = L.row(y)[x];
         const float lumaMax = maxf(maxf(lumaNE, lumaSE), maxf(lumaNW, lumaSW));
         const float lumaMin = minf(minf(lumaNE, lumaSE), minf(lumaNW, lumaSW));
-        if (maxf(lumaMax, lumaM) - minf(lumaMin, lumaM) < maxf(p.edgeThresholdMin, lumaMax * p.edgeThreshold))
-            return m;
+        if (maxf(lumaMax, lumaM) - minf(lumaMin, lumaM) < maxf(p.edgeThresholdMin, lumaMax * p.edgeThreshold)) return m;
 
         const float swMinusNe = lumaSW - lumaNE, seMinusNw = lumaSE - lumaNW;
         const float dirX = swMinusNe + seMinusNw, dirY = swMinusNe - seMinusNw;

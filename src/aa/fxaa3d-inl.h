@@ -33,7 +33,7 @@ HWY_INLINE VI WalkIndex(const LumaPlanes& planes, const hn::Mask<DI>& horizontal
     const VI one = hn::Set(di, 1), zero = hn::Zero(di);
     const VI wq = hn::Set(di, planes.width + 1);
     const auto even = hn::Eq(hn::And(hs, one), zero);
-    const VI whole = hn::ShiftRight<1>(hs);             // hs / 2 for even hs
+    const VI whole = hn::ShiftRight<1>(hs);                // hs / 2 for even hs
     const VI upper = hn::ShiftRight<1>(hn::Add(hs, one));  // (hs + 1) / 2 for odd hs
     // Plane rows to ring slots (rows are never negative: clamped, or y and y + 1).
     const VI ringMask = hn::Set(di, planes.ringMask);
@@ -76,7 +76,9 @@ HWY_INLINE bool AcrossLerp(const Texture& tex, const hn::Mask<DF>& horizontal, V
 
     const auto image = tex.image();
     const int h = tex.height();
-    auto row = [&](int r) { return reinterpret_cast<const std::uint32_t*>(image.row(r < 0 ? 0 : (r >= h ? h - 1 : r))); };
+    auto row = [&](int r) {
+        return reinterpret_cast<const std::uint32_t*>(image.row(r < 0 ? 0 : (r >= h ? h - 1 : r)));
+    };
     const std::uint32_t* rc = row(y) + x;
     const VU above = hn::LoadU(du, row(y - 1) + x), below = hn::LoadU(du, row(y + 1) + x);
     const VU centre = hn::LoadU(du, rc), left = hn::LoadU(du, rc - 1), right = hn::LoadU(du, rc + 1);
@@ -178,10 +180,10 @@ HWY_INLINE void Fxaa3dChunk(const Texture& tex, const LumaRows& L, const LumaPla
     const auto goodSpan = hn::Or(hn::And(directionN, goodSpanN), hn::AndNot(directionN, goodSpanP));
 
     // Sub-pixel term (FXAA 3.11 subpix).
-    const VF avg = hn::Mul(hn::Set(df, 1.0f / 12.0f),
-                           hn::Add(hn::Add(hn::Mul(hn::Set(df, 2.0f), hn::Add(hn::Add(n.S, n.N), hn::Add(n.W, n.E))),
-                                           hn::Add(n.SW, n.NW)),
-                                   hn::Add(n.SE, n.NE)));
+    const VF avg = hn::Mul(
+        hn::Set(df, 1.0f / 12.0f),
+        hn::Add(hn::Add(hn::Mul(hn::Set(df, 2.0f), hn::Add(hn::Add(n.S, n.N), hn::Add(n.W, n.E))), hn::Add(n.SW, n.NW)),
+                hn::Add(n.SE, n.NE)));
     VF sp = hn::Min(hn::Max(hn::Div(hn::Abs(hn::Sub(avg, n.C)), range), zero), one);
     sp = hn::IfThenElseZero(hn::Gt(range, zero), sp);
     sp = hn::Mul(hn::Mul(hn::Add(hn::Mul(hn::Set(df, -2.0f), sp), hn::Set(df, 3.0f)), sp), sp);
@@ -200,8 +202,7 @@ HWY_INLINE void Fxaa3dChunk(const Texture& tex, const LumaRows& L, const LumaPla
 // lerp: centresAreTexels(tex), so the final reads may take AcrossLerp.
 inline void Fxaa3dRowSimd(const Texture& tex, const LumaRows& L, const LumaPlanes& planes, bool lerp, int y,
                           std::uint8_t* exitMask, const Fxaa3dParams& p, const Rgba8* src, Rgba8* dst) {
-    RowChunks(L.width, exitMask,
-              [&](int x) { Fxaa3dChunk(tex, L, planes, lerp, x, y, exitMask, p, src, dst); });
+    RowChunks(L.width, exitMask, [&](int x) { Fxaa3dChunk(tex, L, planes, lerp, x, y, exitMask, p, src, dst); });
 }
 
 }  // namespace HWY_NAMESPACE

@@ -92,9 +92,9 @@ struct NoRowKernel {
 //! itself (a vector kernel across pixels) and sets their mask bytes to kWritten; the
 //! driver copies kExit runs and runs `pixel` on the kEdge pixels.
 template <class PixelFn, class RowKernel = NoRowKernel>
-void runLumaMethod(ImageView<const Rgba8> in, ImageView<Rgba8> out, bool scalar, float chromaWeight,
-                   float thresholdMin, float threshold, const Exec& exec, const PlaneNeeds& needs,
-                   const PixelFn& pixel, const RowKernel& rowKernel = {}) {
+void runLumaMethod(ImageView<const Rgba8> in, ImageView<Rgba8> out, bool scalar, float chromaWeight, float thresholdMin,
+                   float threshold, const Exec& exec, const PlaneNeeds& needs, const PixelFn& pixel,
+                   const RowKernel& rowKernel = {}) {
     const int w = in.width();
     if (scalar) {
         const ImageF plane = lumaPlaneReference(in, chromaWeight);

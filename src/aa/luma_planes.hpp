@@ -66,10 +66,10 @@ inline bool planesFitGatherIndices(int width) {
 //! texture: the shape of the per-size exactness checks of the search/walk reads.
 template <class AxisCheck>
 bool forBothAxes(const Texture& tex, const AxisCheck& check) {
-    return check(tex.width(), tex.invW(), [&](int x) { return tex.centreU(x); },
-                 [&](float u) { return tex.axisU(u); }) &&
-           check(tex.height(), tex.invH(), [&](int y) { return tex.centreV(y); },
-                 [&](float v) { return tex.axisV(v); });
+    return check(
+               tex.width(), tex.invW(), [&](int x) { return tex.centreU(x); }, [&](float u) { return tex.axisU(u); }) &&
+           check(
+               tex.height(), tex.invH(), [&](int y) { return tex.centreV(y); }, [&](float v) { return tex.axisV(v); });
 }
 
 //! Half a pixel across from centre c of texel i (the steep side's offset, both ways) lands

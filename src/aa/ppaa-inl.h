@@ -181,7 +181,7 @@ HWY_INLINE VI Quantize(VF v) {
     const DI di;
     const VF c = hn::Min(hn::Max(v, hn::Zero(df)), hn::Set(df, 1.0f));
     const VF a = hn::Mul(c, hn::Set(df, 256.0f));  // exact
-    const VF s = hn::Sub(a, c);                      // Fast2Sum(a, -c), |a| >= |c|
+    const VF s = hn::Sub(a, c);                    // Fast2Sum(a, -c), |a| >= |c|
     const VF e1 = hn::Sub(hn::Neg(c), hn::Sub(s, a));
     const VF half = hn::Set(df, 0.5f);
     const VF t = hn::Add(s, half);  // TwoSum(s, 0.5)
@@ -280,7 +280,8 @@ HWY_INLINE VI ByteOfMeanLevel(VI ka, VI kb) {
     const VI roundUp = hn::ShiftRight<5>(hn::Add(sum, hn::Set(di, 16)));
     const auto tie = hn::Eq(hn::And(sum, hn::Set(di, 31)), hn::Set(di, 16));
     const VF s = hn::Add(Levels4080(ka), Levels4080(kb));
-    const VF d = hn::Sub(hn::Sub(hn::Mul(s, hn::Set(df, 4096.0f)), hn::ConvertTo(df, sum)), hn::Mul(s, hn::Set(df, 16.0f)));
+    const VF d =
+        hn::Sub(hn::Sub(hn::Mul(s, hn::Set(df, 4096.0f)), hn::ConvertTo(df, sum)), hn::Mul(s, hn::Set(df, 16.0f)));
     const auto below = hn::And(hn::RebindMask(di, hn::Lt(d, hn::Zero(df))), tie);
     return hn::Sub(roundUp, hn::IfThenElseZero(below, hn::Set(di, 1)));
 }
@@ -290,8 +291,8 @@ HWY_INLINE VI ByteOfMeanLevel(VI ka, VI kb) {
 HWY_INLINE void StoreBytes(VI r, VI g, VI b, int x, const std::uint8_t* exitMask, const Rgba8* src, Rgba8* dst) {
     const DU du;
     const VU srcV = hn::LoadU(du, reinterpret_cast<const std::uint32_t*>(src + x));
-    const VU rgb = hn::Or(hn::Or(hn::BitCast(du, r), hn::ShiftLeft<8>(hn::BitCast(du, g))),
-                          hn::ShiftLeft<16>(hn::BitCast(du, b)));
+    const VU rgb =
+        hn::Or(hn::Or(hn::BitCast(du, r), hn::ShiftLeft<8>(hn::BitCast(du, g))), hn::ShiftLeft<16>(hn::BitCast(du, b)));
     const VU result = hn::Or(rgb, hn::And(srcV, hn::Set(du, 0xFF000000u)));
     hn::StoreU(hn::IfThenElse(hn::RebindMask(du, ExitLanes(exitMask, x)), srcV, result), du,
                reinterpret_cast<std::uint32_t*>(dst + x));

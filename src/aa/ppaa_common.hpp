@@ -37,9 +37,7 @@ inline void checkOutput(const char* method, ImageView<const Rgba8> in, ImageView
 inline float maxf(float a, float b) { return a < b ? b : a; }
 inline float minf(float a, float b) { return b < a ? b : a; }
 
-inline Rgba8 toRgba8(const Rgb& c, std::uint8_t alpha) {
-    return {toUnorm8(c.r), toUnorm8(c.g), toUnorm8(c.b), alpha};
-}
+inline Rgba8 toRgba8(const Rgb& c, std::uint8_t alpha) { return {toUnorm8(c.r), toUnorm8(c.g), toUnorm8(c.b), alpha}; }
 
 //! Luma of the 3x3 neighbourhood. Names as in the reference shader (spec section 1):
 //! S = (0, -1) is the row above, N = (0, +1) the row below.

@@ -37,9 +37,8 @@ struct Tap2 {
 constexpr float kA = 0.746677f, kWa = 0.269867f;
 constexpr float kB = 2.886093f, kC = 0.746066f, kWb = -0.009934f;
 constexpr Tap2 kTaps2[12] = {
-    {-kA, -kA, kWa}, {kA, -kA, kWa}, {-kA, kA, kWa}, {kA, kA, kWa},
-    {-kB, -kC, kWb}, {kB, -kC, kWb}, {-kB, kC, kWb}, {kB, kC, kWb},
-    {-kC, -kB, kWb}, {kC, -kB, kWb}, {-kC, kB, kWb}, {kC, kB, kWb},
+    {-kA, -kA, kWa}, {kA, -kA, kWa}, {-kA, kA, kWa},  {kA, kA, kWa},  {-kB, -kC, kWb}, {kB, -kC, kWb},
+    {-kB, kC, kWb},  {kB, kC, kWb},  {-kC, -kB, kWb}, {kC, -kB, kWb}, {-kC, kB, kWb},  {kC, kB, kWb},
 };
 
 // Taps along one axis for output coordinate f (source pixel units, texel centres at i + 0.5).
@@ -55,7 +54,7 @@ AxisTaps axisTaps(float f, float support, float s, const MitchellParams& p) {
     if (fracS <= 0.5f) {  // odd kernel around the texel containing f
         base = int(std::floor(f));
         dLo = -n, dHi = n;
-    } else {  // even kernel around the nearest texel boundary
+    } else {                            // even kernel around the nearest texel boundary
         base = int(std::nearbyint(f));  // ties to even
         dLo = -n - 1, dHi = n;
     }
@@ -111,8 +110,7 @@ struct ResampleShape {
 ResampleShape resampleShape(ImageView<const Rgba8> in, int factor) {
     detail::checkInput("mitchell", in);
     if (factor == 0 || factor == -1 || factor > 64 || factor < -64)
-        throw Error(fmt::format("mitchell: factor {} is not in [2, 64] (shrink) or [-64, -2] (magnify), or 1",
-                                factor));
+        throw Error(fmt::format("mitchell: factor {} is not in [2, 64] (shrink) or [-64, -2] (magnify), or 1", factor));
     const bool shrink = factor >= 1;
     const int m = shrink ? factor : -factor;
     if (shrink && (in.width() % m != 0 || in.height() % m != 0))
@@ -135,8 +133,8 @@ void resampleMitchell(ImageView<const Rgba8> in, int factor, ImageView<Rgba8> ou
                       const Exec& exec) {
     const ResampleShape shape = resampleShape(in, factor);
     if (out.width() != shape.w || out.height() != shape.h)
-        throw Error(fmt::format("mitchell: output is {}x{}, expected {}x{}", out.width(), out.height(), shape.w,
-                                shape.h));
+        throw Error(
+            fmt::format("mitchell: output is {}x{}, expected {}x{}", out.width(), out.height(), shape.w, shape.h));
     checkMitchell("mitchell", params);
     const bool shrink = shape.shrink;
     const int m = shape.m;
@@ -185,8 +183,7 @@ ImageRgba8 upscaleMitchell(ImageView<const Rgba8> in, int factor, const Mitchell
     return resampleMitchell(in, -factor, params, exec);
 }
 
-ImageRgba8 downscaleMitchell(ImageView<const Rgba8> in, int factor, const MitchellParams& params,
-                             const Exec& exec) {
+ImageRgba8 downscaleMitchell(ImageView<const Rgba8> in, int factor, const MitchellParams& params, const Exec& exec) {
     if (factor == 1) return ImageRgba8::copyOf(in);
     if (factor < 1) throw Error(fmt::format("mitchell: downscale factor {} must be at least 1", factor));
     return resampleMitchell(in, factor, params, exec);

@@ -6,22 +6,23 @@
 #include <fmt/format.h>
 
 #include <bit>
-#include <string>
 #include <cmath>
 #include <numbers>
+#include <string>
 #include <vector>
 
+#include "src/ao/ao_simd.hpp"
 #include "ssfx/ao/depth.hpp"
 #include "ssfx/ao/sao.hpp"
 #include "ssfx/core/error.hpp"
-#include "src/ao/ao_simd.hpp"
 
 namespace ssfx::ao::detail {
 
 //! The bilateral blur's rule across fields (the table checks each field's range).
 inline void checkBilateral(const char* method, const BilateralParams& b) {
     if (b.blurReleasedWeights && b.blurRadius > 4)
-        throw Error(fmt::format("{}: blurReleasedWeights has weights for blurRadius <= 4 (got {})", method, b.blurRadius));
+        throw Error(
+            fmt::format("{}: blurReleasedWeights has weights for blurRadius <= 4 (got {})", method, b.blurRadius));
 }
 
 inline Vec3 sub(Vec3 a, Vec3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
@@ -38,7 +39,7 @@ struct SampleSetup {
     int numSamples, spiralTurns, logQ, maxMip;
     float radius;
     bool usePyramid;
-    bool vector = true;  //!< false: the scalar loop only (the reference)
+    bool vector = true;                         //!< false: the scalar loop only (the reference)
     double turnAngle = 2.0 * std::numbers::pi;  //!< SaoParams::spiralTurnAngle
     bool spinInFloat = false;                   //!< SaoParams::spinInFloat
 };
@@ -111,8 +112,8 @@ inline void copyPyramid(const std::vector<ImageF>& pyr, ZPyramid& out) {
 //! and each tap's angle is alpha_k * float(tau turnAngle) + phi in float (no FMA), its cos
 //! and sin taken per tap.
 template <class Estimator>
-void samplePass(const ZPyramid& pyr, const Projection& proj, Region region, const SampleSetup& s,
-                const Estimator& est, const Exec& exec, ImageF& out) {
+void samplePass(const ZPyramid& pyr, const Projection& proj, Region region, const SampleSetup& s, const Estimator& est,
+                const Exec& exec, ImageF& out) {
     const ImageView<const float> z0 = pyr.level(0);
     const int w = z0.width(), h = z0.height();
     if (out.width() != region.width || out.height() != region.height) out = ImageF(region.width, region.height);
@@ -124,7 +125,7 @@ void samplePass(const ZPyramid& pyr, const Projection& proj, Region region, cons
     for (int k = 0; k < s.numSamples; ++k) {
         const double a = (k + 0.5) / s.numSamples, theta = a * s.turnAngle * s.spiralTurns;
         alpha[std::size_t(k)] = float(a), dirX[std::size_t(k)] = float(std::cos(theta)),
-                           dirY[std::size_t(k)] = float(std::sin(theta));
+        dirY[std::size_t(k)] = float(std::sin(theta));
         if (s.spinInFloat) {
             alpha[std::size_t(k)] = (float(k) + 0.5f) * (1.0f / float(s.numSamples));
             tapAngle[std::size_t(k)] = releasedTapAngle(k, s.numSamples, s.spiralTurns, s.turnAngle, 0.0f);
@@ -134,9 +135,33 @@ void samplePass(const ZPyramid& pyr, const Projection& proj, Region region, cons
     const bool vector = s.vector && w >= 2 && h >= 2;
     SimdSampleInput vin{};
     if (vector) {
-        vin = {pyr.data.data(), pyr.offset.data(), pyr.width.data(), pyr.height.data(), levels, w, h,
-               pos.fx.data(), pos.fy.data(), pos.ax, pos.bx, pos.ay, pos.by, proj.pixelsPerMeter, s.radius,
-               s.numSamples, s.logQ, alpha.data(), dirX.data(), dirY.data(), 0, 0, 0, 0, 0, 0, 1.0f,
+        vin = {pyr.data.data(),
+               pyr.offset.data(),
+               pyr.width.data(),
+               pyr.height.data(),
+               levels,
+               w,
+               h,
+               pos.fx.data(),
+               pos.fy.data(),
+               pos.ax,
+               pos.bx,
+               pos.ay,
+               pos.by,
+               proj.pixelsPerMeter,
+               s.radius,
+               s.numSamples,
+               s.logQ,
+               alpha.data(),
+               dirX.data(),
+               dirY.data(),
+               0,
+               0,
+               0,
+               0,
+               0,
+               0,
+               1.0f,
                s.spinInFloat ? tapAngle.data() : nullptr};
         est.fill(vin);
     }

@@ -6,21 +6,21 @@
 namespace ssfx::ao::detail {
 
 struct SimdSampleInput {
-    const float* levels;                 //!< all pyramid levels, one after the other (level 0 first)
-    const std::int32_t* levelOffset;     //!< [maxLevel + 1] start of each level in `levels`
-    const std::int32_t* levelW;          //!< [maxLevel + 1] sizes
+    const float* levels;              //!< all pyramid levels, one after the other (level 0 first)
+    const std::int32_t* levelOffset;  //!< [maxLevel + 1] start of each level in `levels`
+    const std::int32_t* levelW;       //!< [maxLevel + 1] sizes
     const std::int32_t* levelH;
-    int maxLevel;                        //!< highest level a tap may read
-    int width, height;                   //!< level 0
-    const float* fx;                     //!< position tables (ao_sampling.hpp PositionTables)
+    int maxLevel;       //!< highest level a tap may read
+    int width, height;  //!< level 0
+    const float* fx;    //!< position tables (ao_sampling.hpp PositionTables)
     const float* fy;
-    float ax, bx, ay, by;                //!< fx(x) = ax + bx * x, fy(y) = ay + by * y (PositionTables)
+    float ax, bx, ay, by;  //!< fx(x) = ax + bx * x, fy(y) = ay + by * y (PositionTables)
     float pixelsPerMeter, radius;
     int numSamples, logQ;
-    const float *alpha, *dirX, *dirY;    //!< the spiral, [numSamples]
-    int estimator;                       //!< 0: SAO's falloff, 1: AlchemyAO (eq. 1)
+    const float *alpha, *dirX, *dirY;  //!< the spiral, [numSamples]
+    int estimator;                     //!< 0: SAO's falloff, 1: AlchemyAO (eq. 1)
     float r2, bias, beta, epsilon, scale;
-    float scale2;                        //!< A = max(0, 1 - (sum * scale) * scale2) (1: one factor)
+    float scale2;  //!< A = max(0, 1 - (sum * scale) * scale2) (1: one factor)
     //! [numSamples] alpha_k float(tau turnAngle) when each tap's angle is summed with the hash
     //! angle in float (SaoParams::spinInFloat); null: the spiral rotated per pixel.
     const float* tapAngle;
@@ -38,9 +38,9 @@ struct BilateralRowInput {
     const float* zCentre;
     const float* zTap[kMaxTaps];
     const float* aTap[kMaxTaps];
-    float gauss[kMaxTaps];               //!< spatial weight of each tap
-    float edgeSharpness;                 //!< k of max(0, 1 - k |dz|)
-    float epsilon;                       //!< out = sum / (weights + epsilon)
+    float gauss[kMaxTaps];  //!< spatial weight of each tap
+    float edgeSharpness;    //!< k of max(0, 1 - k |dz|)
+    float epsilon;          //!< out = sum / (weights + epsilon)
 };
 
 //! out[i] for i in [lo, hi) of one bilateral row; 1 where zCentre[i] is infinite.

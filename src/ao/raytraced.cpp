@@ -51,7 +51,7 @@ void validate(const RaytracedParams& p) { validateParams(kRaytracedParams, &p, "
 ImageF raytraced(const RayScene& scene, const Camera& camera, int width, int height, const RaytracedParams& p,
                  const Exec& exec) {
     validate(p);
-    if ( width <= 2 * p.guardBand || height <= 2 * p.guardBand)
+    if (width <= 2 * p.guardBand || height <= 2 * p.guardBand)
         throw Error(fmt::format("raytraced: no pixels inside a guard band of {} in {}x{}", p.guardBand, width, height));
     const Projection proj = projection(camera, width, height);
     const int g = p.guardBand, w = width - 2 * g, h = height - 2 * g;
@@ -89,7 +89,8 @@ ImageF raytraced(const RayScene& scene, const Camera& camera, int width, int hei
                     double u1 = (k + 0.5) / n + su, u2 = radicalInverse2(std::uint32_t(k)) + sv;
                     u1 -= std::floor(u1), u2 -= std::floor(u2);
                     const double rad = std::sqrt(u1), phi = 2 * std::numbers::pi * u2;
-                    const double lx = rad * std::cos(phi), ly = rad * std::sin(phi), lz = std::sqrt(std::max(0.0, 1 - u1));
+                    const double lx = rad * std::cos(phi), ly = rad * std::sin(phi),
+                                 lz = std::sqrt(std::max(0.0, 1 - u1));
                     const Vec3d d{t1.x * lx + t2.x * ly + nn.x * lz, t1.y * lx + t2.y * ly + nn.y * lz,
                                   t1.z * lx + t2.z * ly + nn.z * lz};
                     const RayHit s = scene.intersect(o, d, 0.0, r);

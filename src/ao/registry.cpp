@@ -40,39 +40,44 @@ AoMethodInfo entry(Text t, std::span<const ParamInfo> params, std::span<const st
 }
 
 const std::array<AoMethodInfo, 3> kAoMethods{{
-    entry({"sao", "Scalable Ambient Obscurance: z pyramid, spiral taps, bilateral reconstruction",
-           "McGuire, Mara, Luebke, Scalable Ambient Obscurance, HPG 2012", kDepthInput},
-          kSaoParams, kSaoPresets, false,
-     [](std::string_view preset) -> AoParams { return preset.empty() ? SaoParams{} : saoPreset(std::string(preset)); },
-     [](const AoParams& p) { validate(as<SaoParams>(p, "sao")); },
-          [](const AoInput& in, const AoParams& p, const Exec& e) {
-              return sao(in.depth, in.camera, as<SaoParams>(p, "sao"), e);
-          }),
-    entry({"alchemy", "AlchemyAO, the baseline SAO improves on: 12 taps at level 0, the same reconstruction",
-           "McGuire et al., The Alchemy Screen-Space Ambient Obscurance Algorithm, HPG 2011; SAO paper section 3",
-           kDepthInput},
-          kAlchemyParams, {}, false,
-     [](std::string_view preset) -> AoParams {
-         noPreset("alchemy", preset);
-         return AlchemyParams{};
-     },
-     [](const AoParams& p) { validate(as<AlchemyParams>(p, "alchemy")); },
-     [](const AoInput& in, const AoParams& p, const Exec& e) {
-         return alchemy(in.depth, in.camera, as<AlchemyParams>(p, "alchemy"), e);
-     }),
-    entry({"raytraced", "ground truth: cosine-weighted rays against the scene's geometry, SAO's falloff radius",
-           "SAO paper section 3 (the ray-traced comparison)", "the scene's geometry and the camera of a depth buffer"},
-          kRaytracedParams, {}, true,
-     [](std::string_view preset) -> AoParams {
-         noPreset("raytraced", preset);
-         return RaytracedParams{};
-     },
-     [](const AoParams& p) { validate(as<RaytracedParams>(p, "raytraced")); },
-     [](const AoInput& in, const AoParams& p, const Exec& e) {
-         if (!in.geometry) throw Error("raytraced needs the scene's geometry (a depth buffer is not enough)");
-         return raytraced(*in.geometry, in.camera, in.depth.width(), in.depth.height(),
-                          as<RaytracedParams>(p, "raytraced"), e);
-     }),
+    entry(
+        {"sao", "Scalable Ambient Obscurance: z pyramid, spiral taps, bilateral reconstruction",
+         "McGuire, Mara, Luebke, Scalable Ambient Obscurance, HPG 2012", kDepthInput},
+        kSaoParams, kSaoPresets, false,
+        [](std::string_view preset) -> AoParams {
+            return preset.empty() ? SaoParams{} : saoPreset(std::string(preset));
+        },
+        [](const AoParams& p) { validate(as<SaoParams>(p, "sao")); },
+        [](const AoInput& in, const AoParams& p, const Exec& e) {
+            return sao(in.depth, in.camera, as<SaoParams>(p, "sao"), e);
+        }),
+    entry(
+        {"alchemy", "AlchemyAO, the baseline SAO improves on: 12 taps at level 0, the same reconstruction",
+         "McGuire et al., The Alchemy Screen-Space Ambient Obscurance Algorithm, HPG 2011; SAO paper section 3",
+         kDepthInput},
+        kAlchemyParams, {}, false,
+        [](std::string_view preset) -> AoParams {
+            noPreset("alchemy", preset);
+            return AlchemyParams{};
+        },
+        [](const AoParams& p) { validate(as<AlchemyParams>(p, "alchemy")); },
+        [](const AoInput& in, const AoParams& p, const Exec& e) {
+            return alchemy(in.depth, in.camera, as<AlchemyParams>(p, "alchemy"), e);
+        }),
+    entry(
+        {"raytraced", "ground truth: cosine-weighted rays against the scene's geometry, SAO's falloff radius",
+         "SAO paper section 3 (the ray-traced comparison)", "the scene's geometry and the camera of a depth buffer"},
+        kRaytracedParams, {}, true,
+        [](std::string_view preset) -> AoParams {
+            noPreset("raytraced", preset);
+            return RaytracedParams{};
+        },
+        [](const AoParams& p) { validate(as<RaytracedParams>(p, "raytraced")); },
+        [](const AoInput& in, const AoParams& p, const Exec& e) {
+            if (!in.geometry) throw Error("raytraced needs the scene's geometry (a depth buffer is not enough)");
+            return raytraced(*in.geometry, in.camera, in.depth.width(), in.depth.height(),
+                             as<RaytracedParams>(p, "raytraced"), e);
+        }),
 }};
 
 }  // namespace

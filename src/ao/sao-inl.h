@@ -16,9 +16,9 @@
 #include <hwy/contrib/math/math-inl.h>
 #include <hwy/highway.h>
 
+#include "src/ao/ao_simd.hpp"
 #include "src/ao/bilateral-inl.h"
 #include "src/ao/depth-inl.h"
-#include "src/ao/ao_simd.hpp"
 
 HWY_BEFORE_NAMESPACE();
 namespace ssfx::ao::detail {
@@ -72,11 +72,10 @@ inline int SampleRowSimd(const SimdSampleInput& in, int y, int x0, int x1, float
     // Per-level geometry as vectors when the levels fit in one (maxMip < lanes): a lane
     // permutation per tap instead of gathers. Sizes halve, rounding down, at least 1.
     const bool levelsInVector = in.maxLevel < n;
-    HWY_ALIGN std::int32_t offs[hn::MaxLanes(di)] = {}, lastX[hn::MaxLanes(di)] = {},
-                           lastY[hn::MaxLanes(di)] = {}, widths[hn::MaxLanes(di)] = {};
+    HWY_ALIGN std::int32_t offs[hn::MaxLanes(di)] = {}, lastX[hn::MaxLanes(di)] = {}, lastY[hn::MaxLanes(di)] = {},
+                           widths[hn::MaxLanes(di)] = {};
     for (int l = 0; l <= in.maxLevel && l < n; ++l)
-        offs[l] = in.levelOffset[l], widths[l] = in.levelW[l], lastX[l] = in.levelW[l] - 1,
-        lastY[l] = in.levelH[l] - 1;
+        offs[l] = in.levelOffset[l], widths[l] = in.levelW[l], lastX[l] = in.levelW[l] - 1, lastY[l] = in.levelH[l] - 1;
     const auto offVec = hn::Load(di, offs), wVec = hn::Load(di, widths), lastXVec = hn::Load(di, lastX),
                lastYVec = hn::Load(di, lastY);
     const auto expBias = hn::Set(di, 127 + in.logQ), maxLevel = hn::Set(di, in.maxLevel);
@@ -115,8 +114,7 @@ inline int SampleRowSimd(const SimdSampleInput& in, int y, int x0, int x1, float
         auto nz = hn::Sub(hn::Mul(ddyX, ddxY), hn::Mul(ddyY, ddxX));
         const auto len = hn::Sqrt(hn::Add(hn::Add(hn::Mul(nx, nx), hn::Mul(ny, ny)), hn::Mul(nz, nz)));
         // Valid: a finite, non-zero normal and a finite centre (no sky in the quad).
-        const auto valid = hn::And(hn::And(hn::Gt(len, zero), hn::Lt(len, hn::Set(df, HUGE_VALF))),
-                                   hn::Gt(zc, negInf));
+        const auto valid = hn::And(hn::And(hn::Gt(len, zero), hn::Lt(len, hn::Set(df, HUGE_VALF))), hn::Gt(zc, negInf));
         const auto inv = hn::Div(one, len);
         nx = hn::Mul(nx, inv), ny = hn::Mul(ny, inv), nz = hn::Mul(nz, inv);
         const auto ssRadius = hn::Div(radiusS, zc);
@@ -168,8 +166,9 @@ inline int SampleRowSimd(const SimdSampleInput& in, int y, int x0, int x1, float
             hn::Vec<decltype(df)> term;
             if (in.estimator == 0) {  // SAO's updated falloff
                 const auto f = hn::Max(hn::Sub(hn::Set(df, in.r2), vv), zero);
-                term = hn::Mul(hn::Mul(hn::Mul(f, f), f),
-                               hn::Max(hn::Div(hn::Sub(vn, hn::Set(df, in.bias)), hn::Add(vv, hn::Set(df, in.epsilon))), zero));
+                term = hn::Mul(
+                    hn::Mul(hn::Mul(f, f), f),
+                    hn::Max(hn::Div(hn::Sub(vn, hn::Set(df, in.bias)), hn::Add(vv, hn::Set(df, in.epsilon))), zero));
             } else {  // AlchemyAO, eq. 1
                 term = hn::Div(hn::Max(zero, hn::Add(vn, hn::Mul(zc, hn::Set(df, in.beta)))),
                                hn::Add(vv, hn::Set(df, in.epsilon)));

@@ -69,13 +69,13 @@ SaoParams saoPreset(const std::string& name) {
         throw Error(fmt::format("sao: unknown preset '{}' (presets: {})", name, fmt::join(saoPresetNames(), ", ")));
     // The released shaders (AmbientOcclusion_AO.pix, AmbientOcclusion_blur.pix) and their host
     // code's defaults, G3D 9, June 2012.
-    p.numSamples = 11, p.numSpiralTurns = 7;      // NUM_SAMPLES, NUM_SPIRAL_TURNS
+    p.numSamples = 11, p.numSpiralTurns = 7;         // NUM_SAMPLES, NUM_SPIRAL_TURNS
     p.spiralTurnAngle = 6.28, p.spinInFloat = true;  // tapLocation()
     p.linearIntensity = true;
     p.radius = 0.7f, p.bias = 0.012f, p.intensity = 0.7f;  // host defaults (the paper's demo: 1, 0.012, 1)
-    p.blur.blurRadius = 4, p.blur.blurStride = 2;  // R, SCALE
+    p.blur.blurRadius = 4, p.blur.blurStride = 2;          // R, SCALE
     p.blur.blurReleasedWeights = true, p.blur.blurEpsilon = 1e-4f, p.blur.blurZeroOutside = true;
-    p.blur.edgeSharpness = 2000.0f;  // EDGE_SHARPNESS 1 x 2000, on the key
+    p.blur.edgeSharpness = 2000.0f;                                          // EDGE_SHARPNESS 1 x 2000, on the key
     p.packBlurInput = true, p.releasedPacking = true, p.packZMin = -300.0f;  // RGB8, FAR_PLANE_Z
     return p;
 }
@@ -144,11 +144,11 @@ void samplePassImpl(const ZPyramid& pyramid, const Projection& proj, Region regi
     // times the shader's constant 5.0 / NUM_SAMPLES.
     const SaoEstimator est =
         p.linearIntensity
-            ? SaoEstimator{r2, p.bias, p.epsilon, p.intensity / std::pow(p.radius, 6.0f), 5.0f / float(p.numSamples), 1.0f}
+            ? SaoEstimator{r2,  p.bias, p.epsilon, p.intensity / std::pow(p.radius, 6.0f), 5.0f / float(p.numSamples),
+                           1.0f}
             : SaoEstimator{r2, p.bias, p.epsilon, 5.0f / (r2 * r2 * r2 * float(p.numSamples)), 1.0f, p.intensity};
-    const detail::SampleSetup setup{p.numSamples, p.numSpiralTurns, p.logQ,        p.maxMip,
-                                    p.radius,     p.usePyramid,     vector,        p.spiralTurnAngle,
-                                    p.spinInFloat};
+    const detail::SampleSetup setup{p.numSamples, p.numSpiralTurns,  p.logQ,       p.maxMip, p.radius, p.usePyramid,
+                                    vector,       p.spiralTurnAngle, p.spinInFloat};
     detail::samplePass(pyramid, proj, region, setup, est, exec, out);
 }
 }  // namespace
@@ -205,8 +205,8 @@ void quadBilateral(ImageF& a, ImageView<const float> z, Region region, float thr
     });
 }
 
-ImageF bilateralPass(const ImageF& a, ImageView<const float> z, Region region, const BilateralParams& p, bool horizontal,
-                     const Exec& exec) {
+ImageF bilateralPass(const ImageF& a, ImageView<const float> z, Region region, const BilateralParams& p,
+                     bool horizontal, const Exec& exec) {
     ImageF out;
     bilateralPass(a, z, region, p, horizontal, out, exec);
     return out;
@@ -305,7 +305,9 @@ ImageF saoImpl(ImageView<const float> depth, const Camera& camera, const SaoPara
         throw Error(fmt::format("sao: a {}x{} depth buffer has no pixels inside a guard band of {}", depth.width(),
                                 depth.height(), g));
     using Clock = std::chrono::steady_clock;
-    auto ms = [](Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
+    auto ms = [](Clock::time_point a, Clock::time_point b) {
+        return std::chrono::duration<double, std::milli>(b - a).count();
+    };
     const auto t0 = Clock::now();
     const Projection proj = projection(camera, depth.width(), depth.height());
     // Buffers kept per calling thread and reused while the sizes stay (a frame loop then
@@ -319,7 +321,8 @@ ImageF saoImpl(ImageView<const float> depth, const Camera& camera, const SaoPara
     depthToZ(depth, camera, ws.pyr.level(0), exec);
     const ImageView<const float> z = std::as_const(ws.pyr).level(0);
     const auto t1 = Clock::now();
-    for (int m = 1; m <= levels; ++m) zPyramidLevel(std::as_const(ws.pyr).level(m - 1), ws.pyr.level(m), p.pyramidFilter, exec);
+    for (int m = 1; m <= levels; ++m)
+        zPyramidLevel(std::as_const(ws.pyr).level(m - 1), ws.pyr.level(m), p.pyramidFilter, exec);
     const auto t2 = Clock::now();
     const Region out{g, g, depth.width() - 2 * g, depth.height() - 2 * g};
     const Region work = detail::quadAligned(out, depth.width(), depth.height());

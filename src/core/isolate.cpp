@@ -66,7 +66,8 @@ bool writeAll(int fd, const void* data, std::size_t size) {
 std::vector<std::uint8_t> runIsolated(const std::function<std::vector<std::uint8_t>()>& work, const std::string& what,
                                       const std::string& parser) {
     const int fd = ::memfd_create("ssfx-isolated", MFD_CLOEXEC);
-    if (fd < 0) throw Error(fmt::format("{}: cannot create a memory file for the {} ({})", what, parser, std::strerror(errno)));
+    if (fd < 0)
+        throw Error(fmt::format("{}: cannot create a memory file for the {} ({})", what, parser, std::strerror(errno)));
     struct Closer {
         int fd;
         ~Closer() { ::close(fd); }
@@ -78,8 +79,9 @@ std::vector<std::uint8_t> runIsolated(const std::function<std::vector<std::uint8
     while (::waitpid(pid, &status, 0) < 0)
         if (errno != EINTR) throw Error(fmt::format("{}: lost the {} ({})", what, parser, std::strerror(errno)));
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-        const std::string how = WIFSIGNALED(status) ? fmt::format("signal {}, {}", WTERMSIG(status), strsignal(WTERMSIG(status)))
-                                                    : fmt::format("exit status {}", WEXITSTATUS(status));
+        const std::string how = WIFSIGNALED(status)
+                                    ? fmt::format("signal {}, {}", WTERMSIG(status), strsignal(WTERMSIG(status)))
+                                    : fmt::format("exit status {}", WEXITSTATUS(status));
         throw Error(fmt::format("{}: the {} stopped abnormally ({}); the file is malformed or not what its name says",
                                 what, parser, how));
     }

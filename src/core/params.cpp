@@ -48,7 +48,8 @@ void checkParam(const ParamInfo& row, double v, std::string_view id) {
             return;
         case ParamKind::Integer:
             if (!(v >= row.min && v <= row.max && v == std::floor(v)))
-                throw Error(fmt::format("{}: {} = {} is not an integer in [{}, {}]", id, row.name, v, row.min, row.max));
+                throw Error(
+                    fmt::format("{}: {} = {} is not an integer in [{}, {}]", id, row.name, v, row.min, row.max));
             return;
         case ParamKind::Boolean:
             if (v != 0.0 && v != 1.0) throw Error(fmt::format("{}: {} = {} is not 0 or 1", id, row.name, v));
@@ -87,7 +88,8 @@ double parseParamValue(const ParamInfo& row, std::string_view text, std::string_
     const auto [end, ec] = std::from_chars(text.data() + skip, text.data() + text.size(), v);
     if (ec != std::errc() || end != text.data() + text.size() || text.empty()) {
         if (row.kind == ParamKind::Choice)
-            throw Error(fmt::format("{}: {} = '{}' is not one of {}", id, row.name, text, fmt::join(row.choices, ", ")));
+            throw Error(
+                fmt::format("{}: {} = '{}' is not one of {}", id, row.name, text, fmt::join(row.choices, ", ")));
         throw Error(fmt::format("{}: {} = '{}' is not a number{}", id, row.name, text,
                                 row.kind == ParamKind::Boolean ? " (or true, false)" : ""));
     }

@@ -19,7 +19,7 @@ Rgb Texture::sampleGpu(const AxisPos& ax, const AxisPos& ay, int ox, int oy) con
     const int w01 = (256 - ax.w) * ay.w, w11 = ax.w * ay.w;
     auto channel = [&](std::uint8_t a, std::uint8_t b, std::uint8_t c, std::uint8_t d) {
         const int sum = w00 * a + w10 * b + w01 * c + w11 * d;
-        const int k = (sum + 2048) >> 12;  // round half up to 1/16 level (4096 units)
+        const int k = (sum + 2048) >> 12;         // round half up to 1/16 level (4096 units)
         return kSixteenthLevels[std::size_t(k)];  // k / (255 * 16)
     };
     return {channel(t00.r, t10.r, t01.r, t11.r), channel(t00.g, t10.g, t01.g, t11.g),

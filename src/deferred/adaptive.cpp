@@ -74,7 +74,8 @@ float normalMetric(const glm::vec3* normals, int n, float c) {
 }
 
 float shadingMetric(float centre, float north, float south, float west, float east, float c, float tMin, float tEdge) {
-    const float lMax = std::max({centre, north, south, west, east}), lMin = std::min({centre, north, south, west, east});
+    const float lMax = std::max({centre, north, south, west, east}),
+                lMin = std::min({centre, north, south, west, east});
     const float r = lMax - lMin;
     return r < std::max(tMin, lMax * tEdge) ? 0.0f : c * r;  // FXAA's early exit (ppaa.md section 1)
 }
@@ -125,7 +126,8 @@ DeferredResult adaptiveSupersampling(const scene::Scene& scene, const scene::GBu
                 const float kd = depthMetric(depths.data(), n, p.cDepth);
                 const float kn = normalMetric(normals.data(), geometry, p.cNormal);
                 const float ks = shadingMetric(lumas(x, y), lumasView.clamped(x, y - 1), lumasView.clamped(x, y + 1),
-                                               lumasView.clamped(x - 1, y), lumasView.clamped(x + 1, y), p.cShading, p.tMin, p.tEdge);
+                                               lumasView.clamped(x - 1, y), lumasView.clamped(x + 1, y), p.cShading,
+                                               p.tMin, p.tEdge);
                 r.kDepth(x, y) = kd;
                 r.kNormal(x, y) = kn;
                 r.kShading(x, y) = ks;
@@ -151,7 +153,8 @@ DeferredResult adaptiveSupersampling(const scene::Scene& scene, const scene::GBu
             sum = shader.shade(fx, fy, footprint);  // its albedo depends on the footprint
             ++shaded;
         }
-        for (int s = 1; s < k; ++s) sum += shader.shade(m * x + order[std::size_t(s)][0], m * y + order[std::size_t(s)][1], footprint);
+        for (int s = 1; s < k; ++s)
+            sum += shader.shade(m * x + order[std::size_t(s)][0], m * y + order[std::size_t(s)][1], footprint);
         r.image(x, y) = sum / float(k);
         return shaded;
     };
@@ -186,7 +189,8 @@ DeferredResult adaptiveSupersampling(const scene::Scene& scene, const scene::GBu
                     for (std::size_t k = 1; k < start.size(); ++k) start[k] += start[k - 1];
                     for (int y = y0; y < y1; ++y)
                         for (int x = x0; x < x1; ++x) sorted[std::size_t(start[r.samples(x, y)]++)] = {x, y};
-                    for (int i = 0; i < (x1 - x0) * (y1 - y0); ++i) shaded += shadePixel(sorted[std::size_t(i)][0], sorted[std::size_t(i)][1]);
+                    for (int i = 0; i < (x1 - x0) * (y1 - y0); ++i)
+                        shaded += shadePixel(sorted[std::size_t(i)][0], sorted[std::size_t(i)][1]);
                 }
                 bandShaded[std::size_t(ty)] = shaded;
             }
@@ -198,7 +202,7 @@ DeferredResult adaptiveSupersampling(const scene::Scene& scene, const scene::GBu
 }
 
 DeferredResult bruteForceSupersampling(const scene::Scene& scene, const scene::GBuffer& g, const ShadingParams& p,
-                                      const Exec& exec) {
+                                       const Exec& exec) {
     checkM(g);
     const SampleShader shader(scene, g, p);
     const int m = g.m, n = m * m, w = g.width, h = g.height;
@@ -215,7 +219,8 @@ DeferredResult bruteForceSupersampling(const scene::Scene& scene, const scene::G
                 // Sample 0 with the whole pixel's footprint when m = 1 (as the method's first
                 // sample), else in dither order with the 1/m footprint (the method's k = n case).
                 glm::vec3 sum(0.0f);
-                for (int s = 0; s < n; ++s) sum += shader.shade(m * x + order[std::size_t(s)][0], m * y + order[std::size_t(s)][1], footprint);
+                for (int s = 0; s < n; ++s)
+                    sum += shader.shade(m * x + order[std::size_t(s)][0], m * y + order[std::size_t(s)][1], footprint);
                 r.image(x, y) = sum / float(n);
             }
     });

@@ -32,23 +32,26 @@ DeferredMethodInfo entry(Text t, std::span<const ParamInfo> params, DeferredPara
     return m;
 }
 
-constexpr std::string_view kCite = "Hollander, Boubekeur, Eisemann, Adaptive Supersampling for Deferred Anti-Aliasing, JCGT 2013";
+constexpr std::string_view kCite =
+    "Hollander, Boubekeur, Eisemann, Adaptive Supersampling for Deferred Anti-Aliasing, JCGT 2013";
 constexpr std::string_view kInput = "an m x m supersampled G-buffer and its scene (materials, textures, lights)";
 
 const std::array<DeferredMethodInfo, 2> kDeferredMethods{{
-    entry({"adaptive", "shade one sample per pixel, then as many more as depth, normal and shading metrics ask",
-           kCite, kInput},
-          kAdaptiveParams, [] { return DeferredParams{AdaptiveParams{}}; },
-          [](const DeferredParams& p) { validate(as<AdaptiveParams>(p, "adaptive")); },
-          [](const scene::Scene& s, const scene::GBuffer& g, const DeferredParams& p, const Exec& e) {
-              return adaptiveSupersampling(s, g, as<AdaptiveParams>(p, "adaptive"), e);
-          }),
-    entry({"brute-force", "every G-buffer sample shaded and averaged (brute-force supersampling)", kCite, kInput}, kShadingParams,
-          [] { return DeferredParams{ShadingParams{}}; },
-          [](const DeferredParams& p) { validate(as<ShadingParams>(p, "brute-force")); },
-          [](const scene::Scene& s, const scene::GBuffer& g, const DeferredParams& p, const Exec& e) {
-              return bruteForceSupersampling(s, g, as<ShadingParams>(p, "brute-force"), e);
-          }),
+    entry(
+        {"adaptive", "shade one sample per pixel, then as many more as depth, normal and shading metrics ask", kCite,
+         kInput},
+        kAdaptiveParams, [] { return DeferredParams{AdaptiveParams{}}; },
+        [](const DeferredParams& p) { validate(as<AdaptiveParams>(p, "adaptive")); },
+        [](const scene::Scene& s, const scene::GBuffer& g, const DeferredParams& p, const Exec& e) {
+            return adaptiveSupersampling(s, g, as<AdaptiveParams>(p, "adaptive"), e);
+        }),
+    entry(
+        {"brute-force", "every G-buffer sample shaded and averaged (brute-force supersampling)", kCite, kInput},
+        kShadingParams, [] { return DeferredParams{ShadingParams{}}; },
+        [](const DeferredParams& p) { validate(as<ShadingParams>(p, "brute-force")); },
+        [](const scene::Scene& s, const scene::GBuffer& g, const DeferredParams& p, const Exec& e) {
+            return bruteForceSupersampling(s, g, as<ShadingParams>(p, "brute-force"), e);
+        }),
 }};
 
 }  // namespace

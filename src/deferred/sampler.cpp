@@ -36,7 +36,8 @@ glm::vec4 textureLod(const scene::TextureArray& t, int layer, glm::vec2 uv, floa
     return a * (1.0f - f) + textureBilinear(t, layer, l0 + 1, uv) * f;
 }
 
-glm::vec4 textureGrad(const scene::TextureArray& t, int layer, glm::vec2 uv, glm::vec2 dx, glm::vec2 dy, int maxAnisotropy) {
+glm::vec4 textureGrad(const scene::TextureArray& t, int layer, glm::vec2 uv, glm::vec2 dx, glm::vec2 dy,
+                      int maxAnisotropy) {
     const float size = float(t.size);
     const float px = glm::length(dx) * size, py = glm::length(dy) * size;  // footprint axes in texels
     const float pMax = std::max(px, py), pMin = std::min(px, py);

@@ -26,7 +26,8 @@ double mse(const ImageRgbF& a, const ImageRgbF& b) {
         throw Error(fmt::format("mse: sizes {}x{} and {}x{} differ", a.width, a.height, b.width, b.height));
     double sum = 0;
     for (std::size_t i = 0; i < a.pixels.size(); ++i) {
-        const glm::dvec3 d = glm::dvec3(glm::clamp(a.pixels[i], 0.0f, 1.0f)) - glm::dvec3(glm::clamp(b.pixels[i], 0.0f, 1.0f));
+        const glm::dvec3 d =
+            glm::dvec3(glm::clamp(a.pixels[i], 0.0f, 1.0f)) - glm::dvec3(glm::clamp(b.pixels[i], 0.0f, 1.0f));
         sum += glm::dot(d, d);
     }
     return a.pixels.empty() ? 0.0 : sum / (3.0 * double(a.pixels.size()));
@@ -54,7 +55,8 @@ SampleShader::SampleShader(const scene::Scene& scene, const scene::GBuffer& g, c
         throw Error("deferred: the G-buffer's planes do not match its size");
     for (std::size_t i = 0; i < n; ++i) {
         if (g.material[i] != scene::GBuffer::kNoMaterial && g.material[i] >= scene.materials.size())
-            throw Error(fmt::format("deferred: G-buffer sample {} names material {} of {}", i, g.material[i], scene.materials.size()));
+            throw Error(fmt::format("deferred: G-buffer sample {} names material {} of {}", i, g.material[i],
+                                    scene.materials.size()));
         if (g.layer[i] >= int(scene.textures.layers.size()))
             throw Error(fmt::format("deferred: G-buffer sample {} names texture layer {} of {}", i, g.layer[i],
                                     scene.textures.layers.size()));
@@ -66,8 +68,10 @@ SampleShader::SampleShader(const scene::Scene& scene, const scene::GBuffer& g, c
         const glm::vec3& nrm = g.normal[i];
         const glm::vec2& uv = g.uv[i];
         const glm::vec4& gr = g.uvGrad[i];
-        if (!std::isfinite(nrm.x + nrm.y + nrm.z) || !std::isfinite(uv.x + uv.y) || !std::isfinite(gr.x + gr.y + gr.z + gr.w))
-            throw Error(fmt::format("deferred: G-buffer sample ({}, {}) has a non-finite normal, uv or uv gradient", sx, sy));
+        if (!std::isfinite(nrm.x + nrm.y + nrm.z) || !std::isfinite(uv.x + uv.y) ||
+            !std::isfinite(gr.x + gr.y + gr.z + gr.w))
+            throw Error(
+                fmt::format("deferred: G-buffer sample ({}, {}) has a non-finite normal, uv or uv gradient", sx, sy));
     }
     proj_ = ssfx::projection(g.camera.camera, g.sampleWidth(), g.sampleHeight());
     const glm::dmat4& v = g.camera.view;
@@ -107,8 +111,8 @@ glm::vec3 SampleShader::shade(int sx, int sy, float footprint) const {
                 }
             const glm::vec4 grad = g_.uvGrad[i] * footprint;
             const glm::vec4 tex = boundary ? textureBilinear(scene_.textures, layer, 0, g_.uv[i])
-                                           : textureGrad(scene_.textures, layer, g_.uv[i], {grad.x, grad.y}, {grad.z, grad.w},
-                                                         p_.maxAnisotropy);
+                                           : textureGrad(scene_.textures, layer, g_.uv[i], {grad.x, grad.y},
+                                                         {grad.z, grad.w}, p_.maxAnisotropy);
             albedo *= glm::vec3(tex);
         }
         const float z = -linearDepth(sx, sy);

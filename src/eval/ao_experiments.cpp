@@ -12,11 +12,11 @@
 #include "ssfx/ao/alchemy.hpp"
 #include "ssfx/ao/raytraced.hpp"
 #include "ssfx/ao/sao.hpp"
-#include "ssfx/scene/analytic.hpp"
 #include "ssfx/eval/metrics.hpp"
 #include "ssfx/eval/plot.hpp"
 #include "ssfx/eval/timing.hpp"
 #include "ssfx/io/png.hpp"
+#include "ssfx/scene/analytic.hpp"
 
 namespace ssfx::eval {
 
@@ -25,9 +25,7 @@ using Clock = std::chrono::steady_clock;
 
 namespace {
 
-const char* formatName(DepthFormat f) {
-    return f == DepthFormat::D16 ? "D16" : f == DepthFormat::D24 ? "D24" : "D32F";
-}
+const char* formatName(DepthFormat f) { return f == DepthFormat::D16 ? "D16" : f == DepthFormat::D24 ? "D24" : "D32F"; }
 constexpr DepthFormat kFormats[] = {DepthFormat::D16, DepthFormat::D24, DepthFormat::D32F};
 
 ImageRgba8 grey(const ImageF& a, float offset = 0.0f, float gain = 1.0f) {
@@ -163,10 +161,11 @@ Block releasedComparison(const Context& c, const std::vector<AoRenderedScene>& e
         "smoother; the truth's own value is its real shading gradient), at {}x{} with a {} px guard band. "
         "Images: images/ao_SCENE_paper.png, images/ao_SCENE_released.png, images/ao_SCENE_released_blur.png.",
         rays, aw, ah, guard);
-    b.table.header = {"scene", "configuration", "radius (m)", "PSNR vs truth (dB)", "rms Laplacian, flat", "truth's",
-                      "flat pixels"};
+    b.table.header = {"scene",   "configuration", "radius (m)", "PSNR vs truth (dB)", "rms Laplacian, flat",
+                      "truth's", "flat pixels"};
     for (const AoRenderedScene& e : entries) {
-        const scene::GeometryBuffer g = scene::castGeometry(*e.geometry, e.camera, aw + 2 * guard, ah + 2 * guard, o.exec);
+        const scene::GeometryBuffer g =
+            scene::castGeometry(*e.geometry, e.camera, aw + 2 * guard, ah + 2 * guard, o.exec);
         const FlatMask flat = flatPixels(g, e.camera, guard);
         std::vector<std::pair<float, ImageF>> truths;  // by radius
         for (const Config& cfg : configs) {
@@ -176,7 +175,8 @@ Block releasedComparison(const Context& c, const std::vector<AoRenderedScene>& e
                 c.say(fmt::format("ao: {} ray-traced truth at r = {} m ({} rays per pixel)", e.name, r, rays));
                 ao::RaytracedParams rp;
                 rp.raysPerPixel = rays, rp.guardBand = guard, rp.radius = r;
-                truths.emplace_back(r, ao::raytraced(*e.geometry, e.camera, aw + 2 * guard, ah + 2 * guard, rp, o.exec));
+                truths.emplace_back(r,
+                                    ao::raytraced(*e.geometry, e.camera, aw + 2 * guard, ah + 2 * guard, rp, o.exec));
                 it = truths.end() - 1;
             }
             ao::SaoParams p = cfg.p;
@@ -194,10 +194,10 @@ Block releasedComparison(const Context& c, const std::vector<AoRenderedScene>& e
             b.table.addRow({e.name, cfg.name, fmt::format("{:g}", r), fmt::format("{:.2f}", psnr),
                             fmt::format("{:.4f}", lap), fmt::format("{:.4f}", truthLap), std::to_string(flat.count)});
             c.j["released_comparison"][e.name][cfg.name] = {{"radius_m", r},
-                                                        {"psnr_vs_raytraced", psnr},
-                                                        {"rms_laplacian_flat", lap},
-                                                        {"truth_rms_laplacian_flat", truthLap},
-                                                        {"flat_pixels", flat.count}};
+                                                            {"psnr_vs_raytraced", psnr},
+                                                            {"rms_laplacian_flat", lap},
+                                                            {"truth_rms_laplacian_flat", truthLap},
+                                                            {"flat_pixels", flat.count}};
         }
     }
     return b;
@@ -231,7 +231,6 @@ ZPrecision zPrecisionExperiment() {
     return r;
 }
 
-
 namespace {
 
 const Camera kCamera;  // 60 degree vertical field of view, near 0.1 m, infinite far plane
@@ -250,13 +249,14 @@ Block zPrecisionBlock(const Context& c) {
     for (double d : zp.distances) logDist.push_back(std::log10(d));
     io::writePng((c.out / "plots" / "ao_z_precision.png").string(),
                  lineChart(logDist, series,
-                           {880, 420, "Largest camera-space z error vs distance (near plane 0.1 m)", "log10 distance (m)",
-                            "error (mm), log scale", true, true})
+                           {880, 420, "Largest camera-space z error vs distance (near plane 0.1 m)",
+                            "log10 distance (m)", "error (mm), log scale", true, true})
                      .view());
     Block b;
     b.heading = "z precision (paper Figure 3)";
-    b.text = "Largest |z error| in mm over 256 points within 10 % beyond each distance; near plane 0.1 m, finite far "
-             "plane 1000 m.";
+    b.text =
+        "Largest |z error| in mm over 256 points within 10 % beyond each distance; near plane 0.1 m, finite far "
+        "plane 1000 m.";
     b.table.header = {"series"};
     const std::size_t picks[] = {0, 5, 9, 13, 17, 21, 23};
     for (std::size_t i : picks) b.table.header.push_back(fmt::format("{:.3g} m", zp.distances[i]));
@@ -272,7 +272,8 @@ Block zPrecisionBlock(const Context& c) {
 
 // Reconstructed-normal error (degrees) at each pixel whose 2x2 quad lies within one face of
 // the analytic geometry `g` (all hit, the same true normal, on the same plane), from `z`.
-std::vector<double> normalErrors(const scene::GeometryBuffer& g, const ImageF& z, const Projection& proj, const Exec& exec) {
+std::vector<double> normalErrors(const scene::GeometryBuffer& g, const ImageF& z, const Projection& proj,
+                                 const Exec& exec) {
     const int nw = z.width(), nh = z.height();
     const std::vector<ao::Vec3> n = ao::faceNormals(z.view(), proj, exec);
     std::vector<double> errs;
@@ -295,7 +296,8 @@ std::vector<double> normalErrors(const scene::GeometryBuffer& g, const ImageF& z
             }
             const ao::Vec3 rn = n[std::size_t(y) * std::size_t(nw) + std::size_t(x)];
             if (!same || (rn.x == 0 && rn.y == 0 && rn.z == 0)) continue;
-            const double cosine = std::clamp(double(rn.x) * tn.x + double(rn.y) * tn.y + double(rn.z) * tn.z, -1.0, 1.0);
+            const double cosine =
+                std::clamp(double(rn.x) * tn.x + double(rn.y) * tn.y + double(rn.z) * tn.z, -1.0, 1.0);
             errs.push_back(std::acos(cosine) * 180 / M_PI);
         }
     return errs;
@@ -309,9 +311,10 @@ Block normalPrecisionBlock(const Context& c, const scene::AnalyticScene& room) {
     const Projection proj = ssfx::projection(kCamera, nw, nh);
     Block b;
     b.heading = "Normal precision (paper Figure 4)";
-    b.text = fmt::format("Angle (degrees) between the face normal reconstructed from z by quad-pair differences and the "
-                         "true normal, at {}x{} on the analytic room, over pixels whose 2x2 quad lies within one face.",
-                         nw, nh);
+    b.text = fmt::format(
+        "Angle (degrees) between the face normal reconstructed from z by quad-pair differences and the "
+        "true normal, at {}x{} on the analytic room, over pixels whose 2x2 quad lies within one face.",
+        nw, nh);
     b.table.header = {"depth format", "pixels", "mean", "99th percentile", "max"};
     for (DepthFormat f : kFormats) {
         const ImageF z = ao::depthToZ(depthIn(g, kCamera, f).view(), kCamera, c.o.exec);
@@ -321,9 +324,10 @@ Block normalPrecisionBlock(const Context& c, const scene::AnalyticScene& room) {
         for (double e : errs) mean += e / double(errs.size());
         const double p99 = errs.empty() ? 0 : errs[std::size_t(double(errs.size() - 1) * 0.99)];
         const double mx = errs.empty() ? 0 : errs.back();
-        b.table.addRow({formatName(f), std::to_string(errs.size()), fmt::format("{:.4f}", mean), fmt::format("{:.4f}", p99),
-                        fmt::format("{:.4f}", mx)});
-        c.j["normal_precision"][formatName(f)] = {{"pixels", errs.size()}, {"mean_deg", mean}, {"p99_deg", p99}, {"max_deg", mx}};
+        b.table.addRow({formatName(f), std::to_string(errs.size()), fmt::format("{:.4f}", mean),
+                        fmt::format("{:.4f}", p99), fmt::format("{:.4f}", mx)});
+        c.j["normal_precision"][formatName(f)] = {
+            {"pixels", errs.size()}, {"mean_deg", mean}, {"p99_deg", p99}, {"max_deg", mx}};
     }
     return b;
 }
@@ -341,13 +345,14 @@ std::vector<AoRenderedScene> accuracyScenes(const Context& c, int aw, int ah, in
         for (auto& r : c.o.renderedScenes(aw, ah, guard)) entries.push_back(std::move(r));
     for (const AoRenderedScene& e : entries)
         if (e.depth.width() != aw + 2 * guard || e.depth.height() != ah + 2 * guard)
-            throw Error(fmt::format("ao: scene '{}' depth is {}x{}, not {}x{}", e.name, e.depth.width(), e.depth.height(),
-                                    aw + 2 * guard, ah + 2 * guard));
+            throw Error(fmt::format("ao: scene '{}' depth is {}x{}, not {}x{}", e.name, e.depth.width(),
+                                    e.depth.height(), aw + 2 * guard, ah + 2 * guard));
     return entries;
 }
 
 // ---- Table 1 and accuracy: pyramid filters and baselines against the ray-traced truth --
-Block accuracyBlock(const Context& c, const std::vector<AoRenderedScene>& entries, int aw, int ah, int guard, int rays) {
+Block accuracyBlock(const Context& c, const std::vector<AoRenderedScene>& entries, int aw, int ah, int guard,
+                    int rays) {
     struct Variant {
         std::string name;
         bool sao, pyramid;
@@ -364,10 +369,11 @@ Block accuracyBlock(const Context& c, const std::vector<AoRenderedScene>& entrie
                                         {"sao, packed A and z", true, true, ao::PyramidFilter::RotatedGrid, true}};
     Block b;
     b.heading = "Accuracy against the ray-traced truth; z pyramid filters (paper Table 1)";
-    b.text = fmt::format("PSNR (dB) of A against the ray-traced obscurance ({} cosine-weighted rays per pixel, same radius "
-                         "r = 1 m and falloff) at {}x{} with a {} px guard band. Images: images/ao_SCENE_METHOD.png, "
-                         "differences from SAO without a pyramid x4 around grey: images/ao_SCENE_METHOD_diff.png.",
-                         rays, aw, ah, guard);
+    b.text = fmt::format(
+        "PSNR (dB) of A against the ray-traced obscurance ({} cosine-weighted rays per pixel, same radius "
+        "r = 1 m and falloff) at {}x{} with a {} px guard band. Images: images/ao_SCENE_METHOD.png, "
+        "differences from SAO without a pyramid x4 around grey: images/ao_SCENE_METHOD_diff.png.",
+        rays, aw, ah, guard);
     std::vector<std::vector<double>> psnrTable(variants.size(), std::vector<double>(entries.size()));
     for (std::size_t si = 0; si < entries.size(); ++si) {
         const AoRenderedScene& e = entries[si];
@@ -412,7 +418,8 @@ Block accuracyBlock(const Context& c, const std::vector<AoRenderedScene>& entrie
         b.table.addRow(row);
     }
     // The pictures: the room with every filter, the first rendered scene with the main three.
-    for (const char* name : {"raytraced", "sao_rotated_grid", "sao_no_pyramid", "alchemy", "sao_min_diff", "sao_max_diff"})
+    for (const char* name :
+         {"raytraced", "sao_rotated_grid", "sao_no_pyramid", "alchemy", "sao_min_diff", "sao_max_diff"})
         b.figures.push_back(aoFigure(fmt::format("ao_room_{}.png", name), fmt::format("room: {}", name)));
     if (entries.size() > 2)
         for (const char* name : {"raytraced", "sao_rotated_grid", "alchemy"})
@@ -448,8 +455,8 @@ Block radiusScalingBlock(const Context& c, const scene::AnalyticScene& room, int
     }
     io::writePng((c.out / "plots" / "ao_radius_scaling.png").string(),
                  lineChart(radii, timing,
-                           {880, 420, fmt::format("AO sample pass time vs radius, {}x{}", fw, fh), "world-space radius (m)",
-                            "median time (ms)", false, true})
+                           {880, 420, fmt::format("AO sample pass time vs radius, {}x{}", fw, fh),
+                            "world-space radius (m)", "median time (ms)", false, true})
                      .view());
     Block b;
     b.heading = fmt::format("Sample-pass time vs radius (paper Figure 5), {}x{}, median of {} (ms)", fw, fh, reps);
@@ -464,9 +471,10 @@ Block radiusScalingBlock(const Context& c, const scene::AnalyticScene& room, int
     const double saoFlat = timing[2].values[7] / timing[2].values[1];
     const double alchemyGrowth = timing[0].values[7] / timing[0].values[1];
     const double speedup = timing[0].values[4] / timing[2].values[4];
-    b.after = fmt::format("Time at r = 4 m over r = 0.25 m: sao {:.2f}x, alchemy {:.2f}x. alchemy / sao at r = 1.5 m: "
-                          "{:.2f}x.",
-                          saoFlat, alchemyGrowth, speedup);
+    b.after = fmt::format(
+        "Time at r = 4 m over r = 0.25 m: sao {:.2f}x, alchemy {:.2f}x. alchemy / sao at r = 1.5 m: "
+        "{:.2f}x.",
+        saoFlat, alchemyGrowth, speedup);
     b.figures.push_back({"plots/ao_radius_scaling.png", "AO time vs radius", Figure::Kind::Plot, 880, 420});
     c.j["radius_scaling"]["radii_m"] = radii;
     c.j["radius_scaling"]["sao_r4_over_r025"] = saoFlat;
@@ -481,14 +489,14 @@ Block passTimesBlock(const Context& c, const scene::AnalyticScene& room, int rep
     struct Res {
         int w, h, g;
     };
-    const std::vector<Res> sizes = c.o.quick ? std::vector<Res>{{320, 180, 32}}
-                                             : std::vector<Res>{{1280, 720, 128}, {1920, 1080, 192},
-                                                                {1920, 1200, 192}, {2560, 1600, 256}};
+    const std::vector<Res> sizes =
+        c.o.quick ? std::vector<Res>{{320, 180, 32}}
+                  : std::vector<Res>{{1280, 720, 128}, {1920, 1080, 192}, {1920, 1200, 192}, {2560, 1600, 256}};
     Block b;
     b.heading = fmt::format("Per-pass times (paper Table 3), r = 1 m, median of {} runs (ms), {} threads", reps + 2,
                             resolvedThreads(c.o.exec));
-    b.table.header = {"resolution", "guard band", "pixels incl. guard", "z", "z pyramid", "AO samples + 2x2", "blur",
-                      "total", "ns per visible pixel"};
+    b.table.header = {"resolution", "guard band", "pixels incl. guard",  "z", "z pyramid", "AO samples + 2x2",
+                      "blur",       "total",      "ns per visible pixel"};
     for (const Res& r : sizes) {
         const int bw = r.w + 2 * r.g, bh = r.h + 2 * r.g;
         const scene::GeometryBuffer g = scene::castGeometry(room, kCamera, bw, bh, c.o.exec);
@@ -506,13 +514,17 @@ Block passTimesBlock(const Context& c, const scene::AnalyticScene& room, int rep
             return median(v);
         };
         const double total = med(&ao::SaoTimings::total);
-        b.table.addRow({fmt::format("{}x{}", r.w, r.h), std::to_string(r.g), std::to_string(std::int64_t{bw} * bh),
-                        fmt::format("{:.1f}", med(&ao::SaoTimings::z)), fmt::format("{:.1f}", med(&ao::SaoTimings::pyramid)),
-                        fmt::format("{:.1f}", med(&ao::SaoTimings::sample)), fmt::format("{:.1f}", med(&ao::SaoTimings::blur)),
-                        fmt::format("{:.1f}", total), fmt::format("{:.0f}", total * 1e6 / (double(r.w) * r.h))});
-        c.j["pass_times"][fmt::format("{}x{}", r.w, r.h)] = {
-            {"guard", r.g},           {"z_ms", med(&ao::SaoTimings::z)},         {"pyramid_ms", med(&ao::SaoTimings::pyramid)},
-            {"sample_ms", med(&ao::SaoTimings::sample)}, {"blur_ms", med(&ao::SaoTimings::blur)}, {"total_ms", total}};
+        b.table.addRow(
+            {fmt::format("{}x{}", r.w, r.h), std::to_string(r.g), std::to_string(std::int64_t{bw} * bh),
+             fmt::format("{:.1f}", med(&ao::SaoTimings::z)), fmt::format("{:.1f}", med(&ao::SaoTimings::pyramid)),
+             fmt::format("{:.1f}", med(&ao::SaoTimings::sample)), fmt::format("{:.1f}", med(&ao::SaoTimings::blur)),
+             fmt::format("{:.1f}", total), fmt::format("{:.0f}", total * 1e6 / (double(r.w) * r.h))});
+        c.j["pass_times"][fmt::format("{}x{}", r.w, r.h)] = {{"guard", r.g},
+                                                             {"z_ms", med(&ao::SaoTimings::z)},
+                                                             {"pyramid_ms", med(&ao::SaoTimings::pyramid)},
+                                                             {"sample_ms", med(&ao::SaoTimings::sample)},
+                                                             {"blur_ms", med(&ao::SaoTimings::blur)},
+                                                             {"total_ms", total}};
     }
     return b;
 }
@@ -532,10 +544,11 @@ Section runAoExperiments(const AoExperimentOptions& o) {
     Section s;
     s.title = "Ambient obscurance (the SAO paper's experiments)";
     // The note is laid out in the report, whose root its links are relative to.
-    s.note = "Scalable Ambient Obscurance ([doc](methods/sao.html)), the AlchemyAO baseline ([doc](methods/alchemy.html)) "
-             "and ray-traced ground truth ([doc](methods/raytraced.html)) on analytic scenes rendered by exact ray "
-             "casting and, in the accuracy table, on scenes rasterised by the Vulkan renderer (D32F depth) with Embree ray "
-             "tracing their triangles for the truth. Data: [ao/data/ao.json](ao/data/ao.json).";
+    s.note =
+        "Scalable Ambient Obscurance ([doc](methods/sao.html)), the AlchemyAO baseline ([doc](methods/alchemy.html)) "
+        "and ray-traced ground truth ([doc](methods/raytraced.html)) on analytic scenes rendered by exact ray "
+        "casting and, in the accuracy table, on scenes rasterised by the Vulkan renderer (D32F depth) with Embree ray "
+        "tracing their triangles for the truth. Data: [ao/data/ao.json](ao/data/ao.json).";
     s.blocks.push_back(zPrecisionBlock(c));
     s.blocks.push_back(normalPrecisionBlock(c, room));
     const std::vector<AoRenderedScene> entries = accuracyScenes(c, aw, ah, guard);

@@ -41,7 +41,8 @@ Section runDeferredExperiment(const DeferredExperimentOptions& o) {
     const fs::path out(o.outDir);
     io::makeDirectories((out / "images").string());
     io::makeDirectories((out / "data").string());
-    const int w = o.quick ? 256 : o.width, h = o.quick ? 192 : o.height, reps = o.quick ? 1 : std::max(1, o.repetitions);
+    const int w = o.quick ? 256 : o.width, h = o.quick ? 192 : o.height,
+              reps = o.quick ? 1 : std::max(1, o.repetitions);
     const scene::Scene scene = scene::loadScene(o.scene);
     const scene::View& view = scene.view(o.view);
     render::Renderer renderer({o.device, false});
@@ -64,8 +65,11 @@ Section runDeferredExperiment(const DeferredExperimentOptions& o) {
     j["stall"] = o.stall;
     j["repetitions"] = reps;
     j["device"] = renderer.device().name;
-    j["params"] = {{"cDepth", o.params.cDepth}, {"cNormal", o.params.cNormal}, {"cShading", o.params.cShading},
-                   {"tMin", o.params.tMin}, {"tEdge", o.params.tEdge}};
+    j["params"] = {{"cDepth", o.params.cDepth},
+                   {"cNormal", o.params.cNormal},
+                   {"cShading", o.params.cShading},
+                   {"tMin", o.params.tMin},
+                   {"tEdge", o.params.tEdge}};
     double speedupPlain = NAN, speedupStalled = NAN;
     for (int m = 1; m <= 4; ++m) {
         say(fmt::format("deferred: {} {}x{} m = {} on {}", o.scene, w, h, m, renderer.device().name));
@@ -87,7 +91,8 @@ Section runDeferredExperiment(const DeferredExperimentOptions& o) {
                 const ImageRgba8 img = deferred::toRgba8(ref.image);
                 const auto t0 = std::chrono::steady_clock::now();
                 const ImageRgba8 aa = aa::fxaa3d(img.view(), {}, o.exec);
-                fxaaMs.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+                fxaaMs.push_back(
+                    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
                 if (r == 0) io::writePng((out / "images" / "deferred_m1_fxaa3d.png").string(), aa.view());
                 continue;
             }
@@ -100,7 +105,8 @@ Section runDeferredExperiment(const DeferredExperimentOptions& o) {
             tiledStallMs.push_back(deferred::adaptiveSupersampling(scene, g, tiledStalledParams, o.exec).totalMs());
         }
         const std::string ss = fmt::format("{0}x{0}", m);
-        io::writePng((out / "images" / fmt::format("deferred_m{}_brute_force.png", m)).string(), deferred::toRgba8(ref.image).view());
+        io::writePng((out / "images" / fmt::format("deferred_m{}_brute_force.png", m)).string(),
+                     deferred::toRgba8(ref.image).view());
         if (m == 1) {
             rows.push_back({ss, "default", gbufferMs, median(refMs), median(refStallMs), NAN, NAN, NAN});
             const double f = median(fxaaMs);
@@ -118,7 +124,9 @@ Section runDeferredExperiment(const DeferredExperimentOptions& o) {
             speedupStalled = median(refStallMs) / median(oursStallMs);
         }
         const float n = float(m * m);
-        const auto stem = [&](const char* what) { return (out / "images" / fmt::format("deferred_m{}_{}.png", m, what)).string(); };
+        const auto stem = [&](const char* what) {
+            return (out / "images" / fmt::format("deferred_m{}_{}.png", m, what)).string();
+        };
         io::writePng(stem("ours"), deferred::toRgba8(ours.image).view());
         io::writePng(stem("samples"), heatMap(toFloat(ours.samples).view(), 1.0f, n).view());
         io::writePng(stem("error"), heatMap(deferred::absoluteError(ours.image, ref.image).view(), 0.0f, 0.05f).view());
@@ -130,35 +138,43 @@ Section runDeferredExperiment(const DeferredExperimentOptions& o) {
     Section section;
     section.title = "Adaptive supersampling for deferred shading (the paper's Table 1)";
     // The note is laid out in the report, whose root its links are relative to.
-    section.note = "The method ([doc](methods/adaptive.html)) against brute-force supersampling on the atrium's G-buffer "
-                   "from the Vulkan renderer. Images at 4x4: brute force, ours, the per-pixel sample count (blue 1 .. "
-                   "red 16), the absolute error (0 .. 0.05) and each metric's k (paper Figure 8). Data: "
-                   "[deferred/data/deferred.json](deferred/data/deferred.json).";
+    section.note =
+        "The method ([doc](methods/adaptive.html)) against brute-force supersampling on the atrium's G-buffer "
+        "from the Vulkan renderer. Images at 4x4: brute force, ours, the per-pixel sample count (blue 1 .. "
+        "red 16), the absolute error (0 .. 0.05) and each metric's k (paper Figure 8). Data: "
+        "[deferred/data/deferred.json](deferred/data/deferred.json).";
     Block b;
     b.heading = fmt::format("Adaptive supersampling (paper Table 1) on {} / {}, {}x{}", o.scene, o.view, w, h);
     b.text = fmt::format(
         "Device for the G-buffer: {} (GPU time of the draw). Shading on the CPU ({} threads), median of {} run(s); "
         "stalled: {} extra dependent operations per shaded sample. MSE and PSNR of ours against brute force at the "
         "same m (RGB in [0, 1]). \"8x8 tiles by k\": the same method shading each 8x8 tile's pixels grouped by "
-        "sample count (the paper's future work; identical output). Constants: cDepth {}, cNormal {}, cShading {}, thresholds {} / {}.",
-        renderer.device().name, o.exec.threads == 0 ? std::string("all") : std::to_string(o.exec.threads),
-        reps, o.stall, o.params.cDepth, o.params.cNormal, o.params.cShading, o.params.tMin, o.params.tEdge);
-    b.table.header = {"supersampling", "method", "G-buffer ms", "shading ms", "total ms", "stalled shading ms",
-                      "MSE (x1e-5)", "PSNR dB", "samples %"};
+        "sample count (the paper's future work; identical output). Constants: cDepth {}, cNormal {}, cShading {}, "
+        "thresholds {} / {}.",
+        renderer.device().name, o.exec.threads == 0 ? std::string("all") : std::to_string(o.exec.threads), reps,
+        o.stall, o.params.cDepth, o.params.cNormal, o.params.cShading, o.params.tMin, o.params.tEdge);
+    b.table.header = {"supersampling",      "method",      "G-buffer ms", "shading ms", "total ms",
+                      "stalled shading ms", "MSE (x1e-5)", "PSNR dB",     "samples %"};
     for (const auto& r : rows) {
         b.table.addRow({r.ss, r.method, cell(r.gbufferMs, 1), cell(r.shadeMs, 1), cell(r.gbufferMs + r.shadeMs, 1),
                         cell(r.stalledMs, 1), cell(r.mse * 1e5, 2), cell(r.psnr, 2), cell(r.samples, 2)});
-        j["rows"].push_back({{"supersampling", r.ss}, {"method", r.method}, {"gbuffer_ms", r.gbufferMs},
-                             {"shading_ms", r.shadeMs}, {"stalled_ms", r.stalledMs},
-                             {"mse", std::isfinite(r.mse) ? nlohmann::ordered_json(r.mse) : nlohmann::ordered_json()},
-                             {"psnr", std::isfinite(r.psnr) ? nlohmann::ordered_json(r.psnr) : nlohmann::ordered_json()},
-                             {"samples_percent", std::isfinite(r.samples) ? nlohmann::ordered_json(r.samples) : nlohmann::ordered_json()}});
+        j["rows"].push_back(
+            {{"supersampling", r.ss},
+             {"method", r.method},
+             {"gbuffer_ms", r.gbufferMs},
+             {"shading_ms", r.shadeMs},
+             {"stalled_ms", r.stalledMs},
+             {"mse", std::isfinite(r.mse) ? nlohmann::ordered_json(r.mse) : nlohmann::ordered_json()},
+             {"psnr", std::isfinite(r.psnr) ? nlohmann::ordered_json(r.psnr) : nlohmann::ordered_json()},
+             {"samples_percent",
+              std::isfinite(r.samples) ? nlohmann::ordered_json(r.samples) : nlohmann::ordered_json()}});
     }
-    b.after = fmt::format("At 4x4: ours is {:.2f}x faster than brute force in shading, {:.2f}x with the stall (same run).",
-                          speedupPlain, speedupStalled);
+    b.after =
+        fmt::format("At 4x4: ours is {:.2f}x faster than brute force in shading, {:.2f}x with the stall (same run).",
+                    speedupPlain, speedupStalled);
     for (const char* name : {"brute_force", "ours", "samples", "error", "k_depth", "k_normal", "k_shading"})
-        b.figures.push_back({fmt::format("images/deferred_m4_{}.png", name), fmt::format("4x4: {}", name),
-                             Figure::Kind::Image, 0, 0});
+        b.figures.push_back(
+            {fmt::format("images/deferred_m4_{}.png", name), fmt::format("4x4: {}", name), Figure::Kind::Image, 0, 0});
     section.blocks.push_back(std::move(b));
     j["speedup_4x4"] = {{"plain", speedupPlain}, {"stalled", speedupStalled}};
     const std::string text = j.dump(2) + "\n";

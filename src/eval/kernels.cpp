@@ -92,8 +92,8 @@ KernelExperiment runKernelExperiment(const KernelExperimentOptions& o) {
                         double v = 0;
                         for (int sy = 0; sy < ss; ++sy)
                             for (int sx = 0; sx < ss; ++sx) {
-                                const double d = (x + (sx + 0.5) / ss - c - off[0]) * nx +
-                                                 (y + (sy + 0.5) / ss - c - off[1]) * ny;
+                                const double d =
+                                    (x + (sx + 0.5) / ss - c - off[0]) * nx + (y + (sy + 0.5) / ss - c - off[1]) * ny;
                                 v += (edge ? d < 0 : std::abs(d) < w / 2) ? 0.0 : 1.0;
                             }
                         img[std::size_t(y * n + x)] = v / (ss * ss);

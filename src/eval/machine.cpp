@@ -4,8 +4,8 @@
 #include <hwy/targets.h>
 
 #include <fstream>
-#include <vector>
 #include <thread>
+#include <vector>
 
 namespace ssfx::eval {
 

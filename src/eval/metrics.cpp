@@ -17,8 +17,8 @@ namespace {
 
 void checkSameSize(ImageView<const Rgba8> a, ImageView<const Rgba8> b, const char* what) {
     if (a.width() != b.width() || a.height() != b.height())
-        throw Error(fmt::format("{}: images differ in size ({}x{} vs {}x{})", what, a.width(), a.height(),
-                                b.width(), b.height()));
+        throw Error(fmt::format("{}: images differ in size ({}x{} vs {}x{})", what, a.width(), a.height(), b.width(),
+                                b.height()));
     if (a.empty()) throw Error(fmt::format("{}: empty images", what));
 }
 
@@ -54,9 +54,7 @@ double mse(ImageView<const float> a, ImageView<const float> b) {
     return s / double(a.pixelCount());
 }
 
-double psnrFromMse(double m) {
-    return m <= 0 ? std::numeric_limits<double>::infinity() : 10.0 * std::log10(1.0 / m);
-}
+double psnrFromMse(double m) { return m <= 0 ? std::numeric_limits<double>::infinity() : 10.0 * std::log10(1.0 / m); }
 
 double psnr(ImageView<const Rgba8> a, ImageView<const Rgba8> b, const Exec& exec) {
     return psnrFromMse(mse(a, b, exec));

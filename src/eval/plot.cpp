@@ -96,9 +96,8 @@ void frame(cairo_t* cr, const ChartStyle& st, const Axis& ax, double left, doubl
         cairo_line_to(cr, right, y);
         cairo_stroke(cr);
         cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
-        text(cr, left - 6, y + 4, std::abs(t) >= 1000 || t == std::floor(t) ? fmt::format("{:g}", t)
-                                                                              : fmt::format("{:.1f}", t),
-             11, 1.0);
+        text(cr, left - 6, y + 4,
+             std::abs(t) >= 1000 || t == std::floor(t) ? fmt::format("{:g}", t) : fmt::format("{:.1f}", t), 11, 1.0);
     }
     cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
     cairo_rectangle(cr, left + 0.5, ax.top + 0.5, right - left, ax.bottom - ax.top);
@@ -136,7 +135,10 @@ struct Chart {
     Axis ax;
     Chart(const ChartStyle& st, const std::vector<Series>& series, std::size_t valuesPerSeries, const char* unit)
         : sf((checkStyle(st), st.width), st.height),
-          left(64), right(st.width - 110), top(36), bottom(st.height - 48),
+          left(64),
+          right(st.width - 110),
+          top(36),
+          bottom(st.height - 48),
           ax(valueAxis(series, st, top, bottom)) {
         for (const auto& s : series)
             if (s.values.size() != valuesPerSeries)
@@ -199,8 +201,10 @@ ImageRgba8 lineChart(const std::vector<double>& x, const std::vector<Series>& se
                 continue;
             }
             const double px = mapX(x[i]), py = ax.map(std::clamp(v, ax.lo, ax.hi));
-            if (pen) cairo_line_to(cr, px, py);
-            else cairo_move_to(cr, px, py);
+            if (pen)
+                cairo_line_to(cr, px, py);
+            else
+                cairo_move_to(cr, px, py);
             pen = true;
         }
         cairo_stroke(cr);
@@ -211,8 +215,8 @@ ImageRgba8 lineChart(const std::vector<double>& x, const std::vector<Series>& se
 
 ImageRgba8 heatMap(ImageView<const float> values, float lo, float hi) {
     // Stops of the ramp at t = 0, 0.25, 0.5, 0.75, 1.
-    static constexpr float kStops[5][3] = {{0.05f, 0.05f, 0.45f}, {0.0f, 0.6f, 0.9f}, {0.2f, 0.8f, 0.2f},
-                                           {0.95f, 0.85f, 0.1f}, {0.85f, 0.05f, 0.05f}};
+    static constexpr float kStops[5][3] = {
+        {0.05f, 0.05f, 0.45f}, {0.0f, 0.6f, 0.9f}, {0.2f, 0.8f, 0.2f}, {0.95f, 0.85f, 0.1f}, {0.85f, 0.05f, 0.05f}};
     ImageRgba8 out(values.width(), values.height());
     const float span = hi > lo ? hi - lo : 1.0f;
     for (int y = 0; y < values.height(); ++y)

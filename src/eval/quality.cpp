@@ -87,8 +87,8 @@ double QualityTable::meanSsim(std::size_t m) const { return meanOf(ssim, m); }
 Score scoreAgainstX8(ImageView<const Rgba8> output1x, ImageView<const Rgba8> render8x, const Exec& exec) {
     if (std::int64_t{output1x.width()} * 8 != render8x.width() ||
         std::int64_t{output1x.height()} * 8 != render8x.height())
-        throw Error(fmt::format("the x8 render is {}x{}, expected 8 times {}x{}", render8x.width(),
-                                render8x.height(), output1x.width(), output1x.height()));
+        throw Error(fmt::format("the x8 render is {}x{}, expected 8 times {}x{}", render8x.width(), render8x.height(),
+                                output1x.width(), output1x.height()));
     const ImageRgba8 up = aa::upscaleMitchell(output1x, 8, {}, exec);
     return {psnr(up.view(), render8x, exec), ssim(up.view(), render8x, exec)};
 }
@@ -127,8 +127,8 @@ QualityTable evaluateQuality(const std::string& dir, const QualityOptions& o) {
         const ImageRgba8 x1 = io::readPng(renderSetPath(dir, name, 1));
         const ImageRgba8 x8 = io::readPng(renderSetPath(dir, name, 8));
         if (std::int64_t{x1.width()} * 8 != x8.width() || std::int64_t{x1.height()} * 8 != x8.height())
-            throw Error(fmt::format("{}x8.png is {}x{}, expected 8 times {}.png ({}x{})", name, x8.width(),
-                                    x8.height(), name, x1.width(), x1.height()));
+            throw Error(fmt::format("{}x8.png is {}x{}, expected 8 times {}.png ({}x{})", name, x8.width(), x8.height(),
+                                    name, x1.width(), x1.height()));
         ImageRgba8 scaled[2];  // x2, x4, loaded when a method needs them
         auto& psnrRow = t.psnr.emplace_back(t.methods.size(), kNaN);
         auto& ssimRow = t.ssim.emplace_back(t.methods.size(), kNaN);
@@ -205,8 +205,8 @@ std::string table(const QualityTable& t, bool markdown) {
         for (std::size_t i = 0; i <= t.images.size(); ++i) {
             std::vector<std::string> r{i < t.images.size() ? t.images[i] : "mean"};
             for (std::size_t m = 0; m < t.methods.size(); ++m)
-                r.push_back(cell(i < t.images.size() ? values[i][m] : (metric == 0 ? t.meanPsnr(m) : t.meanSsim(m)),
-                                 decimals));
+                r.push_back(
+                    cell(i < t.images.size() ? values[i][m] : (metric == 0 ? t.meanPsnr(m) : t.meanSsim(m)), decimals));
             rows.push_back(r);
         }
         for (std::size_t ri = 0; ri < rows.size(); ++ri) {

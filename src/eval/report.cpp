@@ -10,8 +10,8 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
-#include <optional>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "src/eval/report_html.hpp"
 #include "ssfx/aa/resolve.hpp"
@@ -122,21 +122,27 @@ Section qualitySection(const Run& r, const QualityTable& quality) {
         ps.push_back(p);
         ss.push_back(s);
     }
-    io::writePng(r.path("plots", "psnr.png"),
-                 groupedBarChart(quality.images, ps,
-                                 {880, 400, "PSNR per image and method (higher is better)", "", "PSNR (dB)", false, false})
-                     .view());
+    io::writePng(r.path("plots", "psnr.png"), groupedBarChart(quality.images, ps,
+                                                              {880, 400, "PSNR per image and method (higher is better)",
+                                                               "", "PSNR (dB)", false, false})
+                                                  .view());
     io::writePng(r.path("plots", "ssim.png"),
                  groupedBarChart(quality.images, ss,
                                  {880, 400, "SSIM per image and method (8x8 windows)", "", "SSIM", false, false})
                      .view());
     Section s;
     s.title = "Quality (the paper's Table 2 protocol)";
-    s.note = "Each method's 1x output (ssaax2 and ddaa2p from the x2 render, ssaax4 from the x4 render) is upscaled x8 "
-             "with the Mitchell filter and compared with the x8 render. PSNR over RGB in [0,1]; SSIM on non-overlapping "
-             "8x8 windows (one window per 1x pixel). Best per row in bold. `noaa` is the aliased input itself.";
-    Block psnr{"PSNR (dB)", "", {}, withMeanTable(quality, true), "", {plot("psnr.png", "PSNR per image and method", 880, 400)}, {}};
-    Block ssim{"SSIM", "", {}, withMeanTable(quality, false), "", {plot("ssim.png", "SSIM per image and method", 880, 400)}, {}};
+    s.note =
+        "Each method's 1x output (ssaax2 and ddaa2p from the x2 render, ssaax4 from the x4 render) is upscaled x8 "
+        "with the Mitchell filter and compared with the x8 render. PSNR over RGB in [0,1]; SSIM on non-overlapping "
+        "8x8 windows (one window per 1x pixel). Best per row in bold. `noaa` is the aliased input itself.";
+    Block psnr{"PSNR (dB)", "",
+               {},          withMeanTable(quality, true),
+               "",          {plot("psnr.png", "PSNR per image and method", 880, 400)},
+               {}};
+    Block ssim{
+        "SSIM", "", {}, withMeanTable(quality, false), "", {plot("ssim.png", "SSIM per image and method", 880, 400)},
+        {}};
     s.blocks = {psnr, ssim};
     return s;
 }
@@ -156,7 +162,7 @@ std::optional<Block> authorRowsBlock(Run& r) {
     r.data("", "author_given", qualityJson(given));
     r.data("", "author_ours", qualityJson(ours));
     r.all["author_data"] = {{"given", nlohmann::ordered_json::parse(qualityJson(given))},
-                          {"ours", nlohmann::ordered_json::parse(qualityJson(ours))}};
+                            {"ours", nlohmann::ordered_json::parse(qualityJson(ours))}};
     // The paper's published (rounded) values for its two images (spec ppaa.md section 3).
     const std::vector<std::vector<double>> published{{17.3, 17.2, 16.2, 16.2, 16.0, 17.1, 16.9, NAN},
                                                      {22.5, 22.4, 21.3, 21.6, 21.8, 22.3, 22.2, NAN}};
@@ -174,9 +180,10 @@ std::optional<Block> authorRowsBlock(Run& r) {
     }
     Block b;
     b.heading = "The paper's rows, reproduced on the author's images";
-    b.text = "PSNR (dB) of the DDAA author's GPU outputs (`--source given`) and of ssfx's outputs on the same inputs, "
-             "with the paper's published (rounded) values. Source: the author's ppaa-experiments repository (see "
-             "`../shared/reference/README.md`).";
+    b.text =
+        "PSNR (dB) of the DDAA author's GPU outputs (`--source given`) and of ssfx's outputs on the same inputs, "
+        "with the paper's published (rounded) values. Source: the author's ppaa-experiments repository (see "
+        "`../shared/reference/README.md`).";
     b.table = numericTable("image", rows, given.methods, vals, 3, true);
     return b;
 }
@@ -204,7 +211,8 @@ Section colourAwareSection(Run& r, const QualityTable& quality) {
     co.settings.params = {{"chromaWeight", kChroma}};
     const QualityTable colour = evaluateQuality(r.images(), co);
     r.data("", "quality_colour_aware", qualityJson(colour));
-    r.all["colour_aware"] = {{"chromaWeight", kChroma}, {"quality", nlohmann::ordered_json::parse(qualityJson(colour))}};
+    r.all["colour_aware"] = {{"chromaWeight", kChroma},
+                             {"quality", nlohmann::ordered_json::parse(qualityJson(colour))}};
     std::vector<std::string> rows;
     std::vector<std::vector<double>> delta;
     for (std::size_t i = 0; i < colour.images.size(); ++i) {
@@ -271,9 +279,11 @@ Section colourAwareSection(Run& r, const QualityTable& quality) {
 Section viewersSection(const Run& r, const QualityTable& quality, const std::map<std::string, std::string>& extraSets) {
     Section s;
     s.title = "Compare the outputs";
-    s.note = "Pick one or more methods; \"side by side\" shows them together, \"flip\" shows one at a time (button "
-             "\"next\" or key `f`, or auto-flip). Zoom is nearest-neighbour; drag or scroll to pan (all panes move together). "
-             "`truth` is the x8 render resolved to 1x with the Mitchell filter.";
+    s.note =
+        "Pick one or more methods; \"side by side\" shows them together, \"flip\" shows one at a time (button "
+        "\"next\" or key `f`, or auto-flip). Zoom is nearest-neighbour; drag or scroll to pan (all panes move "
+        "together). "
+        "`truth` is the x8 render resolved to 1x with the Mitchell filter.";
     for (const auto& name : quality.images) {
         Viewer v;
         v.id = name;
@@ -315,7 +325,8 @@ Table temporalTable(const std::vector<TemporalResult>& results) {
 // animated_METHOD.png): the given outputs and ssfx's on the same frames, streamed.
 std::optional<Block> authorAnimationBlock(Run& r, const TemporalOptions& to) {
     const ReportOptions& o = r.o;
-    if (o.authorDataDir.empty() || o.quick || !fs::exists(renderSetPath(o.authorDataDir, "animated", 8))) return std::nullopt;
+    if (o.authorDataDir.empty() || o.quick || !fs::exists(renderSetPath(o.authorDataDir, "animated", 8)))
+        return std::nullopt;
     std::vector<std::pair<std::string, std::string>> given;
     for (const auto& id : r.methodIds) {
         const fs::path file = fs::path(o.authorDataDir) / fmt::format("animated_{}.png", id);
@@ -329,7 +340,7 @@ std::optional<Block> authorAnimationBlock(Run& r, const TemporalOptions& to) {
     const TemporalRun g = evaluateTemporalGiven(*apngFrames(o.authorDataDir, "animated"), given, go);
     const TemporalRun ours = evaluateTemporal(*apngFrames(o.authorDataDir, "animated"), go);
     r.all["temporal_author"] = {{"given", nlohmann::ordered_json::parse(temporalJson(g.results))},
-                                   {"ours", nlohmann::ordered_json::parse(temporalJson(ours.results))}};
+                                {"ours", nlohmann::ordered_json::parse(temporalJson(ours.results))}};
     std::vector<TemporalResult> rows;
     for (std::size_t m = 0; m < g.results.size(); ++m) {
         rows.push_back(g.results[m]);
@@ -339,9 +350,11 @@ std::optional<Block> authorAnimationBlock(Run& r, const TemporalOptions& to) {
     }
     Block b;
     b.heading = "The author's animation: given outputs and ssfx's";
-    b.text = "The DDAA author's `animated` frames (the x8 frames resolved as the truth), scored from the author's GPU outputs "
-             "(`ssfx eval temporal --source given`) and from ssfx's outputs on the same inputs; frames are streamed, one "
-             "x8 frame in memory at a time.";
+    b.text =
+        "The DDAA author's `animated` frames (the x8 frames resolved as the truth), scored from the author's GPU "
+        "outputs "
+        "(`ssfx eval temporal --source given`) and from ssfx's outputs on the same inputs; frames are streamed, one "
+        "x8 frame in memory at a time.";
     b.table = temporalTable(rows);
     return b;
 }
@@ -391,8 +404,8 @@ Section temporalSection(Run& r) {
                         {"anim/animated_truth.png", "truth (x8 resolved)", Figure::Kind::Animation, 0, 0}};
     for (const auto& t : temporal.results)
         pictures.figures.push_back({fmt::format("anim/animated_{}.png", t.method),
-                                    fmt::format("{}: flicker {:.2f}", t.method, t.flickerLevels), Figure::Kind::Animation,
-                                    0, 0});
+                                    fmt::format("{}: flicker {:.2f}", t.method, t.flickerLevels),
+                                    Figure::Kind::Animation, 0, 0});
     s.blocks.push_back(std::move(pictures));
     Block zoomable;
     zoomable.heading = "Animation, zoomable";
@@ -435,14 +448,26 @@ Section speedSection(Run& r) {
     const MachineInfo& mi = speed.machine;
     Section s;
     s.title = "Speed (the paper's Table 3 layout)";
-    s.note = fmt::format("Machine: {}, {} of {} threads, SIMD target {}. Each method timed {} times per image, interleaved "
-                         "with the others; the fastest and slowest quarter dropped; relative to blur = 100 from the same "
-                         "run. The paper's GPU figures: fxaa3c 81-105, ddaa1 94-150, fxaa3d 160-352, ddaa2 175-255, "
-                         "ssaax2 71-94.",
-                         mi.cpu, mi.threads, mi.hardwareThreads, mi.simdTarget, speed.repetitions);
-    Block relative{"Relative to blur = 100", "", {}, numericTable("image", speed.images, speed.methods, rel, 0, false), "", {}, {}};
-    Block median{"Median (ms)", "", {}, numericTable("image", speed.images, speed.methods, med, 3, false), "",
-                 {plot("speed.png", "speed relative to blur", 880, 400)}, {}};
+    s.note = fmt::format(
+        "Machine: {}, {} of {} threads, SIMD target {}. Each method timed {} times per image, interleaved "
+        "with the others; the fastest and slowest quarter dropped; relative to blur = 100 from the same "
+        "run. The paper's GPU figures: fxaa3c 81-105, ddaa1 94-150, fxaa3d 160-352, ddaa2 175-255, "
+        "ssaax2 71-94.",
+        mi.cpu, mi.threads, mi.hardwareThreads, mi.simdTarget, speed.repetitions);
+    Block relative{"Relative to blur = 100",
+                   "",
+                   {},
+                   numericTable("image", speed.images, speed.methods, rel, 0, false),
+                   "",
+                   {},
+                   {}};
+    Block median{"Median (ms)",
+                 "",
+                 {},
+                 numericTable("image", speed.images, speed.methods, med, 3, false),
+                 "",
+                 {plot("speed.png", "speed relative to blur", 880, 400)},
+                 {}};
     s.blocks = {relative, median};
     return s;
 }
@@ -461,20 +486,22 @@ Section kernelSection(Run& r) {
     for (std::size_t k = 0; k < kernels.kernels.size(); ++k) ks.push_back({kernels.kernels[k], kernels.errorAt[k]});
     io::writePng(r.path("plots", "kernels.png"),
                  lineChart(kernels.angles, ks,
-                           {880, 400, "Angle error on aliased lines (mean over widths 1, 2, 4 px)", "line angle (degrees)",
-                            "error (degrees)", false, true})
+                           {880, 400, "Angle error on aliased lines (mean over widths 1, 2, 4 px)",
+                            "line angle (degrees)", "error (degrees)", false, true})
                      .view());
     std::vector<std::vector<double>> rows;
     for (std::size_t k = 0; k < kernels.kernels.size(); ++k)
         rows.push_back({kernels.meanError[k], kernels.maxError[k], kernelsAa.meanError[k]});
     Section s;
     s.title = "Kernel experiment (the paper's Figure 3)";
-    s.note = "Angle of aliased lines (widths 1, 2 and 4 px, 0 to 90 degrees) estimated from the gradient at the pixels a "
-             "PPAA method processes; error in degrees (docs/evaluation.md). Right column: the same lines with 4x4 "
-             "coverage (antialiased) for contrast.";
+    s.note =
+        "Angle of aliased lines (widths 1, 2 and 4 px, 0 to 90 degrees) estimated from the gradient at the pixels a "
+        "PPAA method processes; error in degrees (docs/evaluation.md). Right column: the same lines with 4x4 "
+        "coverage (antialiased) for contrast.";
     Block b;
     b.table = numericTable("kernel", kernels.kernels,
-                           {"mean error, aliased", "max per-angle mean, aliased", "mean error, 4x4 coverage"}, rows, 3, false);
+                           {"mean error, aliased", "max per-angle mean, aliased", "mean error, 4x4 coverage"}, rows, 3,
+                           false);
     b.figures = {plot("kernels.png", "angle error per kernel", 880, 400)};
     s.blocks.push_back(std::move(b));
     return s;
@@ -486,8 +513,8 @@ Section methodsSection(const Run& r) {
     Block b;
     for (const auto& id : r.methodIds) {
         const MethodInfo& m = methodById(id);
-        b.definitions.push_back({std::string(m.id), std::string(m.summary), std::string(m.citation),
-                                 fmt::format("methods/{}.html", m.id)});
+        b.definitions.push_back(
+            {std::string(m.id), std::string(m.summary), std::string(m.citation), fmt::format("methods/{}.html", m.id)});
     }
     s.blocks.push_back(std::move(b));
     return s;
@@ -523,7 +550,7 @@ void writeReport(const ReportOptions& o) {
     const Section speed = speedSection(r);
     const Section kernels = kernelSection(r);
     std::vector<Section> sections{methodsSection(r), qualityPart, colour, viewersSection(r, quality, extraSets),
-                                  temporal, speed, kernels};
+                                  temporal,          speed,       kernels};
     if (o.ambientObscurance) sections.push_back(aoSection(r));
     if (o.deferredExperiment) {  // the caller runs it: it needs the renderer
         Section d = o.deferredExperiment((r.out / "deferred").string());
@@ -536,11 +563,12 @@ void writeReport(const ReportOptions& o) {
     io::writeTextAtomic(r.path("data", "all.json"), r.all.dump(1) + "\n");
 
     r.say("report: index.html");
-    const Section intro{"ssfx: post-processing anti-aliasing, evaluated",
-                        "The DDAA paper's evaluation (spec `ppaa.md` section 3) on ssfx's own test images, drawn with "
-                        "Cairo without antialiasing at 1x, 2x, 4x and 8x. Every number on this page was computed by the "
-                        "run that wrote it; the data is in [data/all.json](data/all.json).",
-                        {}};
+    const Section intro{
+        "ssfx: post-processing anti-aliasing, evaluated",
+        "The DDAA paper's evaluation (spec `ppaa.md` section 3) on ssfx's own test images, drawn with "
+        "Cairo without antialiasing at 1x, 2x, 4x and 8x. Every number on this page was computed by the "
+        "run that wrote it; the data is in [data/all.json](data/all.json).",
+        {}};
     io::writeTextAtomic((r.out / "index.html").string(),
                         html::page(intro, sections,
                                    "Written by ssfx 0.1.0. Tables as Markdown: [quality](data/quality.md), "

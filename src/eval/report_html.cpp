@@ -34,7 +34,8 @@ std::string inlineText(std::string_view s) {
             continue;
         }
         if (c == '[' && !code) {  // [label](path)
-            const std::size_t close = s.find("](", i), end = close == std::string_view::npos ? close : s.find(')', close);
+            const std::size_t close = s.find("](", i),
+                              end = close == std::string_view::npos ? close : s.find(')', close);
             if (end != std::string_view::npos) {
                 o += fmt::format("<a href=\"{}\">{}</a>", escape(s.substr(close + 2, end - close - 2)),
                                  escape(s.substr(i + 1, close - i - 1)));
@@ -65,7 +66,9 @@ std::string table(const Table& t) {
 namespace {
 
 std::string figure(const Figure& f) {
-    const char* cls = f.kind == Figure::Kind::Crop ? " class=\"crop\"" : f.kind == Figure::Kind::Image ? " class=\"aoimg\"" : "";
+    const char* cls = f.kind == Figure::Kind::Crop    ? " class=\"crop\""
+                      : f.kind == Figure::Kind::Image ? " class=\"aoimg\""
+                                                      : "";
     return fmt::format("<figure><img{} src=\"{}\" alt=\"{}\"><figcaption>{}</figcaption></figure>\n", cls,
                        escape(f.path), escape(f.caption), inlineText(f.caption));
 }
@@ -100,7 +103,8 @@ std::string viewer(const Viewer& v) {
         "data-pane-height=\"{}\" data-sources=\"{}\" data-initial=\"{}\">\n<div class=\"controls\">"
         "<span>methods</span>",
         escape(v.id), v.width, v.height, 400, 400, escape(src.dump()), escape(init.dump()));
-    for (const auto& [label, url] : v.sources) s += fmt::format("<button data-method=\"{0}\">{0}</button>", escape(label));
+    for (const auto& [label, url] : v.sources)
+        s += fmt::format("<button data-method=\"{0}\">{0}</button>", escape(label));
     s += "<span>mode</span><button data-mode=\"side\">side by side</button><button data-mode=\"flip\">flip</button>"
          "<button data-action=\"flip\" title=\"next picked method (key f)\">next</button>"
          "<button data-action=\"auto\">auto-flip</button><span>zoom</span>";
@@ -151,10 +155,11 @@ std::string page(const Section& intro, const std::vector<Section>& sections, con
 }
 
 std::string docPage(std::string_view id, std::string_view text) {
-    return fmt::format("<!DOCTYPE html><html lang=\"en\"><head><meta charset=\"utf-8\"><title>ssfx: {0}</title>"
-                       "<style>{1}</style></head><body><p><a href=\"../index.html\">back to the report</a></p>"
-                       "<pre class=\"doc\">{2}</pre></body></html>\n",
-                       escape(id), detail::kReportCss, escape(text));
+    return fmt::format(
+        "<!DOCTYPE html><html lang=\"en\"><head><meta charset=\"utf-8\"><title>ssfx: {0}</title>"
+        "<style>{1}</style></head><body><p><a href=\"../index.html\">back to the report</a></p>"
+        "<pre class=\"doc\">{2}</pre></body></html>\n",
+        escape(id), detail::kReportCss, escape(text));
 }
 
 }  // namespace ssfx::eval::html

@@ -9,8 +9,8 @@
 namespace ssfx::eval {
 
 Table numericTable(const std::string& corner, const std::vector<std::string>& rowNames,
-                   const std::vector<std::string>& columns, const std::vector<std::vector<double>>& values, int decimals,
-                   bool higherIsBetter) {
+                   const std::vector<std::string>& columns, const std::vector<std::vector<double>>& values,
+                   int decimals, bool higherIsBetter) {
     Table t;
     t.header.push_back(corner);
     t.header.insert(t.header.end(), columns.begin(), columns.end());

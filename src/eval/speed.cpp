@@ -13,11 +13,11 @@
 
 namespace ssfx::eval {
 
-std::vector<TimingResult> timeMethodsOn(std::vector<std::string>& ids, const std::function<ImageRgba8(int scale)>& input,
-                                        int repetitions, int warmup, const Exec& exec,
-                                        const std::function<void(int, int)>& rounds) {
+std::vector<TimingResult> timeMethodsOn(std::vector<std::string>& ids,
+                                        const std::function<ImageRgba8(int scale)>& input, int repetitions, int warmup,
+                                        const Exec& exec, const std::function<void(int, int)>& rounds) {
     if (std::find(ids.begin(), ids.end(), "blur") == ids.end()) ids.push_back("blur");  // the baseline
-    ImageRgba8 inputs[3];  // x1, x2, x4
+    ImageRgba8 inputs[3];                                                               // x1, x2, x4
     inputs[0] = input(1);
     std::vector<TimedMethod> timed;
     // One output buffer per method, allocated once (the steady state of a frame loop).

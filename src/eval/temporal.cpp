@@ -5,8 +5,8 @@
 
 #include <atomic>
 #include <bit>
-#include <filesystem>
 #include <cmath>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 
 #include "ssfx/aa/resolve.hpp"
@@ -78,9 +78,7 @@ public:
         ++s.next;
         return f->image.view();
     }
-    std::string path(int scale) const {
-        return renderSetPath(dir_, name_, scale);
-    }
+    std::string path(int scale) const { return renderSetPath(dir_, name_, scale); }
 
 private:
     struct Stream {
@@ -101,7 +99,8 @@ private:
             if (!std::filesystem::exists(s.path)) throw Error(fmt::format("{}: no such file", s.path));
             s.reader = std::make_unique<io::ApngReader>(s.path);
             if (scale != 8 && int(s.reader->frameCount()) != frames_)
-                throw Error(fmt::format("{}: {} frames, but {} has {}", s.path, s.reader->frameCount(), path(8), frames_));
+                throw Error(
+                    fmt::format("{}: {} frames, but {} has {}", s.path, s.reader->frameCount(), path(8), frames_));
         }
         return *s.reader;
     }
@@ -115,8 +114,8 @@ private:
 ImageRgba8 truthFrame(FrameSource& source, int t, int w, int h, const Exec& exec) {
     const ImageView<const Rgba8> x8 = source.frame(t, 8);
     if (x8.width() != 8 * w || x8.height() != 8 * h)
-        throw Error(fmt::format("temporal: the x8 frame {} is {}x{}, expected 8 times {}x{}", t, x8.width(), x8.height(),
-                                w, h));
+        throw Error(fmt::format("temporal: the x8 frame {} is {}x{}, expected 8 times {}x{}", t, x8.width(),
+                                x8.height(), w, h));
     return aa::downscaleMitchell(x8, 8, {}, exec);
 }
 
@@ -146,8 +145,7 @@ TemporalResult TemporalScorer::result() const {
     return {"", std::sqrt(meanSq) * 255.0, psnrFromMse(meanSq), psnrFromMse(mseSum_ / double(frames_))};
 }
 
-TemporalResult temporalScore(const std::vector<ImageRgba8>& out, const std::vector<ImageRgba8>& ref,
-                             const Exec& exec) {
+TemporalResult temporalScore(const std::vector<ImageRgba8>& out, const std::vector<ImageRgba8>& ref, const Exec& exec) {
     if (out.size() < 2 || ref.size() != out.size())
         throw Error("temporal: need at least 2 frames and as many truth frames");
     TemporalScorer s(exec);
@@ -187,7 +185,8 @@ TemporalRun runTemporal(FrameSource& source, const std::vector<std::string>& nam
         }
         if (o.onFrame) o.onFrame(t, outputs, ref);
         if (o.keepOutputs) {
-            for (std::size_t m = 0; m < names.size(); ++m) run.outputs[m].push_back(ImageRgba8::copyOf(outputs[m].view()));
+            for (std::size_t m = 0; m < names.size(); ++m)
+                run.outputs[m].push_back(ImageRgba8::copyOf(outputs[m].view()));
             run.truth.push_back(ImageRgba8::copyOf(ref.view()));
         }
     }
@@ -234,12 +233,13 @@ TemporalRun evaluateTemporalGiven(FrameSource& source, const std::vector<std::pa
     std::vector<std::string> names;
     std::vector<io::ApngReader> readers;
     for (const auto& [name, path] : given) {
-        if (!std::filesystem::exists(path)) throw Error(fmt::format("{}: no such file (given outputs of {})", path, name));
+        if (!std::filesystem::exists(path))
+            throw Error(fmt::format("{}: no such file (given outputs of {})", path, name));
         names.push_back(name);
         readers.emplace_back(path);
         if (int(readers.back().frameCount()) != source.frames())
-            throw Error(fmt::format("{}: {} frames, the animation has {}", path, readers.back().frameCount(),
-                                    source.frames()));
+            throw Error(
+                fmt::format("{}: {} frames, the animation has {}", path, readers.back().frameCount(), source.frames()));
     }
     return runTemporal(source, names, o, [&](int t) {
         std::vector<ImageRgba8> outputs;
@@ -263,9 +263,8 @@ std::string temporalJson(const std::vector<TemporalResult>& results) {
     nlohmann::ordered_json j = nlohmann::ordered_json::object();
     auto num = [](double v) { return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(); };
     for (const auto& r : results)
-        j[r.method] = {{"flicker_levels", num(r.flickerLevels)},
-                       {"temporal_psnr", num(r.temporalPsnr)},
-                       {"psnr", num(r.psnr)}};
+        j[r.method] = {
+            {"flicker_levels", num(r.flickerLevels)}, {"temporal_psnr", num(r.temporalPsnr)}, {"psnr", num(r.psnr)}};
     return j.dump(2) + "\n";
 }
 

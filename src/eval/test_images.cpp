@@ -175,9 +175,15 @@ void drawCircles(const Canvas& c) {
     // luma = sqrt(0.299 r + 0.587 g + 0.114 b) (spec ppaa.md section 1): green (0,255,0)
     // gives sqrt(0.587) = 0.7662, grey 150 gives sqrt(150/255) = 0.7670.
     const Colour backgrounds[] = {kWhite, kBlack, rgb8(150, 150, 150), rgb8(85, 85, 85)};
-    const Colour colours[] = {kBlack,           rgb8(128, 128, 128), kWhite,
-                              rgb8(255, 0, 0),  rgb8(0, 255, 0),     rgb8(0, 0, 255),
-                              rgb8(0, 255, 255), rgb8(255, 0, 255),  rgb8(255, 255, 0)};
+    const Colour colours[] = {kBlack,
+                              rgb8(128, 128, 128),
+                              kWhite,
+                              rgb8(255, 0, 0),
+                              rgb8(0, 255, 0),
+                              rgb8(0, 0, 255),
+                              rgb8(0, 255, 255),
+                              rgb8(255, 0, 255),
+                              rgb8(255, 255, 0)};
     for (int q = 0; q < 4; ++q) {
         const double qx = 240 * (q % 2), qy = 240 * (q / 2);
         c.fillRect(qx, qy, 240, 240, backgrounds[q]);
@@ -282,8 +288,7 @@ void drawAnimated(const Canvas& c, int frame, int frames) {
     }
     // Circles orbiting an off-centre point.
     const double ox = 440, oy = 170, orbit = 95;
-    const Colour orbitColours[] = {rgb8(200, 30, 30), rgb8(30, 150, 30), rgb8(30, 30, 200), kBlack,
-                                   rgb8(200, 120, 0)};
+    const Colour orbitColours[] = {rgb8(200, 30, 30), rgb8(30, 150, 30), rgb8(30, 30, 200), kBlack, rgb8(200, 120, 0)};
     for (int k = 0; k < 5; ++k) {
         const double a = 2 * kPi * (phase + k / 5.0);
         const double r = 10 + 5 * k;
@@ -320,10 +325,14 @@ ImageRgba8 drawTestImage(std::string_view name, int scale, int frame) {
         throw Error(fmt::format("test image '{}' has {} frame(s), asked for frame {}", name, info.frames, frame));
     checkDimensions(std::int64_t{info.width} * scale, std::int64_t{info.height} * scale, std::string(name));
     const Canvas c(info.width, info.height, scale);
-    if (name == "lines") drawLines(c);
-    else if (name == "circles") drawCircles(c);
-    else if (name == "plot") drawPlot(c);
-    else drawAnimated(c, frame, info.frames);
+    if (name == "lines")
+        drawLines(c);
+    else if (name == "circles")
+        drawCircles(c);
+    else if (name == "plot")
+        drawPlot(c);
+    else
+        drawAnimated(c, frame, info.frames);
     if (cairo_status(c.cr()) != CAIRO_STATUS_SUCCESS)
         throw Error(fmt::format("cairo: drawing '{}' failed: {}", name, cairo_status_to_string(cairo_status(c.cr()))));
     return c.image();

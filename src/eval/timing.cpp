@@ -25,8 +25,7 @@ double trimmedMean(std::vector<double> v) {
 }
 
 std::vector<TimingResult> timeInterleaved(const std::vector<TimedMethod>& methods, int repetitions, int warmup,
-                                          const std::string& baseline,
-                                          const std::function<void(int, int)>& progress) {
+                                          const std::string& baseline, const std::function<void(int, int)>& progress) {
     if (repetitions < 1) throw Error(fmt::format("timing: repetitions = {} must be at least 1", repetitions));
     std::vector<TimingResult> results(methods.size());
     for (std::size_t i = 0; i < methods.size(); ++i) results[i].id = methods[i].id;

@@ -11,9 +11,9 @@
 
 #include <algorithm>
 #include <cerrno>
-#include <filesystem>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 
 #include "src/io/png_internal.hpp"
 #include "ssfx/io/png.hpp"
@@ -94,9 +94,7 @@ Rgba8 over(Rgba8 src, Rgba8 dst) {
     if (src.a == 0) return dst;
     const double sa = src.a / 255.0, da = dst.a / 255.0 * (1.0 - sa);
     const double a = sa + da;
-    auto c = [&](std::uint8_t s, std::uint8_t d) {
-        return std::uint8_t(std::lround((s * sa + d * da) / a));
-    };
+    auto c = [&](std::uint8_t s, std::uint8_t d) { return std::uint8_t(std::lround((s * sa + d * da) / a)); };
     return {c(src.r, dst.r), c(src.g, dst.g), c(src.b, dst.b), std::uint8_t(std::lround(a * 255.0))};
 }
 
@@ -128,10 +126,10 @@ struct OwnedChunk {
 
 struct ApngReader::Impl {
     std::string name;
-    std::FILE* file = nullptr;              // a file source, or
-    std::span<const std::uint8_t> memory;   // a memory source
-    std::uint64_t pos = 0;                  // bytes consumed
-    std::uint64_t size = UINT64_MAX;        // known size (memory, regular files), else unbounded
+    std::FILE* file = nullptr;             // a file source, or
+    std::span<const std::uint8_t> memory;  // a memory source
+    std::uint64_t pos = 0;                 // bytes consumed
+    std::uint64_t size = UINT64_MAX;       // known size (memory, regular files), else unbounded
     std::uint8_t ihdr[13] = {};
     std::uint32_t canvasW = 0, canvasH = 0, numFrames = 1, numPlays = 0;
     bool animated = false;
@@ -168,7 +166,8 @@ struct ApngReader::Impl {
     void readChunk(OwnedChunk& c) {
         const std::uint64_t at = pos;
         std::uint8_t head[8];
-        if (size - pos < 12 || read(head, 8) < 8) throw Error(fmt::format("{}: file is truncated (no IEND chunk)", name));
+        if (size - pos < 12 || read(head, 8) < 8)
+            throw Error(fmt::format("{}: file is truncated (no IEND chunk)", name));
         const std::uint32_t len = readBe32(head);
         if (len > 0x7FFFFFFFu || len > size - at - 12)
             throw Error(fmt::format("{}: file is truncated or has a corrupt chunk length at byte {}", name, at));
@@ -233,8 +232,8 @@ struct ApngReader::Impl {
         if (!animated) numFrames = 1;
         if (animated && numFrames == 0) throw Error(fmt::format("{}: APNG declares 0 frames", name));
         if (numFrames > kMaxApngFrames)
-            throw Error(fmt::format("{}: APNG declares {} frames, more than the limit of {}", name, numFrames,
-                                    kMaxApngFrames));
+            throw Error(
+                fmt::format("{}: APNG declares {} frames, more than the limit of {}", name, numFrames, kMaxApngFrames));
         current.image = ImageRgba8(int(canvasW), int(canvasH));
     }
 
@@ -242,7 +241,9 @@ struct ApngReader::Impl {
     ImageRgba8 decodeFrame(std::uint32_t w, std::uint32_t h, const std::vector<OwnedChunk>& data, std::size_t index) {
         std::vector<std::uint8_t> png(kPngSignature, kPngSignature + 8);
         std::vector<std::uint8_t> hdr(ihdr, ihdr + 13);
-        for (int k = 0; k < 4; ++k) hdr[std::size_t(k)] = std::uint8_t(w >> (24 - 8 * k)), hdr[std::size_t(4 + k)] = std::uint8_t(h >> (24 - 8 * k));
+        for (int k = 0; k < 4; ++k)
+            hdr[std::size_t(k)] = std::uint8_t(w >> (24 - 8 * k)),
+            hdr[std::size_t(4 + k)] = std::uint8_t(h >> (24 - 8 * k));
         appendChunk(png, "IHDR", hdr);
         for (const OwnedChunk& c : decodeChunks) appendChunk(png, c.type, c.data);
         for (const OwnedChunk& d : data) appendChunk(png, "IDAT", d.data);
@@ -307,8 +308,14 @@ struct ApngReader::Impl {
                 const std::uint8_t* p = c.data.data();
                 if (readBe32(p) != nextSeq++)
                     throw Error(fmt::format("{}: APNG sequence numbers out of order at fcTL", name));
-                fc = {readBe32(p + 4), readBe32(p + 8), readBe32(p + 12), readBe32(p + 16),
-                      readBe16(p + 20), readBe16(p + 22), p[24], p[25]};
+                fc = {readBe32(p + 4),
+                      readBe32(p + 8),
+                      readBe32(p + 12),
+                      readBe32(p + 16),
+                      readBe16(p + 20),
+                      readBe16(p + 22),
+                      p[24],
+                      p[25]};
                 const std::uint32_t index = framesSeen;
                 if (fc.width == 0 || fc.height == 0 || fc.x > canvasW || fc.y > canvasH || fc.width > canvasW - fc.x ||
                     fc.height > canvasH - fc.y)
@@ -401,7 +408,8 @@ Animation readAll(ApngReader& r, const std::string& name) {
                                 r.frameCount(), r.width(), r.height(), maxPixels()));
     Animation anim;
     anim.numPlays = r.numPlays();
-    while (const Frame* f = r.next()) anim.frames.push_back(Frame{ImageRgba8::copyOf(f->image.view()), f->delayNum, f->delayDen});
+    while (const Frame* f = r.next())
+        anim.frames.push_back(Frame{ImageRgba8::copyOf(f->image.view()), f->delayNum, f->delayDen});
     return anim;
 }
 
@@ -473,9 +481,7 @@ Animation readApng(const std::string& path) {
     return readAll(r, path);
 }
 
-void writeApng(const std::string& path, const Animation& animation) {
-    writeFileAtomic(path, encodeApng(animation));
-}
+void writeApng(const std::string& path, const Animation& animation) { writeFileAtomic(path, encodeApng(animation)); }
 
 // ---- the streaming writer ------------------------------------------------------------
 

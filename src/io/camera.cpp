@@ -5,9 +5,9 @@
 
 #include <cmath>
 #include <cstring>
-#include <utility>
 #include <nlohmann/json.hpp>
 #include <numbers>
+#include <utility>
 
 #include "ssfx/io/png.hpp"
 
@@ -39,7 +39,8 @@ Camera parseCameraJson(const std::string& text, const std::string& name, CameraB
             else
                 c.zFar = number();
         } else if (key == "width" || key == "height" || key == "guard") {
-            const int v = wholeNumber(number(), fmt::format("{}: '{}'", name, key), key == "guard" ? 0 : 1, kMaxDimension);
+            const int v =
+                wholeNumber(number(), fmt::format("{}: '{}'", name, key), key == "guard" ? 0 : 1, kMaxDimension);
             if (buffer) {
                 (key == "width" ? buffer->width : key == "height" ? buffer->height : buffer->guard) = v;
                 buffer->stated = true;
@@ -47,16 +48,19 @@ Camera parseCameraJson(const std::string& text, const std::string& name, CameraB
         } else if (key == "projection" || key == "view") {
             // Written by `ssfx render` for other consumers; the AO passes derive all from the three above.
         } else {
-            throw Error(fmt::format("{}: unknown key '{}' (known: fov_y_deg, z_near, z_far; width, height, "
-                                    "guard, projection, view are ignored)", name, key));
+            throw Error(
+                fmt::format("{}: unknown key '{}' (known: fov_y_deg, z_near, z_far; width, height, "
+                            "guard, projection, view are ignored)",
+                            name, key));
         }
     }
     // Every camera key is required: defaults would silently describe another camera.
     for (const char* key : {"fov_y_deg", "z_near", "z_far"})
         if (!j.contains(key))
-            throw Error(fmt::format("{}: missing key '{}' (a camera needs fov_y_deg, z_near and z_far; z_far null for "
-                                    "an infinite far plane)",
-                                    name, key));
+            throw Error(
+                fmt::format("{}: missing key '{}' (a camera needs fov_y_deg, z_near and z_far; z_far null for "
+                            "an infinite far plane)",
+                            name, key));
     try {
         ssfx::projection(c, 1, 1);  // validates
     } catch (const Error& e) {

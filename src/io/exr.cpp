@@ -22,7 +22,8 @@ namespace {
 
 class MemoryIStream : public Imf::IStream {
 public:
-    MemoryIStream(std::span<const std::uint8_t> bytes, const std::string& name) : Imf::IStream(name.c_str()), b_(bytes) {}
+    MemoryIStream(std::span<const std::uint8_t> bytes, const std::string& name)
+        : Imf::IStream(name.c_str()), b_(bytes) {}
     bool read(char c[], int n) override {
         if (n < 0 || pos_ + std::uint64_t(n) > b_.size()) throw IEX_NAMESPACE::InputExc("file is truncated");
         std::memcpy(c, b_.data() + pos_, std::size_t(n));
@@ -84,9 +85,10 @@ void checkHeaderSizes(std::span<const std::uint8_t> b, const std::string& name) 
                                                    std::uint32_t(b[pos + 2]) << 16 | std::uint32_t(b[pos + 3]) << 24);
             pos += 4;
             if (size < 0 || std::uint64_t(size) > b.size() - pos)
-                throw Error(fmt::format("{}: header attribute '{}' ({}) claims {} bytes, more than the {} left in the "
-                                        "file",
-                                        name, attr, type, size, b.size() - pos));
+                throw Error(
+                    fmt::format("{}: header attribute '{}' ({}) claims {} bytes, more than the {} left in the "
+                                "file",
+                                name, attr, type, size, b.size() - pos));
             pos += std::size_t(size);
         }
         if (!multiPart) return;
@@ -162,7 +164,8 @@ std::vector<std::uint8_t> encodeExr(const std::vector<ExrChannel>& channels) {
         header.compression() = Imf::ZIP_COMPRESSION;
         Imf::FrameBuffer fb;
         for (const auto& c : channels) {
-            if (header.channels().findChannel(c.name)) throw Error(fmt::format("EXR encoding: channel '{}' twice", c.name));
+            if (header.channels().findChannel(c.name))
+                throw Error(fmt::format("EXR encoding: channel '{}' twice", c.name));
             header.channels().insert(c.name, Imf::Channel(Imf::FLOAT));
             fb.insert(c.name, Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(const_cast<float*>(c.image.data())),
                                          sizeof(float), std::size_t(c.image.stride()) * sizeof(float)));
@@ -185,6 +188,8 @@ void writeExr(const std::string& path, ImageView<const float> image, const std::
     writeFileAtomic(path, bytes);
 }
 
-void writeExr(const std::string& path, const std::vector<ExrChannel>& channels) { writeFileAtomic(path, encodeExr(channels)); }
+void writeExr(const std::string& path, const std::vector<ExrChannel>& channels) {
+    writeFileAtomic(path, encodeExr(channels));
+}
 
 }  // namespace ssfx::io

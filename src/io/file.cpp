@@ -8,10 +8,10 @@
 #include <atomic>
 #include <cerrno>
 #include <csignal>
-#include <mutex>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <mutex>
 #include <random>
 
 #include "ssfx/io/png.hpp"
@@ -39,7 +39,8 @@ void checkInputDimensions(std::int64_t width, std::int64_t height, const std::st
 std::vector<std::uint8_t> readFile(const std::string& path, std::uint64_t maxBytes, const char* kind,
                                    std::span<const std::uint8_t> signature) {
     std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) throw Error(fmt::format("{}: is a directory, not a {} file", path, kind));
+    if (std::filesystem::is_directory(path, ec))
+        throw Error(fmt::format("{}: is a directory, not a {} file", path, kind));
     std::FILE* f = std::fopen(path.c_str(), "rb");
     if (!f) throw Error(fmt::format("{}: cannot open for reading ({})", path, std::strerror(errno)));
     std::vector<std::uint8_t> bytes;
@@ -235,7 +236,8 @@ void OutputSet::commit() {
         fs::rename(todo[i].tmp, todo[i].target, ec);
         unregisterTemp(todo[i].slot);
         if (ec) {
-            for (std::size_t k = i; k < todo.size(); ++k) std::remove(todo[k].tmp.c_str()), unregisterTemp(todo[k].slot);
+            for (std::size_t k = i; k < todo.size(); ++k)
+                std::remove(todo[k].tmp.c_str()), unregisterTemp(todo[k].slot);
             throw Error(fmt::format("{}: cannot move output into place ({})", todo[i].path, ec.message()));
         }
     }

@@ -90,7 +90,8 @@ struct ColorTarget {
 
 // The scene shaders' descriptor set (common.glsl): frame, materials, lights, textures.
 const std::array<vkx::BindingSpec, 4> kBindings = {
-    vkx::BindingSpec{vk::DescriptorType::eUniformBuffer, vk::ShaderStageFlagBits::eVertex | vk::ShaderStageFlagBits::eFragment},
+    vkx::BindingSpec{vk::DescriptorType::eUniformBuffer,
+                     vk::ShaderStageFlagBits::eVertex | vk::ShaderStageFlagBits::eFragment},
     vkx::BindingSpec{vk::DescriptorType::eStorageBuffer, vk::ShaderStageFlagBits::eFragment},
     vkx::BindingSpec{vk::DescriptorType::eStorageBuffer, vk::ShaderStageFlagBits::eFragment},
     vkx::BindingSpec{vk::DescriptorType::eCombinedImageSampler, vk::ShaderStageFlagBits::eFragment}};
@@ -98,7 +99,8 @@ const std::array<vkx::BindingSpec, 4> kBindings = {
 std::shared_ptr<vkx::Context> graphicsContext(std::shared_ptr<vkx::Context> context) {
     if (!context) throw Error("renderer: no Vulkan context given");
     if (!context->graphics)
-        throw Error("renderer: the shared Vulkan context has no graphics queue (create it with ContextOptions::graphics)");
+        throw Error(
+            "renderer: the shared Vulkan context has no graphics queue (create it with ContextOptions::graphics)");
     return context;
 }
 
@@ -114,11 +116,11 @@ struct Renderer::Impl {
         gbufferFrag = vkx::makeShaderModule(ctx, kGBufferFrag);
         forwardFrag = vkx::makeShaderModule(ctx, kForwardFrag);
         sampler = vk::raii::Sampler(
-            ctx.device, vk::SamplerCreateInfo({}, vk::Filter::eLinear, vk::Filter::eLinear, vk::SamplerMipmapMode::eLinear,
-                                              vk::SamplerAddressMode::eRepeat, vk::SamplerAddressMode::eRepeat,
-                                              vk::SamplerAddressMode::eRepeat, 0.0f, ctx.anisotropy,
-                                              std::min(16.0f, ctx.maxAnisotropy), VK_FALSE, vk::CompareOp::eAlways, 0.0f,
-                                              VK_LOD_CLAMP_NONE));
+            ctx.device, vk::SamplerCreateInfo({}, vk::Filter::eLinear, vk::Filter::eLinear,
+                                              vk::SamplerMipmapMode::eLinear, vk::SamplerAddressMode::eRepeat,
+                                              vk::SamplerAddressMode::eRepeat, vk::SamplerAddressMode::eRepeat, 0.0f,
+                                              ctx.anisotropy, std::min(16.0f, ctx.maxAnisotropy), VK_FALSE,
+                                              vk::CompareOp::eAlways, 0.0f, VK_LOD_CLAMP_NONE));
     }
 
     const vk::raii::Pipeline& pipeline(Pass pass, vk::Format depthFormat) {
@@ -129,10 +131,12 @@ struct Renderer::Impl {
             vk::PipelineShaderStageCreateInfo({}, vk::ShaderStageFlagBits::eVertex, *vert, "main")};
         std::vector<vk::Format> colorFormats;
         if (pass == Pass::GBuffer) {
-            stages.emplace_back(vk::PipelineShaderStageCreateFlags(), vk::ShaderStageFlagBits::eFragment, *gbufferFrag, "main");
+            stages.emplace_back(vk::PipelineShaderStageCreateFlags(), vk::ShaderStageFlagBits::eFragment, *gbufferFrag,
+                                "main");
             colorFormats.assign(kGBufferFormats.begin(), kGBufferFormats.end());
         } else if (pass == Pass::Forward) {
-            stages.emplace_back(vk::PipelineShaderStageCreateFlags(), vk::ShaderStageFlagBits::eFragment, *forwardFrag, "main");
+            stages.emplace_back(vk::PipelineShaderStageCreateFlags(), vk::ShaderStageFlagBits::eFragment, *forwardFrag,
+                                "main");
             colorFormats = {vk::Format::eR8G8B8A8Unorm};
         }
         const vk::VertexInputBindingDescription binding(0, sizeof(scene::Vertex), vk::VertexInputRate::eVertex);
@@ -145,21 +149,22 @@ struct Renderer::Impl {
         const vk::PipelineInputAssemblyStateCreateInfo assembly({}, vk::PrimitiveTopology::eTriangleList);
         const vk::PipelineViewportStateCreateInfo viewport({}, 1, nullptr, 1, nullptr);
         // Two-sided surfaces (imported models are not reliably closed or consistently wound).
-        const vk::PipelineRasterizationStateCreateInfo raster({}, VK_FALSE, VK_FALSE, vk::PolygonMode::eFill,
-                                                              vk::CullModeFlagBits::eNone, vk::FrontFace::eCounterClockwise,
-                                                              VK_FALSE, 0, 0, 0, 1.0f);
+        const vk::PipelineRasterizationStateCreateInfo raster(
+            {}, VK_FALSE, VK_FALSE, vk::PolygonMode::eFill, vk::CullModeFlagBits::eNone,
+            vk::FrontFace::eCounterClockwise, VK_FALSE, 0, 0, 0, 1.0f);
         const vk::PipelineMultisampleStateCreateInfo multisample({}, vk::SampleCountFlagBits::e1);
         const vk::PipelineDepthStencilStateCreateInfo depth({}, VK_TRUE, VK_TRUE, vk::CompareOp::eLess);
         const std::vector<vk::PipelineColorBlendAttachmentState> blend(
-            colorFormats.size(), vk::PipelineColorBlendAttachmentState(VK_FALSE, {}, {}, {}, {}, {}, {},
-                                                                        vk::ColorComponentFlagBits::eR | vk::ColorComponentFlagBits::eG |
-                                                                            vk::ColorComponentFlagBits::eB | vk::ColorComponentFlagBits::eA));
+            colorFormats.size(),
+            vk::PipelineColorBlendAttachmentState(VK_FALSE, {}, {}, {}, {}, {}, {},
+                                                  vk::ColorComponentFlagBits::eR | vk::ColorComponentFlagBits::eG |
+                                                      vk::ColorComponentFlagBits::eB | vk::ColorComponentFlagBits::eA));
         const vk::PipelineColorBlendStateCreateInfo blending({}, VK_FALSE, vk::LogicOp::eCopy, blend);
         const std::array<vk::DynamicState, 2> dynamicStates = {vk::DynamicState::eViewport, vk::DynamicState::eScissor};
         const vk::PipelineDynamicStateCreateInfo dynamic({}, dynamicStates);
         const vk::PipelineRenderingCreateInfo rendering(0, colorFormats, depthFormat);
-        vk::GraphicsPipelineCreateInfo info({}, stages, &vertexInput, &assembly, nullptr, &viewport, &raster, &multisample,
-                                            &depth, &blending, &dynamic, *pipelineLayout);
+        vk::GraphicsPipelineCreateInfo info({}, stages, &vertexInput, &assembly, nullptr, &viewport, &raster,
+                                            &multisample, &depth, &blending, &dynamic, *pipelineLayout);
         info.pNext = &rendering;
         return pipelines.emplace(key, vk::raii::Pipeline(ctx.device, nullptr, info)).first->second;
     }
@@ -178,11 +183,13 @@ struct Renderer::Impl {
         vk::DeviceSize offset = 0;
         for (std::uint32_t l = 0; l < levels; ++l) {
             const auto& first = tex.layers[0][l];
-            regions.emplace_back(offset, 0, 0, vk::ImageSubresourceLayers(vk::ImageAspectFlagBits::eColor, l, 0, layers),
-                                 vk::Offset3D(0, 0, 0), vk::Extent3D(std::uint32_t(first.width()), std::uint32_t(first.height()), 1));
+            regions.emplace_back(
+                offset, 0, 0, vk::ImageSubresourceLayers(vk::ImageAspectFlagBits::eColor, l, 0, layers),
+                vk::Offset3D(0, 0, 0), vk::Extent3D(std::uint32_t(first.width()), std::uint32_t(first.height()), 1));
             for (std::uint32_t k = 0; k < layers; ++k) {
                 const auto& img = tex.layers[k][l];
-                std::memcpy(static_cast<std::uint8_t*>(staging.mapped) + offset, img.data(), std::size_t(img.pixelCount()) * 4);
+                std::memcpy(static_cast<std::uint8_t*>(staging.mapped) + offset, img.data(),
+                            std::size_t(img.pixelCount()) * 4);
                 offset += vk::DeviceSize(img.pixelCount()) * 4;
             }
         }
@@ -223,18 +230,21 @@ struct Renderer::Impl {
         vkx::Buffer indices = ctx.uploadBuffer(scene.indices.data(), scene.indices.size() * sizeof(std::uint32_t),
                                                vk::BufferUsageFlagBits::eIndexBuffer);
         std::vector<MaterialData> materials;
-        for (const auto& m : scene.materials) materials.push_back({glm::vec4(m.diffuse, 1.0f), glm::ivec4(m.textureLayer, 0, 0, 0)});
+        for (const auto& m : scene.materials)
+            materials.push_back({glm::vec4(m.diffuse, 1.0f), glm::ivec4(m.textureLayer, 0, 0, 0)});
         std::vector<LightData> lights;
         for (const auto& l : scene.lights)
-            lights.push_back({glm::vec4(l.vector, l.type == scene::Light::Type::Point ? 1.0f : 0.0f), glm::vec4(l.color, 0.0f)});
+            lights.push_back(
+                {glm::vec4(l.vector, l.type == scene::Light::Type::Point ? 1.0f : 0.0f), glm::vec4(l.color, 0.0f)});
         const auto lightCount = float(lights.size());
         if (lights.empty()) lights.push_back({});
         vkx::Buffer materialBuffer = ctx.uploadBuffer(materials.data(), materials.size() * sizeof(MaterialData),
                                                       vk::BufferUsageFlagBits::eStorageBuffer);
-        vkx::Buffer lightBuffer = ctx.uploadBuffer(lights.data(), lights.size() * sizeof(LightData), vk::BufferUsageFlagBits::eStorageBuffer);
+        vkx::Buffer lightBuffer =
+            ctx.uploadBuffer(lights.data(), lights.size() * sizeof(LightData), vk::BufferUsageFlagBits::eStorageBuffer);
         const glm::dvec3 eye = glm::dvec3(glm::inverse(cam.view)[3]);
-        const FrameData frame{glm::mat4(cam.view), glm::vec4(scene.ambient, 0.0f), glm::vec4(derivativeScale, lightCount, 0, 0),
-                              glm::vec4(glm::vec3(eye), 1.0f)};
+        const FrameData frame{glm::mat4(cam.view), glm::vec4(scene.ambient, 0.0f),
+                              glm::vec4(derivativeScale, lightCount, 0, 0), glm::vec4(glm::vec3(eye), 1.0f)};
         vkx::Buffer frameBuffer = ctx.uploadBuffer(&frame, sizeof(frame), vk::BufferUsageFlagBits::eUniformBuffer);
         vkx::Image textures = uploadTextures(scene.textures);
 
@@ -251,13 +261,16 @@ struct Renderer::Impl {
         for (const auto& t : targets) {
             colorImages.push_back(ctx.createImage(t.format, w, h, vk::ImageUsageFlagBits::eColorAttachment | usage,
                                                   vk::ImageAspectFlagBits::eColor));
-            result.colors.push_back(ctx.createBuffer(vk::DeviceSize(w) * h * t.bytesPerTexel, vk::BufferUsageFlagBits::eTransferDst, true));
+            result.colors.push_back(
+                ctx.createBuffer(vk::DeviceSize(w) * h * t.bytesPerTexel, vk::BufferUsageFlagBits::eTransferDst, true));
         }
-        vkx::Image depthImage = ctx.createImage(depthFormat, w, h, vk::ImageUsageFlagBits::eDepthStencilAttachment | usage,
-                                                vk::ImageAspectFlagBits::eDepth);
+        vkx::Image depthImage =
+            ctx.createImage(depthFormat, w, h, vk::ImageUsageFlagBits::eDepthStencilAttachment | usage,
+                            vk::ImageAspectFlagBits::eDepth);
         const bool readDepth = pass != Pass::Forward;
         if (readDepth)
-            result.depth = ctx.createBuffer(vk::DeviceSize(w) * h * depthBytes(depthFormat), vk::BufferUsageFlagBits::eTransferDst, true);
+            result.depth = ctx.createBuffer(vk::DeviceSize(w) * h * depthBytes(depthFormat),
+                                            vk::BufferUsageFlagBits::eTransferDst, true);
         const vkx::GpuTimer timer(ctx);
 
         const vk::raii::Pipeline& pipe = pipeline(pass, depthFormat);
@@ -266,22 +279,23 @@ struct Renderer::Impl {
             using S = vk::PipelineStageFlagBits;
             using A = vk::AccessFlagBits;
             for (const auto& img : colorImages)
-                vkx::transition(cmd, img, vk::ImageLayout::eUndefined, vk::ImageLayout::eColorAttachmentOptimal, S::eTopOfPipe,
-                                {}, S::eColorAttachmentOutput, A::eColorAttachmentWrite);
-            vkx::transition(cmd, depthImage, vk::ImageLayout::eUndefined, vk::ImageLayout::eDepthAttachmentOptimal, S::eTopOfPipe,
-                            {}, S::eEarlyFragmentTests | S::eLateFragmentTests,
+                vkx::transition(cmd, img, vk::ImageLayout::eUndefined, vk::ImageLayout::eColorAttachmentOptimal,
+                                S::eTopOfPipe, {}, S::eColorAttachmentOutput, A::eColorAttachmentWrite);
+            vkx::transition(cmd, depthImage, vk::ImageLayout::eUndefined, vk::ImageLayout::eDepthAttachmentOptimal,
+                            S::eTopOfPipe, {}, S::eEarlyFragmentTests | S::eLateFragmentTests,
                             A::eDepthStencilAttachmentRead | A::eDepthStencilAttachmentWrite);
             timer.reset(cmd);
             timer.begin(cmd);
             std::vector<vk::RenderingAttachmentInfo> colorInfos;
             for (std::size_t i = 0; i < targets.size(); ++i)
-                colorInfos.emplace_back(*colorImages[i].view, vk::ImageLayout::eColorAttachmentOptimal, vk::ResolveModeFlagBits::eNone,
-                                        nullptr, vk::ImageLayout::eUndefined, vk::AttachmentLoadOp::eClear,
-                                        vk::AttachmentStoreOp::eStore, vk::ClearValue(targets[i].clear));
-            const vk::RenderingAttachmentInfo depthInfo(*depthImage.view, vk::ImageLayout::eDepthAttachmentOptimal,
-                                                        vk::ResolveModeFlagBits::eNone, nullptr, vk::ImageLayout::eUndefined,
-                                                        vk::AttachmentLoadOp::eClear, vk::AttachmentStoreOp::eStore,
-                                                        vk::ClearValue(vk::ClearDepthStencilValue(1.0f, 0)));
+                colorInfos.emplace_back(*colorImages[i].view, vk::ImageLayout::eColorAttachmentOptimal,
+                                        vk::ResolveModeFlagBits::eNone, nullptr, vk::ImageLayout::eUndefined,
+                                        vk::AttachmentLoadOp::eClear, vk::AttachmentStoreOp::eStore,
+                                        vk::ClearValue(targets[i].clear));
+            const vk::RenderingAttachmentInfo depthInfo(
+                *depthImage.view, vk::ImageLayout::eDepthAttachmentOptimal, vk::ResolveModeFlagBits::eNone, nullptr,
+                vk::ImageLayout::eUndefined, vk::AttachmentLoadOp::eClear, vk::AttachmentStoreOp::eStore,
+                vk::ClearValue(vk::ClearDepthStencilValue(1.0f, 0)));
             cmd.beginRendering(vk::RenderingInfo({}, vk::Rect2D({0, 0}, {w, h}), 1, 0, colorInfos, &depthInfo));
             cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipe);
             cmd.setViewport(0, vk::Viewport(0.0f, 0.0f, float(w), float(h), 0.0f, 1.0f));
@@ -294,18 +308,22 @@ struct Renderer::Impl {
             cmd.endRendering();
             timer.end(cmd);
             for (std::size_t i = 0; i < targets.size(); ++i) {
-                vkx::transition(cmd, colorImages[i], vk::ImageLayout::eColorAttachmentOptimal, vk::ImageLayout::eTransferSrcOptimal,
-                                S::eColorAttachmentOutput, A::eColorAttachmentWrite, S::eTransfer, A::eTransferRead);
-                cmd.copyImageToBuffer(*colorImages[i].image, vk::ImageLayout::eTransferSrcOptimal, *result.colors[i].buffer,
-                                      vk::BufferImageCopy(0, 0, 0, vk::ImageSubresourceLayers(vk::ImageAspectFlagBits::eColor, 0, 0, 1),
-                                                          {0, 0, 0}, {w, h, 1}));
+                vkx::transition(cmd, colorImages[i], vk::ImageLayout::eColorAttachmentOptimal,
+                                vk::ImageLayout::eTransferSrcOptimal, S::eColorAttachmentOutput,
+                                A::eColorAttachmentWrite, S::eTransfer, A::eTransferRead);
+                cmd.copyImageToBuffer(
+                    *colorImages[i].image, vk::ImageLayout::eTransferSrcOptimal, *result.colors[i].buffer,
+                    vk::BufferImageCopy(0, 0, 0, vk::ImageSubresourceLayers(vk::ImageAspectFlagBits::eColor, 0, 0, 1),
+                                        {0, 0, 0}, {w, h, 1}));
             }
             if (readDepth) {
-                vkx::transition(cmd, depthImage, vk::ImageLayout::eDepthAttachmentOptimal, vk::ImageLayout::eTransferSrcOptimal,
-                                S::eLateFragmentTests, A::eDepthStencilAttachmentWrite, S::eTransfer, A::eTransferRead);
-                cmd.copyImageToBuffer(*depthImage.image, vk::ImageLayout::eTransferSrcOptimal, *result.depth.buffer,
-                                      vk::BufferImageCopy(0, 0, 0, vk::ImageSubresourceLayers(vk::ImageAspectFlagBits::eDepth, 0, 0, 1),
-                                                          {0, 0, 0}, {w, h, 1}));
+                vkx::transition(cmd, depthImage, vk::ImageLayout::eDepthAttachmentOptimal,
+                                vk::ImageLayout::eTransferSrcOptimal, S::eLateFragmentTests,
+                                A::eDepthStencilAttachmentWrite, S::eTransfer, A::eTransferRead);
+                cmd.copyImageToBuffer(
+                    *depthImage.image, vk::ImageLayout::eTransferSrcOptimal, *result.depth.buffer,
+                    vk::BufferImageCopy(0, 0, 0, vk::ImageSubresourceLayers(vk::ImageAspectFlagBits::eDepth, 0, 0, 1),
+                                        {0, 0, 0}, {w, h, 1}));
             }
             const vk::MemoryBarrier toHost(A::eTransferWrite, A::eHostRead);
             cmd.pipelineBarrier(S::eTransfer, S::eHost, {}, toHost, {}, {});
@@ -339,8 +357,8 @@ const std::shared_ptr<vkx::Context>& Renderer::context() const { return impl_->s
 
 std::vector<std::string> Renderer::validationMessages() const { return impl_->ctx.validationMessages(); }
 
-DepthRender Renderer::renderDepth(const scene::Scene& scene, const scene::View& view, int width, int height, DepthFormat format,
-                                  int guard) {
+DepthRender Renderer::renderDepth(const scene::Scene& scene, const scene::View& view, int width, int height,
+                                  DepthFormat format, int guard) {
     return guarded("rendering depth", [&] {
         DepthRender out;
         out.camera = scene::cameraSetup(view, width, height, guard);
@@ -352,7 +370,8 @@ DepthRender Renderer::renderDepth(const scene::Scene& scene, const scene::View& 
     });
 }
 
-scene::GBuffer Renderer::renderGBuffer(const scene::Scene& scene, const scene::View& view, int width, int height, int m) {
+scene::GBuffer Renderer::renderGBuffer(const scene::Scene& scene, const scene::View& view, int width, int height,
+                                       int m) {
     if (m < 1 || m > 4) throw Error(fmt::format("G-buffer supersampling m = {} is not in 1..4", m));
     return guarded("rendering the G-buffer", [&] {
         scene::GBuffer g;
@@ -362,10 +381,10 @@ scene::GBuffer Renderer::renderGBuffer(const scene::Scene& scene, const scene::V
         checkDimensions(width, height, "G-buffer size");
         g.camera = scene::cameraSetup(view, m * width, m * height, 0);
         std::vector<ColorTarget> targets;
-        const std::array<vk::ClearColorValue, 4> clears = {vk::ClearColorValue(0.0f, 0.0f, 0.0f, 0.0f),
-                                                           vk::ClearColorValue(0.0f, 0.0f, 0.0f, 0.0f),
-                                                           vk::ClearColorValue(0.0f, 0.0f, 0.0f, 0.0f),
-                                                           vk::ClearColorValue(std::array<std::uint32_t, 4>{0xFFFFu, 0xFFFFu, 0, 0})};
+        const std::array<vk::ClearColorValue, 4> clears = {
+            vk::ClearColorValue(0.0f, 0.0f, 0.0f, 0.0f), vk::ClearColorValue(0.0f, 0.0f, 0.0f, 0.0f),
+            vk::ClearColorValue(0.0f, 0.0f, 0.0f, 0.0f),
+            vk::ClearColorValue(std::array<std::uint32_t, 4>{0xFFFFu, 0xFFFFu, 0, 0})};
         for (std::size_t i = 0; i < 4; ++i) targets.push_back({kGBufferFormats[i], clears[i], kGBufferBytes[i]});
         auto r = impl_->draw(scene, g.camera, Pass::GBuffer, vk::Format::eD32Sfloat, targets, float(m));
         const int sw = g.sampleWidth(), sh = g.sampleHeight();
@@ -378,7 +397,8 @@ scene::GBuffer Renderer::renderGBuffer(const scene::Scene& scene, const scene::V
         g.layer.resize(n);
         const auto* normals = static_cast<const std::int16_t*>(r.colors[0].mapped);
         for (std::size_t i = 0; i < n; ++i)
-            for (int c = 0; c < 3; ++c) g.normal[i][c] = std::max(float(normals[4 * i + std::size_t(c)]) / 32767.0f, -1.0f);
+            for (int c = 0; c < 3; ++c)
+                g.normal[i][c] = std::max(float(normals[4 * i + std::size_t(c)]) / 32767.0f, -1.0f);
         std::memcpy(g.uv.data(), r.colors[1].mapped, n * sizeof(glm::vec2));
         std::memcpy(g.uvGrad.data(), r.colors[2].mapped, n * sizeof(glm::vec4));
         const auto* ids = static_cast<const std::uint16_t*>(r.colors[3].mapped);
@@ -391,7 +411,8 @@ scene::GBuffer Renderer::renderGBuffer(const scene::Scene& scene, const scene::V
     });
 }
 
-ColorRender Renderer::renderColor(const scene::Scene& scene, const scene::View& view, int width, int height, int scale) {
+ColorRender Renderer::renderColor(const scene::Scene& scene, const scene::View& view, int width, int height,
+                                  int scale) {
     if (scale < 1 || scale > 16) throw Error(fmt::format("colour scale {} is not in 1..16", scale));
     return guarded("rendering colour", [&] {
         checkDimensions(width, height, "colour size");

@@ -104,8 +104,7 @@ AnalyticScene analyticSceneByName(std::string_view name) {
     throw Error(fmt::format("unknown analytic scene '{}' (known: corner, room)", name));
 }
 
-GeometryBuffer castGeometry(const ao::RayScene& scene, const Camera& camera, int width, int height,
-                            const Exec& exec) {
+GeometryBuffer castGeometry(const ao::RayScene& scene, const Camera& camera, int width, int height, const Exec& exec) {
     const Projection proj = ssfx::projection(camera, width, height);
     GeometryBuffer g{ImageF(width, height), ImageF(width, height),
                      std::vector<Vec3d>(std::size_t(width) * std::size_t(height), Vec3d{0, 0, 0})};

@@ -35,7 +35,8 @@ glm::dmat4 lookAt(const glm::dvec3& eye, const glm::dvec3& target, const glm::dv
 }
 
 glm::dmat4 perspective(double fovY, double aspect, double zNear, double zFar) {
-    if (!(fovY > 0.0 && fovY < std::numbers::pi)) throw Error(fmt::format("camera: fov {} rad is not in (0, pi)", fovY));
+    if (!(fovY > 0.0 && fovY < std::numbers::pi))
+        throw Error(fmt::format("camera: fov {} rad is not in (0, pi)", fovY));
     if (!(aspect > 0.0 && std::isfinite(aspect))) throw Error(fmt::format("camera: aspect {} is not positive", aspect));
     if (!(zNear > 0.0 && std::isfinite(zNear))) throw Error(fmt::format("camera: z_near {} must be > 0", zNear));
     if (!(zFar > zNear)) throw Error(fmt::format("camera: z_far {} must be > z_near {} (or infinite)", zFar, zNear));
@@ -66,7 +67,8 @@ CameraSetup cameraSetup(const View& view, int width, int height, int guard) {
     c.guard = guard;
     checkDimensions(c.bufferWidth(), c.bufferHeight(), "render size with guard band");
     const double fovY = view.fovYDeg * std::numbers::pi / 180.0;
-    if (!(fovY > 0.0 && fovY < std::numbers::pi)) throw Error(fmt::format("view: fov_y_deg {} is not in (0, 180)", view.fovYDeg));
+    if (!(fovY > 0.0 && fovY < std::numbers::pi))
+        throw Error(fmt::format("view: fov_y_deg {} is not in (0, 180)", view.fovYDeg));
     // Same pixel size in the widened buffer: tan(fov'/2) = tan(fov/2) (h + 2g) / h.
     const double fovYBuffer = 2.0 * std::atan(std::tan(fovY / 2.0) * c.bufferHeight() / height);
     c.view = lookAt(view.eye, view.target, view.up);

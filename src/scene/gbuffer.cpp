@@ -19,8 +19,8 @@ void writeGBufferExr(const std::string& path, const GBuffer& g) {
             planes[10](x, y) = float(g.layer[i]);
         }
     planes[11] = g.depth;
-    const char* names[] = {"N.X", "N.Y", "N.Z", "UV.U", "UV.V", "dUVdx.U", "dUVdx.V", "dUVdy.U", "dUVdy.V",
-                           "material", "layer", "Z"};
+    const char* names[] = {"N.X",     "N.Y",     "N.Z",     "UV.U",     "UV.V",  "dUVdx.U",
+                           "dUVdx.V", "dUVdy.U", "dUVdy.V", "material", "layer", "Z"};
     std::vector<io::ExrChannel> channels;
     for (std::size_t i = 0; i < planes.size(); ++i) channels.push_back({names[i], planes[i].view()});
     io::writeExr(path, channels);

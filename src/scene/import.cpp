@@ -6,18 +6,18 @@
 #include <fmt/format.h>
 #include <stb/stb_image.h>
 
-#include <assimp/Importer.hpp>
-#include <cmath>
-#include <filesystem>
 #include <algorithm>
+#include <assimp/Importer.hpp>
 #include <cctype>
+#include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <map>
+#include <nlohmann/json.hpp>
+#include <numbers>
 #include <span>
 #include <string_view>
-#include <numbers>
 #include <type_traits>
-#include <nlohmann/json.hpp>
 
 #include "ssfx/core/error.hpp"
 #include "ssfx/core/isolate.hpp"
@@ -90,15 +90,18 @@ void configure(Assimp::Importer& importer, const std::string& ext, const std::st
         bool claims = false;
         if (desc && desc->mFileExtensions) {
             std::string list = desc->mFileExtensions;
-            std::transform(list.begin(), list.end(), list.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+            std::transform(list.begin(), list.end(), list.begin(),
+                           [](unsigned char c) { return char(std::tolower(c)); });
             for (std::size_t at = 0; at < list.size();) {
                 const std::size_t end = std::min(list.find(' ', at), list.size());
                 claims = claims || list.compare(at, end - at, ext) == 0;
                 at = end + 1;
             }
         }
-        if (claims) ++kept;
-        else others.push_back(importer.GetImporter(i));
+        if (claims)
+            ++kept;
+        else
+            others.push_back(importer.GetImporter(i));
     }
     if (kept == 0)
         throw Error(fmt::format("{}: '.{}' is not a model format Assimp reads (OBJ, glTF, GLB, Collada, PLY, STL, ...)",
@@ -136,21 +139,24 @@ Scene convert(const aiScene* ai, const std::string& what, const fs::path* dir, d
         aiColor3D diffuse;
         const bool hasDiffuse = m->Get(AI_MATKEY_COLOR_DIFFUSE, diffuse) == AI_SUCCESS;
         aiString tex;
-        if (m->GetTextureCount(aiTextureType_DIFFUSE) > 0 && m->GetTexture(aiTextureType_DIFFUSE, 0, &tex) == AI_SUCCESS) {
+        if (m->GetTextureCount(aiTextureType_DIFFUSE) > 0 &&
+            m->GetTexture(aiTextureType_DIFFUSE, 0, &tex) == AI_SUCCESS) {
             const std::string texName = tex.C_Str();
             auto found = layerOf.find(texName);
             if (found == layerOf.end()) {
                 ImageRgba8 img;
                 if (const aiTexture* embedded = ai->GetEmbeddedTexture(texName.c_str())) {
                     if (embedded->mHeight != 0)
-                        throw Error(fmt::format("{}: embedded texture '{}' is uncompressed (unsupported)", what, texName));
+                        throw Error(
+                            fmt::format("{}: embedded texture '{}' is uncompressed (unsupported)", what, texName));
                     img = decodeTexture(reinterpret_cast<const std::uint8_t*>(embedded->pcData), embedded->mWidth,
                                         texName);
                 } else {
                     if (!dir)
-                        throw Error(fmt::format("{}: material '{}' names an external texture '{}' (a model read from "
-                                                "memory can only use embedded textures)",
-                                                what, mat.name, texName));
+                        throw Error(
+                            fmt::format("{}: material '{}' names an external texture '{}' (a model read from "
+                                        "memory can only use embedded textures)",
+                                        what, mat.name, texName));
                     std::string rel = texName;
                     std::replace(rel.begin(), rel.end(), '\\', '/');
                     const fs::path file = *dir / rel;
@@ -165,7 +171,8 @@ Scene convert(const aiScene* ai, const std::string& what, const fs::path* dir, d
             mat.textureLayer = found->second;
         }
         // The file's diffuse colour; without one 0.8, or 1 for a textured material (the texture as is).
-        mat.diffuse = hasDiffuse ? glm::vec3(diffuse.r, diffuse.g, diffuse.b) : glm::vec3(mat.textureLayer >= 0 ? 1.0f : 0.8f);
+        mat.diffuse =
+            hasDiffuse ? glm::vec3(diffuse.r, diffuse.g, diffuse.b) : glm::vec3(mat.textureLayer >= 0 ? 1.0f : 0.8f);
         s.materials.push_back(mat);
     }
     if (s.materials.empty()) s.materials.push_back({"default", glm::vec3(0.8f), -1});
@@ -178,8 +185,8 @@ Scene convert(const aiScene* ai, const std::string& what, const fs::path* dir, d
             const aiVector3D& p = mesh->mVertices[v];
             vx.position = glm::vec3(glm::dvec3(p.x, p.y, p.z) * scale);
             if (!std::isfinite(vx.position.x) || !std::isfinite(vx.position.y) || !std::isfinite(vx.position.z))
-                throw Error(fmt::format("{}: vertex {} of mesh {} has a non-finite position ({}, {}, {}) x scale {}", what,
-                                        v, mi, p.x, p.y, p.z, scale));
+                throw Error(fmt::format("{}: vertex {} of mesh {} has a non-finite position ({}, {}, {}) x scale {}",
+                                        what, v, mi, p.x, p.y, p.z, scale));
             if (mesh->mNormals) vx.normal = {mesh->mNormals[v].x, mesh->mNormals[v].y, mesh->mNormals[v].z};
             // A missing, zero or non-finite normal (a degenerate face's) becomes +y.
             const float len = glm::length(vx.normal);
@@ -345,7 +352,8 @@ Scene importModelFromMemory(std::span<const std::uint8_t> bytes, const std::stri
     const std::string what = fmt::format("model '{}'", name);
     checkScale(scale, what);
     if (bytes.empty()) throw Error(fmt::format("{}: no bytes", what));
-    if (format.empty() || format.size() > 7 || format.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789") != std::string::npos)
+    if (format.empty() || format.size() > 7 ||
+        format.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789") != std::string::npos)
         throw Error(fmt::format("{}: format '{}' must be a file extension such as obj, gltf or glb", what, format));
     const auto mesh = runIsolated(
         [&] {
@@ -415,8 +423,9 @@ Scene sceneFromJson(const Json& j, const std::string& path, const ModelLoader& l
     for (auto it = j.begin(); it != j.end(); ++it)
         if (it.key() != "model" && it.key() != "scale" && it.key() != "ambient" && it.key() != "background" &&
             it.key() != "lights" && it.key() != "views")
-            throw Error(fmt::format("scene file '{}': unknown key '{}' (model, scale, ambient, background, lights, views)",
-                                    path, it.key()));
+            throw Error(
+                fmt::format("scene file '{}': unknown key '{}' (model, scale, ambient, background, lights, views)",
+                            path, it.key()));
     if (!j.contains("model") || !j["model"].is_string())
         throw Error(fmt::format("scene file '{}': 'model' (a path) is required", path));
     const double scale = numberAt(j, "scale", 1.0, fmt::format("scene file '{}'", path), "/scale");
@@ -441,7 +450,8 @@ Scene sceneFromJson(const Json& j, const std::string& path, const ModelLoader& l
             if (type == "directional") {
                 light.type = Light::Type::Directional;
                 light.vector = vec3Of(l.value("direction", Json()), where + ": a directional light's 'direction'");
-                if (!(glm::length(light.vector) > 0.0f)) throw Error(where + ": a directional light's direction is zero");
+                if (!(glm::length(light.vector) > 0.0f))
+                    throw Error(where + ": a directional light's direction is zero");
                 light.vector = glm::normalize(light.vector);
             } else if (type == "point") {
                 light.type = Light::Type::Point;

@@ -64,7 +64,8 @@ public:
                 const glm::dvec3 dv = p(u, std::min(v + h, 1.0)) - p(u, std::max(v - h, 0.0));
                 glm::dvec3 n = glm::normalize(glm::cross(du, dv));
                 if (glm::dot(n, outwards(pos)) < 0.0) n = -n;
-                s_.vertices.push_back({glm::vec3(pos), glm::vec3(n), glm::vec2(float(u) * uvScale.x, float(v) * uvScale.y), mat});
+                s_.vertices.push_back(
+                    {glm::vec3(pos), glm::vec3(n), glm::vec2(float(u) * uvScale.x, float(v) * uvScale.y), mat});
             }
         for (int j = 0; j < nv; ++j)
             for (int i = 0; i < nu; ++i) {
@@ -82,11 +83,12 @@ public:
     }
 
     void cylinder(glm::dvec3 base, double radius, double height, std::uint32_t mat, int segments = 24) {
-        surface([=](double u, double v) {
-                    return base + glm::dvec3(radius * std::cos(2 * kPi * u), height * v, radius * std::sin(2 * kPi * u));
-                },
-                segments, 4, mat, {float(2 * kPi * radius), float(height)},
-                [=](glm::dvec3 q) { return glm::dvec3(q.x - base.x, 0, q.z - base.z); });
+        surface(
+            [=](double u, double v) {
+                return base + glm::dvec3(radius * std::cos(2 * kPi * u), height * v, radius * std::sin(2 * kPi * u));
+            },
+            segments, 4, mat, {float(2 * kPi * radius), float(height)},
+            [=](glm::dvec3 q) { return glm::dvec3(q.x - base.x, 0, q.z - base.z); });
     }
 
 private:
@@ -148,13 +150,13 @@ Scene cornellBox() {
     const auto red = b.material("red", {0.63f, 0.065f, 0.05f});
     const auto green = b.material("green", {0.14f, 0.45f, 0.09f});
     // A 2 m box, open towards +z: x in [0, 2], y in [0, 2], z in [-2, 0].
-    b.quad({0, 0, 0}, {2, 0, 0}, {0, 0, -2}, {0, 1, 0}, white);   // floor
-    b.quad({0, 2, 0}, {2, 0, 0}, {0, 0, -2}, {0, -1, 0}, white);  // ceiling
-    b.quad({0, 0, -2}, {2, 0, 0}, {0, 2, 0}, {0, 0, 1}, white);   // back
-    b.quad({0, 0, 0}, {0, 0, -2}, {0, 2, 0}, {1, 0, 0}, red);     // left
-    b.quad({2, 0, 0}, {0, 0, -2}, {0, 2, 0}, {-1, 0, 0}, green);  // right
-    b.box({0.68f, 0.0f, -0.62f}, {0.6f, 0.6f, 0.6f}, white, -0.31f);   // short box
-    b.box({1.32f, 0.0f, -1.32f}, {0.6f, 1.2f, 0.6f}, white, 0.30f);    // tall box
+    b.quad({0, 0, 0}, {2, 0, 0}, {0, 0, -2}, {0, 1, 0}, white);       // floor
+    b.quad({0, 2, 0}, {2, 0, 0}, {0, 0, -2}, {0, -1, 0}, white);      // ceiling
+    b.quad({0, 0, -2}, {2, 0, 0}, {0, 2, 0}, {0, 0, 1}, white);       // back
+    b.quad({0, 0, 0}, {0, 0, -2}, {0, 2, 0}, {1, 0, 0}, red);         // left
+    b.quad({2, 0, 0}, {0, 0, -2}, {0, 2, 0}, {-1, 0, 0}, green);      // right
+    b.box({0.68f, 0.0f, -0.62f}, {0.6f, 0.6f, 0.6f}, white, -0.31f);  // short box
+    b.box({1.32f, 0.0f, -1.32f}, {0.6f, 1.2f, 0.6f}, white, 0.30f);   // tall box
     s.lights.push_back({Light::Type::Point, {1.0f, 1.9f, -1.0f}, glm::vec3(1.6f)});
     s.ambient = glm::vec3(0.12f);
     s.background = glm::vec3(0.0f);
@@ -197,33 +199,33 @@ Scene atrium() {
         // and the two planar spandrel faces, ruled from the intrados to the bay's rectangle.
         for (int i = 0; i < 5; ++i) {
             const double xm = -6.0 + 3.0 * i;
-            b.surface([=](double u, double v) {
-                          const double t = kPi * u;
-                          return glm::dvec3(xm + archR * std::cos(t), springY + archR * std::sin(t), zc - 0.3 + 0.6 * v);
-                      },
-                      24, 1, stone, {3.6f, 0.6f},
-                      [=](glm::dvec3 q) { return glm::dvec3(xm - q.x, springY - q.y, 0); });
+            b.surface(
+                [=](double u, double v) {
+                    const double t = kPi * u;
+                    return glm::dvec3(xm + archR * std::cos(t), springY + archR * std::sin(t), zc - 0.3 + 0.6 * v);
+                },
+                24, 1, stone, {3.6f, 0.6f}, [=](glm::dvec3 q) { return glm::dvec3(xm - q.x, springY - q.y, 0); });
             for (double face : {-0.3, 0.3}) {
-                b.surface([=](double u, double v) {
-                              const double t = kPi * u;
-                              const glm::dvec2 inner(xm + archR * std::cos(t), springY + archR * std::sin(t));
-                              // The bay outline at the same angle: sides x = xm +- 1.5, top y = wallTop.
-                              const glm::dvec2 dir(std::cos(t), std::sin(t));
-                              double k = 1e9;
-                              if (std::abs(dir.x) > 1e-9) k = std::min(k, 1.5 / std::abs(dir.x));
-                              if (dir.y > 1e-9) k = std::min(k, (wallTop - springY) / dir.y);
-                              const glm::dvec2 outer = glm::dvec2(xm, springY) + k * dir;
-                              const glm::dvec2 q = inner + (outer - inner) * v;
-                              return glm::dvec3(q.x, q.y, zc + face);
-                          },
-                          24, 1, stone, {3.0f, 1.0f}, [=](glm::dvec3) { return glm::dvec3(0, 0, face); });
+                b.surface(
+                    [=](double u, double v) {
+                        const double t = kPi * u;
+                        const glm::dvec2 inner(xm + archR * std::cos(t), springY + archR * std::sin(t));
+                        // The bay outline at the same angle: sides x = xm +- 1.5, top y = wallTop.
+                        const glm::dvec2 dir(std::cos(t), std::sin(t));
+                        double k = 1e9;
+                        if (std::abs(dir.x) > 1e-9) k = std::min(k, 1.5 / std::abs(dir.x));
+                        if (dir.y > 1e-9) k = std::min(k, (wallTop - springY) / dir.y);
+                        const glm::dvec2 outer = glm::dvec2(xm, springY) + k * dir;
+                        const glm::dvec2 q = inner + (outer - inner) * v;
+                        return glm::dvec3(q.x, q.y, zc + face);
+                    },
+                    24, 1, stone, {3.0f, 1.0f}, [=](glm::dvec3) { return glm::dvec3(0, 0, face); });
             }
         }
         // Entablature over the colonnade, a balcony floor, and a railing of thin bars.
         b.box({0.0f, float(wallTop), float(zc)}, {15.9f, 0.4f, 0.6f}, stone);
         const float railY = float(wallTop + 0.4);
-        for (int k = 0; k <= 104; ++k)
-            b.box({-7.8f + 0.15f * float(k), railY, float(zc)}, {0.03f, 0.9f, 0.03f}, metal);
+        for (int k = 0; k <= 104; ++k) b.box({-7.8f + 0.15f * float(k), railY, float(zc)}, {0.03f, 0.9f, 0.03f}, metal);
         b.box({0.0f, railY + 0.9f, float(zc)}, {15.7f, 0.05f, 0.06f}, metal);
     }
     // Stairs rising towards the far wall.
@@ -232,14 +234,16 @@ Scene atrium() {
         b.box({(x0 + 10.0f) / 2.0f, 0.0f, 0.0f}, {10.0f - x0, 0.18f * float(i + 1), 3.0f}, steps, 0.0f, 0.5f);
     }
     // A curtain hanging in front of the left wall, folds deepening towards the hem.
-    b.surface([](double u, double v) {
-                  const double x = -4.5 + 3.0 * u, y = 4.0 - 3.7 * v;
-                  const double depth = 0.06 + 0.1 * v;
-                  return glm::dvec3(x, y, -4.6 + depth * std::sin(2 * kPi * x / 0.35));
-              },
-              160, 24, cloth, {6.0f, 4.0f}, [](glm::dvec3) { return glm::dvec3(0, 0, 1); });
+    b.surface(
+        [](double u, double v) {
+            const double x = -4.5 + 3.0 * u, y = 4.0 - 3.7 * v;
+            const double depth = 0.06 + 0.1 * v;
+            return glm::dvec3(x, y, -4.6 + depth * std::sin(2 * kPi * x / 0.35));
+        },
+        160, 24, cloth, {6.0f, 4.0f}, [](glm::dvec3) { return glm::dvec3(0, 0, 1); });
 
-    s.lights.push_back({Light::Type::Directional, glm::normalize(glm::vec3(0.45f, -1.0f, -0.3f)), glm::vec3(1.1f, 1.05f, 0.95f)});
+    s.lights.push_back(
+        {Light::Type::Directional, glm::normalize(glm::vec3(0.45f, -1.0f, -0.3f)), glm::vec3(1.1f, 1.05f, 0.95f)});
     s.lights.push_back({Light::Type::Point, {7.0f, 3.0f, 2.0f}, glm::vec3(6.0f, 5.0f, 3.5f)});
     s.ambient = glm::vec3(0.18f, 0.19f, 0.22f);
     s.views.emplace_back("nave", makeView({-9.5, 1.7, 0.5}, {5.0, 2.5, -0.5}));

@@ -17,27 +17,29 @@ public:
     EmbreeScene(const Scene& scene, const CameraSetup& camera) {
         scene.validate();
         device_ = rtcNewDevice("threads=1");  // building is single-threaded: deterministic and small
-        if (!device_) throw Error(fmt::format("Embree: cannot create a device (error {})", int(rtcGetDeviceError(nullptr))));
+        if (!device_)
+            throw Error(fmt::format("Embree: cannot create a device (error {})", int(rtcGetDeviceError(nullptr))));
         scene_ = rtcNewScene(device_);
         rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
         RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
         auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                                               3 * sizeof(float), scene.vertices.size()));
+                                                              3 * sizeof(float), scene.vertices.size()));
         for (std::size_t i = 0; i < scene.vertices.size(); ++i) {
             const glm::dvec4 p = camera.view * glm::dvec4(glm::dvec3(scene.vertices[i].position), 1.0);
             v[3 * i] = float(p.x);
             v[3 * i + 1] = float(p.y);
             v[3 * i + 2] = float(p.z);
         }
-        auto* idx = static_cast<std::uint32_t*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                                                        3 * sizeof(std::uint32_t), scene.triangleCount()));
+        auto* idx = static_cast<std::uint32_t*>(rtcSetNewGeometryBuffer(
+            geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(std::uint32_t), scene.triangleCount()));
         std::copy(scene.indices.begin(), scene.indices.end(), idx);
         rtcCommitGeometry(geom);
         rtcAttachGeometry(scene_, geom);
         rtcReleaseGeometry(geom);
         rtcCommitScene(scene_);
         if (rtcGetDeviceError(device_) != RTC_ERROR_NONE)
-            throw Error(fmt::format("Embree: building the BVH of '{}' failed (error {})", scene.name, int(rtcGetDeviceError(device_))));
+            throw Error(fmt::format("Embree: building the BVH of '{}' failed (error {})", scene.name,
+                                    int(rtcGetDeviceError(device_))));
     }
     ~EmbreeScene() override {
         rtcReleaseScene(scene_);

@@ -1,10 +1,10 @@
 // Scene data: validation, bounds, the texture array and name lookup (see scene.hpp).
 #include <fmt/format.h>
 
+#include <stb/stb_image_resize.h>
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <stb/stb_image_resize.h>
 
 #include "ssfx/core/error.hpp"
 #include "ssfx/scene/scene.hpp"
@@ -41,12 +41,13 @@ void Scene::validate() const {
             if (!std::isfinite(v.position[c]) || !std::isfinite(v.normal[c]))
                 throw Error(fmt::format("scene '{}': vertex {} has a non-finite position or normal", name, i));
         if (v.material >= materials.size())
-            throw Error(fmt::format("scene '{}': vertex {} uses material {} of {}", name, i, v.material, materials.size()));
+            throw Error(
+                fmt::format("scene '{}': vertex {} uses material {} of {}", name, i, v.material, materials.size()));
     }
     for (const auto& m : materials)
         if (m.textureLayer >= int(textures.layers.size()) || m.textureLayer < -1)
-            throw Error(fmt::format("scene '{}': material '{}' uses texture layer {} of {}", name, m.name, m.textureLayer,
-                                    textures.layers.size()));
+            throw Error(fmt::format("scene '{}': material '{}' uses texture layer {} of {}", name, m.name,
+                                    m.textureLayer, textures.layers.size()));
 }
 
 namespace {
@@ -63,7 +64,8 @@ std::vector<ImageRgba8> mipChain(ImageRgba8 base) {
                 const Rgba8 a = src(2 * x, 2 * y), b = src(2 * x + 1, 2 * y), c = src(2 * x, 2 * y + 1),
                             d = src(2 * x + 1, 2 * y + 1);
                 auto avg = [](int p, int q, int r, int s) { return std::uint8_t((p + q + r + s + 2) / 4); };
-                dst(x, y) = {avg(a.r, b.r, c.r, d.r), avg(a.g, b.g, c.g, d.g), avg(a.b, b.b, c.b, d.b), avg(a.a, b.a, c.a, d.a)};
+                dst(x, y) = {avg(a.r, b.r, c.r, d.r), avg(a.g, b.g, c.g, d.g), avg(a.b, b.b, c.b, d.b),
+                             avg(a.a, b.a, c.a, d.a)};
             }
         levels.push_back(std::move(dst));
     }
@@ -89,10 +91,10 @@ int addTextureLayer(TextureArray& textures, const ImageRgba8& image) {
         // One size for the whole array: resample (stb_image_resize, Mitchell filter, wrapping
         // edges as the sampler's repeat mode does).
         base = ImageRgba8(textures.size, textures.size);
-        const int ok = stbir_resize_uint8_generic(
-            reinterpret_cast<const unsigned char*>(image.data()), image.width(), image.height(), 0,
-            reinterpret_cast<unsigned char*>(base.data()), base.width(), base.height(), 0, 4, 3, 0, STBIR_EDGE_WRAP,
-            STBIR_FILTER_MITCHELL, STBIR_COLORSPACE_LINEAR, nullptr);
+        const int ok = stbir_resize_uint8_generic(reinterpret_cast<const unsigned char*>(image.data()), image.width(),
+                                                  image.height(), 0, reinterpret_cast<unsigned char*>(base.data()),
+                                                  base.width(), base.height(), 0, 4, 3, 0, STBIR_EDGE_WRAP,
+                                                  STBIR_FILTER_MITCHELL, STBIR_COLORSPACE_LINEAR, nullptr);
         if (!ok) throw Error("texture resize failed");
     }
     textures.layers.push_back(mipChain(std::move(base)));
@@ -114,8 +116,8 @@ Scene loadScene(const std::string& nameOrPath) {
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
     if (ext == ".json") return loadSceneFile(nameOrPath);
     if (ext.empty() && !std::filesystem::exists(nameOrPath))
-        throw Error(fmt::format("scene '{}': not a built-in scene (atrium, cornell), a scene file (.json) or a model file",
-                                nameOrPath));
+        throw Error(fmt::format(
+            "scene '{}': not a built-in scene (atrium, cornell), a scene file (.json) or a model file", nameOrPath));
     return importModel(nameOrPath);
 }
 

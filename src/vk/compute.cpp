@@ -11,7 +11,8 @@ namespace ssfx::vkx {
 
 vk::raii::DescriptorSetLayout makeSetLayout(const Context& ctx, std::span<const BindingSpec> bindings) {
     std::vector<vk::DescriptorSetLayoutBinding> list;
-    for (std::size_t i = 0; i < bindings.size(); ++i) list.emplace_back(std::uint32_t(i), bindings[i].type, 1, bindings[i].stages);
+    for (std::size_t i = 0; i < bindings.size(); ++i)
+        list.emplace_back(std::uint32_t(i), bindings[i].type, 1, bindings[i].stages);
     return vk::raii::DescriptorSetLayout(ctx.device, vk::DescriptorSetLayoutCreateInfo({}, list));
 }
 
@@ -28,8 +29,8 @@ DescriptorSets::DescriptorSets(const Context& ctx, const vk::raii::DescriptorSet
     for (const auto& b : bindings_) perType[b.type] += count;
     std::vector<vk::DescriptorPoolSize> sizes;
     for (const auto& [type, n] : perType) sizes.emplace_back(type, n);
-    pool_ = vk::raii::DescriptorPool(ctx.device,
-                                     vk::DescriptorPoolCreateInfo(vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, count, sizes));
+    pool_ = vk::raii::DescriptorPool(
+        ctx.device, vk::DescriptorPoolCreateInfo(vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, count, sizes));
     const std::vector<vk::DescriptorSetLayout> layouts(count, *layout);
     sets_ = vk::raii::DescriptorSets(ctx.device, vk::DescriptorSetAllocateInfo(*pool_, layouts));
 }
@@ -37,17 +38,21 @@ DescriptorSets::DescriptorSets(const Context& ctx, const vk::raii::DescriptorSet
 void DescriptorSets::bind(std::size_t set, std::uint32_t binding, const Buffer& buffer) {
     if (binding >= bindings_.size()) throw Error(fmt::format("descriptor binding {} of {}", binding, bindings_.size()));
     const vk::DescriptorBufferInfo info(*buffer.buffer, 0, VK_WHOLE_SIZE);
-    ctx_->device.updateDescriptorSets(vk::WriteDescriptorSet(*sets_[set], binding, 0, bindings_[binding].type, {}, info), {});
+    ctx_->device.updateDescriptorSets(
+        vk::WriteDescriptorSet(*sets_[set], binding, 0, bindings_[binding].type, {}, info), {});
 }
 
-void DescriptorSets::bind(std::size_t set, std::uint32_t binding, vk::ImageView view, vk::ImageLayout layout, vk::Sampler sampler) {
+void DescriptorSets::bind(std::size_t set, std::uint32_t binding, vk::ImageView view, vk::ImageLayout layout,
+                          vk::Sampler sampler) {
     if (binding >= bindings_.size()) throw Error(fmt::format("descriptor binding {} of {}", binding, bindings_.size()));
     const vk::DescriptorImageInfo info(sampler, view, layout);
-    ctx_->device.updateDescriptorSets(vk::WriteDescriptorSet(*sets_[set], binding, 0, bindings_[binding].type, info), {});
+    ctx_->device.updateDescriptorSets(vk::WriteDescriptorSet(*sets_[set], binding, 0, bindings_[binding].type, info),
+                                      {});
 }
 
-ComputePipeline::ComputePipeline(const Context& ctx, std::span<const std::uint32_t> spirv, std::vector<BindingSpec> bindings,
-                                 std::uint32_t pushConstantBytes, const vk::SpecializationInfo* specialization)
+ComputePipeline::ComputePipeline(const Context& ctx, std::span<const std::uint32_t> spirv,
+                                 std::vector<BindingSpec> bindings, std::uint32_t pushConstantBytes,
+                                 const vk::SpecializationInfo* specialization)
     : ctx_(&ctx), bindings_(std::move(bindings)), pushBytes_(pushConstantBytes) {
     setLayout = makeSetLayout(ctx, bindings_);
     const vk::DescriptorSetLayout layouts[] = {*setLayout};
@@ -55,7 +60,8 @@ ComputePipeline::ComputePipeline(const Context& ctx, std::span<const std::uint32
     if (pushConstantBytes) push.emplace_back(vk::ShaderStageFlagBits::eCompute, 0, pushConstantBytes);
     layout = vk::raii::PipelineLayout(ctx.device, vk::PipelineLayoutCreateInfo({}, layouts, push));
     const vk::raii::ShaderModule module = makeShaderModule(ctx, spirv);
-    const vk::PipelineShaderStageCreateInfo stage({}, vk::ShaderStageFlagBits::eCompute, *module, "main", specialization);
+    const vk::PipelineShaderStageCreateInfo stage({}, vk::ShaderStageFlagBits::eCompute, *module, "main",
+                                                  specialization);
     pipeline = vk::raii::Pipeline(ctx.device, nullptr, vk::ComputePipelineCreateInfo({}, stage, *layout));
 }
 
@@ -65,8 +71,9 @@ void ComputePipeline::dispatch(const vk::raii::CommandBuffer& cmd, vk::Descripto
     cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *layout, 0, set, {});
     if (pushBytes_) {
         if (!push) throw Error("compute dispatch without its push constants");
-        cmd.pushConstants<std::uint8_t>(*layout, vk::ShaderStageFlagBits::eCompute, 0,
-                                        vk::ArrayProxy<const std::uint8_t>(pushBytes_, static_cast<const std::uint8_t*>(push)));
+        cmd.pushConstants<std::uint8_t>(
+            *layout, vk::ShaderStageFlagBits::eCompute, 0,
+            vk::ArrayProxy<const std::uint8_t>(pushBytes_, static_cast<const std::uint8_t*>(push)));
     }
     cmd.dispatch(groupsX, groupsY, groupsZ);
 }

@@ -75,7 +75,8 @@ bool hasLayerExtension(const vk::raii::Context& context, const char* layer, cons
 // (VK_EXT_validation_features) and debug utils for its messages.
 vk::raii::Instance makeInstance(const vk::raii::Context& context, bool validation) {
     std::vector<const char*> layers, extensions;
-    const std::array<vk::ValidationFeatureEnableEXT, 1> enables = {vk::ValidationFeatureEnableEXT::eSynchronizationValidation};
+    const std::array<vk::ValidationFeatureEnableEXT, 1> enables = {
+        vk::ValidationFeatureEnableEXT::eSynchronizationValidation};
     vk::ValidationFeaturesEXT features(enables, {});
     const void* next = nullptr;
     if (validation) {
@@ -88,8 +89,9 @@ vk::raii::Instance makeInstance(const vk::raii::Context& context, bool validatio
         layers.push_back(kValidationLayer);
         extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
         if (!hasLayerExtension(context, kValidationLayer, VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME))
-            throw Error(fmt::format("{} has no {} (needed for synchronization validation); update vulkan-validationlayers",
-                                    kValidationLayer, VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME));
+            throw Error(
+                fmt::format("{} has no {} (needed for synchronization validation); update vulkan-validationlayers",
+                            kValidationLayer, VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME));
         extensions.push_back(VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME);
         next = &features;
     }
@@ -101,8 +103,10 @@ vk::raii::Instance makeInstance(const vk::raii::Context& context, bool validatio
     try {
         return vk::raii::Instance(context, info);
     } catch (const vk::SystemError& e) {
-        throw Error(fmt::format("cannot create a Vulkan instance ({}); is a Vulkan driver installed "
-                                "(mesa-vulkan-drivers)?", e.what()));
+        throw Error(
+            fmt::format("cannot create a Vulkan instance ({}); is a Vulkan driver installed "
+                        "(mesa-vulkan-drivers)?",
+                        e.what()));
     }
 }
 
@@ -136,7 +140,8 @@ struct ValidationSink {
         auto* ctx = static_cast<Context*>(user);
         const char* level = (severity & VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT) ? "error" : "warning";
         std::lock_guard lock(ctx->mutex_);
-        ctx->messages_.push_back(fmt::format("{}: {}", level, data && data->pMessage ? data->pMessage : "(no message)"));
+        ctx->messages_.push_back(
+            fmt::format("{}: {}", level, data && data->pMessage ? data->pMessage : "(no message)"));
         return VK_FALSE;
     }
 };
@@ -173,16 +178,18 @@ Context::Context(const ContextOptions& options) : context(makeLoader()) {
                                             : "Vulkan 1.3 with a compute queue";
         std::string listing;
         for (const auto& d : infos)
-            listing += fmt::format("\n  {}: {} ({}, Vulkan {}{})", d.index, d.name, d.type, d.api, fits(d) ? "" : ", unsuitable");
+            listing += fmt::format("\n  {}: {} ({}, Vulkan {}{})", d.index, d.name, d.type, d.api,
+                                   fits(d) ? "" : ", unsuitable");
         if (infos.empty()) throw Error("no Vulkan device; install mesa-vulkan-drivers for the lavapipe CPU device");
         int chosen = -1;
         if (options.device.empty()) {
             for (const auto& d : infos)
-                if (fits(d) && (chosen < 0 || typeRank(d.type) < typeRank(infos[std::size_t(chosen)].type))) chosen = d.index;
+                if (fits(d) && (chosen < 0 || typeRank(d.type) < typeRank(infos[std::size_t(chosen)].type)))
+                    chosen = d.index;
             if (chosen < 0) throw Error(fmt::format("no device with {}; devices:{}", need, listing));
         } else {
-            const bool isIndex =
-                std::all_of(options.device.begin(), options.device.end(), [](unsigned char c) { return std::isdigit(c); });
+            const bool isIndex = std::all_of(options.device.begin(), options.device.end(),
+                                             [](unsigned char c) { return std::isdigit(c); });
             for (const auto& d : infos)
                 if (isIndex ? std::to_string(d.index) == options.device
                             : lower(d.name).find(lower(options.device)) != std::string::npos) {
@@ -213,9 +220,10 @@ Context::Context(const ContextOptions& options) : context(makeLoader()) {
         features13.dynamicRendering = options.graphics ? VK_TRUE : VK_FALSE;
         // Lets a vertex output go unread by a fragment stage (the G-buffer pass ignores the world
         // position) without a validation performance warning; core in 1.3, optional to support.
-        features13.maintenance4 = physical.getFeatures2<vk::PhysicalDeviceFeatures2, vk::PhysicalDeviceVulkan13Features>()
-                                      .get<vk::PhysicalDeviceVulkan13Features>()
-                                      .maintenance4;
+        features13.maintenance4 =
+            physical.getFeatures2<vk::PhysicalDeviceFeatures2, vk::PhysicalDeviceVulkan13Features>()
+                .get<vk::PhysicalDeviceVulkan13Features>()
+                .maintenance4;
         vk::PhysicalDeviceFeatures2 features2(features, &features13);
         vk::DeviceCreateInfo deviceInfo({}, queueInfo, {}, {}, nullptr);
         deviceInfo.pNext = &features2;
@@ -231,7 +239,8 @@ std::vector<std::string> Context::validationMessages() const {
     return messages_;
 }
 
-std::uint32_t Context::memoryType(std::uint32_t bits, vk::MemoryPropertyFlags wanted, vk::MemoryPropertyFlags preferred) const {
+std::uint32_t Context::memoryType(std::uint32_t bits, vk::MemoryPropertyFlags wanted,
+                                  vk::MemoryPropertyFlags preferred) const {
     const auto mem = physical.getMemoryProperties();
     for (int pass = 0; pass < 2; ++pass) {
         const auto need = pass == 0 ? wanted | preferred : wanted;
@@ -246,11 +255,14 @@ Buffer Context::createBuffer(vk::DeviceSize size, vk::BufferUsageFlags usage, bo
     b.size = size;
     b.buffer = vk::raii::Buffer(device, vk::BufferCreateInfo({}, size, usage, vk::SharingMode::eExclusive));
     const auto req = b.buffer.getMemoryRequirements();
-    const auto flags = hostVisible ? vk::MemoryPropertyFlagBits::eHostVisible | vk::MemoryPropertyFlagBits::eHostCoherent
-                                   : vk::MemoryPropertyFlagBits::eDeviceLocal;
+    const auto flags = hostVisible
+                           ? vk::MemoryPropertyFlagBits::eHostVisible | vk::MemoryPropertyFlagBits::eHostCoherent
+                           : vk::MemoryPropertyFlagBits::eDeviceLocal;
     // Reading back: cached host memory is much faster to read on discrete GPUs.
-    const auto preferred = hostVisible ? vk::MemoryPropertyFlags(vk::MemoryPropertyFlagBits::eHostCached) : vk::MemoryPropertyFlags();
-    b.memory = vk::raii::DeviceMemory(device, vk::MemoryAllocateInfo(req.size, memoryType(req.memoryTypeBits, flags, preferred)));
+    const auto preferred =
+        hostVisible ? vk::MemoryPropertyFlags(vk::MemoryPropertyFlagBits::eHostCached) : vk::MemoryPropertyFlags();
+    b.memory = vk::raii::DeviceMemory(
+        device, vk::MemoryAllocateInfo(req.size, memoryType(req.memoryTypeBits, flags, preferred)));
     b.buffer.bindMemory(*b.memory, 0);
     if (hostVisible) b.mapped = b.memory.mapMemory(0, VK_WHOLE_SIZE);
     return b;
@@ -260,7 +272,9 @@ Buffer Context::uploadBuffer(const void* bytes, vk::DeviceSize size, vk::BufferU
     Buffer staging = createBuffer(size, vk::BufferUsageFlagBits::eTransferSrc, true);
     std::memcpy(staging.mapped, bytes, size);
     Buffer b = createBuffer(size, usage | vk::BufferUsageFlagBits::eTransferDst, false);
-    submit([&](const vk::raii::CommandBuffer& cmd) { cmd.copyBuffer(*staging.buffer, *b.buffer, vk::BufferCopy(0, 0, size)); });
+    submit([&](const vk::raii::CommandBuffer& cmd) {
+        cmd.copyBuffer(*staging.buffer, *b.buffer, vk::BufferCopy(0, 0, size));
+    });
     return b;
 }
 
@@ -273,18 +287,20 @@ Image Context::createImage(vk::Format format, std::uint32_t width, std::uint32_t
     img.height = height;
     img.layers = layers;
     img.levels = levels;
-    img.image = vk::raii::Image(device, vk::ImageCreateInfo({}, vk::ImageType::e2D, format, vk::Extent3D(width, height, 1),
-                                                            levels, layers, vk::SampleCountFlagBits::e1,
-                                                            vk::ImageTiling::eOptimal, usage));
+    img.image = vk::raii::Image(
+        device, vk::ImageCreateInfo({}, vk::ImageType::e2D, format, vk::Extent3D(width, height, 1), levels, layers,
+                                    vk::SampleCountFlagBits::e1, vk::ImageTiling::eOptimal, usage));
     const auto req = img.image.getMemoryRequirements();
     img.memory = vk::raii::DeviceMemory(
-        device, vk::MemoryAllocateInfo(req.size, memoryType(req.memoryTypeBits, vk::MemoryPropertyFlagBits::eDeviceLocal)));
+        device,
+        vk::MemoryAllocateInfo(req.size, memoryType(req.memoryTypeBits, vk::MemoryPropertyFlagBits::eDeviceLocal)));
     img.image.bindMemory(*img.memory, 0);
-    img.view = vk::raii::ImageView(device, vk::ImageViewCreateInfo({}, *img.image,
-                                                                   layers > 1 || (usage & vk::ImageUsageFlagBits::eSampled)
-                                                                       ? vk::ImageViewType::e2DArray
-                                                                       : vk::ImageViewType::e2D,
-                                                                   format, {}, vk::ImageSubresourceRange(aspect, 0, levels, 0, layers)));
+    img.view = vk::raii::ImageView(
+        device,
+        vk::ImageViewCreateInfo({}, *img.image,
+                                layers > 1 || (usage & vk::ImageUsageFlagBits::eSampled) ? vk::ImageViewType::e2DArray
+                                                                                         : vk::ImageViewType::e2D,
+                                format, {}, vk::ImageSubresourceRange(aspect, 0, levels, 0, layers)));
     return img;
 }
 
@@ -307,8 +323,9 @@ void Context::submit(const std::function<void(const vk::raii::CommandBuffer&)>& 
 
 void Context::requireAttachmentFormat(vk::Format format, bool depth, const std::string& what) const {
     const auto props = physical.getFormatProperties(format);
-    const auto need = (depth ? vk::FormatFeatureFlagBits::eDepthStencilAttachment : vk::FormatFeatureFlagBits::eColorAttachment) |
-                      vk::FormatFeatureFlagBits::eTransferSrc;
+    const auto need =
+        (depth ? vk::FormatFeatureFlagBits::eDepthStencilAttachment : vk::FormatFeatureFlagBits::eColorAttachment) |
+        vk::FormatFeatureFlagBits::eTransferSrc;
     if ((props.optimalTilingFeatures & need) != need)
         throw Error(fmt::format("Vulkan device '{}' cannot render {} as {}", info.name, what, vk::to_string(format)));
 }
@@ -316,7 +333,8 @@ void Context::requireAttachmentFormat(vk::Format format, bool depth, const std::
 void Context::requireImageSize(std::uint32_t width, std::uint32_t height, const std::string& what) const {
     const std::uint32_t limit = std::uint32_t(info.maxImageDimension2D);
     if (width > limit || height > limit)
-        throw Error(fmt::format("{} {}x{} exceeds the device's limit of {} pixels per side", what, width, height, limit));
+        throw Error(
+            fmt::format("{} {}x{} exceeds the device's limit of {} pixels per side", what, width, height, limit));
 }
 
 Recording::Recording(Context& ctx, const std::function<void(const vk::raii::CommandBuffer&)>& record)

@@ -10,7 +10,8 @@ GpuTimer::GpuTimer(const Context& ctx, std::uint32_t intervals)
 
 void GpuTimer::reset(const vk::raii::CommandBuffer& cmd) const { cmd.resetQueryPool(*pool_, 0, 2 * intervals_); }
 
-void GpuTimer::begin(const vk::raii::CommandBuffer& cmd, std::uint32_t interval, vk::PipelineStageFlagBits stage) const {
+void GpuTimer::begin(const vk::raii::CommandBuffer& cmd, std::uint32_t interval,
+                     vk::PipelineStageFlagBits stage) const {
     cmd.writeTimestamp(stage, *pool_, 2 * interval);
 }
 
@@ -21,9 +22,9 @@ void GpuTimer::end(const vk::raii::CommandBuffer& cmd, std::uint32_t interval, v
 std::vector<double> GpuTimer::milliseconds() const {
     std::vector<double> ms(intervals_, 0.0);
     if (periodNs_ <= 0) return ms;
-    const auto [status, ticks] =
-        pool_.getResults<std::uint64_t>(0, 2 * intervals_, 2 * intervals_ * sizeof(std::uint64_t), sizeof(std::uint64_t),
-                                        vk::QueryResultFlagBits::e64 | vk::QueryResultFlagBits::eWait);
+    const auto [status, ticks] = pool_.getResults<std::uint64_t>(
+        0, 2 * intervals_, 2 * intervals_ * sizeof(std::uint64_t), sizeof(std::uint64_t),
+        vk::QueryResultFlagBits::e64 | vk::QueryResultFlagBits::eWait);
     if (status != vk::Result::eSuccess) return ms;
     for (std::uint32_t i = 0; i < intervals_; ++i) ms[i] = double(ticks[2 * i + 1] - ticks[2 * i]) * periodNs_ * 1e-6;
     return ms;

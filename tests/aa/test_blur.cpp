@@ -13,8 +13,8 @@ TEST(Blur, SinglePixelSpreadsWithGaussianWeights) {
     const auto out = aa::blur(img.view());
     // Weights from the spec: 1, w1 = exp(-1/(2*0.36)) = 0.2493522, w1^2, normalised by their sum.
     const double w1 = 0.2493522, sum = 1 + 4 * w1 + 4 * w1 * w1;
-    EXPECT_EQ(out(2, 2).r, int(std::lround(255 / sum)));      // 127.8 -> 128
-    EXPECT_EQ(out(1, 2).r, int(std::lround(255 * w1 / sum)));  // 31.9 -> 32
+    EXPECT_EQ(out(2, 2).r, int(std::lround(255 / sum)));            // 127.8 -> 128
+    EXPECT_EQ(out(1, 2).r, int(std::lround(255 * w1 / sum)));       // 31.9 -> 32
     EXPECT_EQ(out(1, 1).r, int(std::lround(255 * w1 * w1 / sum)));  // 7.9 -> 8
     EXPECT_EQ(out(0, 0).r, 0);
     EXPECT_EQ(out(2, 2).a, 255);

@@ -2,9 +2,9 @@
 
 #include <set>
 
+#include "src/aa/ddaa_kernel.hpp"
 #include "ssfx/aa/ddaa.hpp"
 #include "ssfx/aa/fxaa.hpp"
-#include "src/aa/ddaa_kernel.hpp"
 #include "tests/support/test_support.hpp"
 
 using namespace ssfx;

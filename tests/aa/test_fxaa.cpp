@@ -1,8 +1,8 @@
 #include <gtest/gtest.h>
 
+#include "src/aa/luma_planes.hpp"
 #include "ssfx/aa/ddaa.hpp"
 #include "ssfx/aa/fxaa.hpp"
-#include "src/aa/luma_planes.hpp"
 #include "tests/support/test_support.hpp"
 
 using namespace ssfx;
@@ -22,7 +22,7 @@ ImageRgba8 edgeEndingAt(int start) {
 // pixels away is found by the same read (6.5) and gives the same result, while ddaa2,
 // which steps one pixel at a time, tells them apart (DDAA paper section 2.4).
 TEST(Fxaa3d, PixelSkippingCannotTellEdgeEndsSixAndSevenApart) {
-    const int px = 40, py = 8;  // black pixel under the edge
+    const int px = 40, py = 8;                                      // black pixel under the edge
     const auto a = edgeEndingAt(px - 5), b = edgeEndingAt(px - 6);  // first white column 6 / 7 px away
     const auto fa = aa::fxaa3d(a.view()), fb = aa::fxaa3d(b.view());
     EXPECT_EQ(fa(px, py), fb(px, py));

@@ -12,8 +12,8 @@ using namespace ssfx;
 TEST(Registry, ListsTheSpecMethodsInOrderWithUniqueIds) {
     std::vector<std::string> ids;
     for (const auto& m : methods()) ids.emplace_back(m.id);
-    const std::vector<std::string> spec = {"noaa",   "blur",   "fxaa3c", "fxaa3d", "ddaa1",
-                                           "ddaa2",  "ssaax2", "ssaax4", "ddaa2p"};
+    const std::vector<std::string> spec = {"noaa",  "blur",   "fxaa3c", "fxaa3d", "ddaa1",
+                                           "ddaa2", "ssaax2", "ssaax4", "ddaa2p"};
     EXPECT_EQ(ids, spec);
     EXPECT_EQ(std::set<std::string>(ids.begin(), ids.end()).size(), ids.size());
     EXPECT_EQ(findMethod("nope"), nullptr);

@@ -40,7 +40,7 @@ TEST(Resolve, SsaaOfAVerticalStepIsSymmetric) {
     for (const auto& out : {aa::ssaax2(img.view()), aa::downscaleMitchell(img.view(), 2)}) {
         ASSERT_EQ(out.width(), 4);
         EXPECT_NEAR(out(1, 0).r + out(2, 0).r, 255, 1);
-        EXPECT_LT(out(1, 0).r, 40);   // mostly black, with some white from the kernel
+        EXPECT_LT(out(1, 0).r, 40);  // mostly black, with some white from the kernel
         EXPECT_GT(out(2, 0).r, 215);
     }
 }

@@ -27,9 +27,9 @@ TEST(Raytraced, MatchesAQuadratureOfTheObscuranceIntegral) {
     int checked = 0;
     for (int y = h / 2; y < h; ++y) {
         const Vec3d dir = primaryRay(proj, 16.5f, float(y) + 0.5f);
-        const double t = -1.0 / dir.y;  // the floor y = -1
+        const double t = -1.0 / dir.y;                    // the floor y = -1
         if (!(dir.y < 0) || t * -dir.z > 4.99) continue;  // only floor pixels
-        const double delta = 5.0 - t * -dir.z;           // distance to the wall z = -5
+        const double delta = 5.0 - t * -dir.z;            // distance to the wall z = -5
         const int nt = 400, np = 800;
         double occ = 0;
         for (int i = 0; i < nt; ++i)

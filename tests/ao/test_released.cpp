@@ -65,7 +65,8 @@ TEST(Released, ParametersByNameAndTheirChecks) {
     EXPECT_THROW(setParam(p, "spinInFloat", 0.5), Error);  // a flag is 0 or 1
     // Integers are whole numbers in range: never rounded, truncated or wrapped.
     for (double bad : {10.4, double(NAN), 4294967297.0, -0.5})
-        for (const char* name : {"numSamples", "guardBand", "blurRadius", "logQ"}) EXPECT_THROW(setParam(p, name, bad), Error) << name << " " << bad;
+        for (const char* name : {"numSamples", "guardBand", "blurRadius", "logQ"})
+            EXPECT_THROW(setParam(p, name, bad), Error) << name << " " << bad;
     AlchemyParams ap;
     EXPECT_THROW(setParam(ap, "numSamples", 12.5), Error);
     setParam(ap, "numSamples", 13);
@@ -240,6 +241,7 @@ TEST(Released, VectorKernelMatchesTheScalarReferenceInTheReleasedConfiguration) 
     paper.guardBand = 16;
     const ImageF b = sao(big.depth.view(), cam, paper);
     double diff = 0;
-    for (std::size_t i = 0; i < a.pixels().size(); ++i) diff = std::max(diff, double(std::abs(a.pixels()[i] - b.pixels()[i])));
+    for (std::size_t i = 0; i < a.pixels().size(); ++i)
+        diff = std::max(diff, double(std::abs(a.pixels()[i] - b.pixels()[i])));
     EXPECT_GT(diff, 0.05);
 }

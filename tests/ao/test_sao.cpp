@@ -222,7 +222,8 @@ TEST(Sao, PackedBlurInputByHandAndItsEffect) {
     p.packBlurInput = true;
     const ImageF b = sao(geo.depth.view(), cam, p);
     double mx = 0;
-    for (std::size_t i = 0; i < a.pixels().size(); ++i) mx = std::max(mx, double(std::abs(a.pixels()[i] - b.pixels()[i])));
+    for (std::size_t i = 0; i < a.pixels().size(); ++i)
+        mx = std::max(mx, double(std::abs(a.pixels()[i] - b.pixels()[i])));
     EXPECT_GT(mx, 0.0);
     EXPECT_LT(mx, 0.02);
 }
@@ -277,8 +278,8 @@ TEST(Sao, BlurPassIsThePerPixelFormula) {
                             ws += wt;
                         }
                         const float expect = std::isinf(zc) ? 1.0f : s / ws;
-                        ASSERT_EQ(out(i, j), expect) << "pixel " << i << "," << j << " radius " << radius << " k "
-                                                      << k << (horizontal ? " horizontal" : " vertical");
+                        ASSERT_EQ(out(i, j), expect) << "pixel " << i << "," << j << " radius " << radius << " k " << k
+                                                     << (horizontal ? " horizontal" : " vertical");
                     }
             }
 }
@@ -305,8 +306,10 @@ TEST(Sao, QuadBilateralAveragesPairsOfTheBufferGrid) {
         }
         quadBilateral(in.a, in.z.view(), r, 0.01f, Exec{3});
         EXPECT_EQ(in.a, expect) << r.x0 << "," << r.y0 << " " << r.width << "x" << r.height;
-        if (r.width > 1) EXPECT_NE(in.a, blurInput(w, h, r, 11).a);  // it did average something
-        else EXPECT_EQ(in.a, blurInput(w, h, r, 11).a);              // a lone pixel has no partner
+        if (r.width > 1)
+            EXPECT_NE(in.a, blurInput(w, h, r, 11).a);  // it did average something
+        else
+            EXPECT_EQ(in.a, blurInput(w, h, r, 11).a);  // a lone pixel has no partner
     }
 }
 

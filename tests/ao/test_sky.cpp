@@ -9,8 +9,8 @@
 #include "ssfx/ao/depth.hpp"
 #include "ssfx/ao/raytraced.hpp"
 #include "ssfx/ao/sao.hpp"
-#include "ssfx/scene/analytic.hpp"
 #include "ssfx/io/exr.hpp"
+#include "ssfx/scene/analytic.hpp"
 
 using namespace ssfx;
 using namespace ssfx::ao;
@@ -83,7 +83,8 @@ TEST(Sky, NothingDrawnStaysOneWithAFiniteFarPlaneInEveryFormat) {
                     if (d(x, y) != 1.0f) continue;
                     ++skyPixels;
                     ASSERT_EQ(results[k][0](x - g, y - g), 1.0f) << "sao, far " << cam.zFar << ", " << x << "," << y;
-                    ASSERT_EQ(results[k][1](x - g, y - g), 1.0f) << "alchemy, far " << cam.zFar << ", " << x << "," << y;
+                    ASSERT_EQ(results[k][1](x - g, y - g), 1.0f)
+                        << "alchemy, far " << cam.zFar << ", " << x << "," << y;
                 }
         }
         EXPECT_GT(skyPixels, 2000);

@@ -29,7 +29,12 @@ TEST(Isolate, ReturnsTheChildsBytes) {
     EXPECT_TRUE(runIsolated([] { return std::vector<std::uint8_t>(); }, "x", "parser").empty());
     // The child's memory is its own: what it changes stays there.
     int counter = 1;
-    runIsolated([&] { counter = 2; return std::vector<std::uint8_t>{1}; }, "x", "parser");
+    runIsolated(
+        [&] {
+            counter = 2;
+            return std::vector<std::uint8_t>{1};
+        },
+        "x", "parser");
     EXPECT_EQ(counter, 1);
 }
 

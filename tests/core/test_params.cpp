@@ -48,7 +48,8 @@ TEST(ParamTables, EveryRegistryMethodUsesItsTable) {
             s.params = {{std::string(row.name), row.max + 1}};
             EXPECT_THROW(m.run(in.view(), s, Exec{1}), Error) << m.id << " " << row.name;
             s.params = {{std::string(row.name), row.defaultValue()}};
-            EXPECT_EQ(m.run(in.view(), s, Exec{1}), m.run(in.view(), MethodSettings{}, Exec{1})) << m.id << " " << row.name;
+            EXPECT_EQ(m.run(in.view(), s, Exec{1}), m.run(in.view(), MethodSettings{}, Exec{1}))
+                << m.id << " " << row.name;
         }
 }
 
@@ -56,7 +57,8 @@ TEST(ParamTables, Ao) {
     checkParamTable<ao::SaoParams>(
         ao::kSaoParams, "sao", [](const ao::SaoParams& p) { ao::validate(p); },
         [](ao::SaoParams& p, std::string_view row) { p.packBlurInput = p.packBlurInput || row == "releasedPacking"; });
-    checkParamTable<ao::AlchemyParams>(ao::kAlchemyParams, "alchemy", [](const ao::AlchemyParams& p) { ao::validate(p); });
+    checkParamTable<ao::AlchemyParams>(ao::kAlchemyParams, "alchemy",
+                                       [](const ao::AlchemyParams& p) { ao::validate(p); });
     checkParamTable<ao::RaytracedParams>(ao::kRaytracedParams, "raytraced",
                                          [](const ao::RaytracedParams& p) { ao::validate(p); });
 }
@@ -65,7 +67,8 @@ TEST(Params, ParsingAndMessages) {
     const ParamInfo& rounds = findParam(aa::kDdaa2Params, "ddaa2", "searchRounds");
     EXPECT_EQ(parseParamValue(rounds, "+3", "ddaa2"), 3.0);
     EXPECT_EQ(parseParamValue(rounds, "1e0", "ddaa2"), 1.0);
-    for (const char* bad : {"", "3x", "0x10", "three", " 3"}) EXPECT_THROW(parseParamValue(rounds, bad, "ddaa2"), Error) << bad;
+    for (const char* bad : {"", "3x", "0x10", "three", " 3"})
+        EXPECT_THROW(parseParamValue(rounds, bad, "ddaa2"), Error) << bad;
     aa::Ddaa2Params p;
     EXPECT_EQ(errorOf([&] { setParam(aa::kDdaa2Params, &p, "ddaa2", "searchRounds", 2.5); }),
               "ddaa2: searchRounds = 2.5 is not an integer in [1, 5]");
@@ -85,7 +88,8 @@ TEST(Params, ParsingAndMessages) {
               std::string::npos);
     const ParamInfo& pyramid = findParam(ao::kSaoParams, "sao", "usePyramid");
     EXPECT_EQ(parseParamValue(pyramid, "false", "sao"), 0.0);
-    EXPECT_EQ(errorOf([&] { setParam(ao::kSaoParams, &s, "sao", "usePyramid", 2); }), "sao: usePyramid = 2 is not 0 or 1");
+    EXPECT_EQ(errorOf([&] { setParam(ao::kSaoParams, &s, "sao", "usePyramid", 2); }),
+              "sao: usePyramid = 2 is not 0 or 1");
     // A Real is checked as stored: 1e-300 is 0 in a float, outside radius' (0, 100].
     EXPECT_THROW(setParam(ao::kSaoParams, &s, "sao", "radius", 1e-300), Error);
 }

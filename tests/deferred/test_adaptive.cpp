@@ -5,11 +5,11 @@
 
 #include <cmath>
 
-#include "tests/render/render_fixture.hpp"
 #include "ssfx/core/error.hpp"
 #include "ssfx/deferred/adaptive.hpp"
 #include "ssfx/deferred/registry.hpp"
 #include "ssfx/deferred/sampler.hpp"
+#include "tests/render/render_fixture.hpp"
 #include "tests/support/param_tables.hpp"
 
 namespace ssfx::test {
@@ -87,7 +87,8 @@ TEST(Sampler, ConstantTextureAndAnisotropicFootprints) {
     }
     // Isotropic 2-texel footprint: level 1, where the 2x2 box filter made the stripes grey
     // ((0 + 255 + 0 + 255 + 2) / 4 = 128, rounded as the mip chain rounds).
-    EXPECT_NEAR(textureGrad(t, 1, {0.5f / 16.0f, 0.5f}, {2.0f / 16.0f, 0.0f}, {0.0f, 2.0f / 16.0f}).r, 128.0f / 255.0f, 1e-6f);
+    EXPECT_NEAR(textureGrad(t, 1, {0.5f / 16.0f, 0.5f}, {2.0f / 16.0f, 0.0f}, {0.0f, 2.0f / 16.0f}).r, 128.0f / 255.0f,
+                1e-6f);
     // Repeat addressing.
     EXPECT_NEAR(textureBilinear(t, 1, 0, {1.0f + 1.5f / 16.0f, 0.5f}).r, 1.0f, 1e-6f);
     EXPECT_NEAR(textureBilinear(t, 1, 0, {-1.0f + 0.5f / 16.0f, 0.5f}).r, 0.0f, 1e-6f);
@@ -182,7 +183,8 @@ TEST(Adaptive, BadParametersAreRejected) {
 // the G-buffer refused with an error naming the sample.
 TEST_F(RenderTest, EveryDeferredMethodIsDeterministicAndRefusesBadInput) {
     const scene::Scene scene = scene::cornellBox();
-    const scene::GBuffer g = renderer().renderGBuffer(scene, scene.views.at(0).second, 40, 70, 2);  // several row blocks
+    const scene::GBuffer g =
+        renderer().renderGBuffer(scene, scene.views.at(0).second, 40, 70, 2);  // several row blocks
     for (const deferred::DeferredMethodInfo& m : deferred::deferredMethods()) {
         SCOPED_TRACE(std::string(m.id));
         const deferred::DeferredParams p = m.defaults();
@@ -192,7 +194,8 @@ TEST_F(RenderTest, EveryDeferredMethodIsDeterministicAndRefusesBadInput) {
         EXPECT_GT(one.shaded, 0);
         for (const ParamInfo& row : m.params) {
             deferred::DeferredParams q = m.defaults();
-            EXPECT_THROW(deferred::setParam(m, q, row.name, row.max + std::max(1.0, row.max * 1e-3)), Error) << row.name;
+            EXPECT_THROW(deferred::setParam(m, q, row.name, row.max + std::max(1.0, row.max * 1e-3)), Error)
+                << row.name;
             EXPECT_THROW(deferred::setParam(m, q, row.name, std::nan("")), Error) << row.name;
         }
         for (int plane = 0; plane < 3; ++plane) {

@@ -34,7 +34,8 @@ std::vector<std::uint8_t> validPng() { return io::encodePng(test::noise(8, 8, 2)
 // Rewrites IHDR fields (width, height, bit depth) and fixes its CRC.
 std::vector<std::uint8_t> patchIhdr(std::uint32_t w, std::uint32_t h, std::uint8_t depth) {
     auto b = validPng();
-    for (int i = 0; i < 4; ++i) b[16 + i] = std::uint8_t(w >> (24 - 8 * i)), b[20 + i] = std::uint8_t(h >> (24 - 8 * i));
+    for (int i = 0; i < 4; ++i)
+        b[16 + i] = std::uint8_t(w >> (24 - 8 * i)), b[20 + i] = std::uint8_t(h >> (24 - 8 * i));
     b[24] = depth;
     const uLong crc = crc32(crc32(0, Z_NULL, 0), &b[12], 17);
     for (int i = 0; i < 4; ++i) b[29 + i] = std::uint8_t(crc >> (24 - 8 * i));
@@ -155,8 +156,7 @@ TEST(Errors, WrongSizesAndAliasing) {
     const auto odd = test::noise(7, 8, 1);
     expectError([&] { aa::ssaax2(odd.view()); }, {"ssaax2", "7x8", "divisible by 2"});
     const auto six = test::noise(6, 8, 1);
-    expectError([&] { aa::ssaax4(six.view()); },
-                {"ssaax4", "divisible by 4"});
+    expectError([&] { aa::ssaax4(six.view()); }, {"ssaax4", "divisible by 4"});
     expectError([&] { aa::ddaa2p(odd.view()); }, {"ddaa2p", "2x render"});
     expectError([&] { aa::resampleMitchell(img.view(), 0); }, {"factor 0"});
 }

@@ -46,15 +46,15 @@ TEST(AoExperiments, QuickRunWritesItsFiles) {
     o.quick = true;
     const eval::Section section = eval::runAoExperiments(o);
     const std::string md = eval::markdown(section);
-    for (const char* f : {"data/ao.json", "data/ao.md", "plots/ao_z_precision.png", "plots/ao_radius_scaling.png",
-                          "images/ao_room_raytraced.png", "images/ao_room_sao_rotated_grid.png",
-                          "images/ao_corner_sao_min_diff.png"})
+    for (const char* f :
+         {"data/ao.json", "data/ao.md", "plots/ao_z_precision.png", "plots/ao_radius_scaling.png",
+          "images/ao_room_raytraced.png", "images/ao_room_sao_rotated_grid.png", "images/ao_corner_sao_min_diff.png"})
         EXPECT_TRUE(std::filesystem::exists(dir + "/" + f)) << f;
     std::ifstream in(dir + "/data/ao.json");
     std::stringstream ss;
     ss << in.rdbuf();
-    for (const char* key : {"\"z_precision\"", "\"normal_precision\"", "\"accuracy\"", "\"radius_scaling\"",
-                            "\"pass_times\""})
+    for (const char* key :
+         {"\"z_precision\"", "\"normal_precision\"", "\"accuracy\"", "\"radius_scaling\"", "\"pass_times\""})
         EXPECT_NE(ss.str().find(key), std::string::npos) << key;
     EXPECT_NE(md.find("Normal precision"), std::string::npos);
     // data/ao.md is the section's Markdown; every figure the section shows exists.

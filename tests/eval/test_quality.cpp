@@ -54,7 +54,7 @@ TEST(Quality, FindsRenderSetsAndRejectsBadDirectories) {
     const auto img = test::solid(8, 8, {10, 20, 30, 255}), img8 = test::solid(64, 64, {10, 20, 30, 255});
     io::writePng(dir + "/b.png", img.view());
     io::writePng(dir + "/bx8.png", img8.view());
-    io::writePng(dir + "/a.png", img.view());      // no a x8: not a set
+    io::writePng(dir + "/a.png", img.view());       // no a x8: not a set
     io::writePng(dir + "/b_blur.png", img.view());  // an output, not a set
     EXPECT_EQ(eval::findRenderSets(dir), std::vector<std::string>{"b"});
     // A flat image: every method leaves it flat, so the x8 upscale equals the x8 render.

@@ -1,8 +1,8 @@
 // Temporal evaluation that streams its frames: the same figures as the in-memory
 // computation, --source given on outputs the test writes, and an animation larger than
 // the whole-file reader's all-frames limit scored by the CLI in about one x8 frame of memory.
-#include <gtest/gtest.h>
 #include <fcntl.h>
+#include <gtest/gtest.h>
 #include <spawn.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -93,7 +93,8 @@ TEST(TemporalStream, ApngFramesGiveTheFiguresOfTheDrawnFramesAndOfANaiveComputat
     writeAnimation(dir, "bar", w, h, frames, {1, 2, 4, 8});
     eval::TemporalOptions o;
     o.methods = {"noaa", "ddaa2", "ssaax2", "ssaax4"};
-    const auto drawn = eval::evaluateTemporal(frames, [&](int t, int s) { return barFrame(w, h, t, s); }, o);
+    const auto drawn = eval::evaluateTemporal(
+        frames, [&](int t, int s) { return barFrame(w, h, t, s); }, o);
     const auto files = eval::apngFrames(dir.string(), "bar");
     const auto streamed = eval::evaluateTemporal(*files, o);
     ASSERT_EQ(streamed.results.size(), 4u);
@@ -160,22 +161,25 @@ TEST(TemporalStream, GivenOutputsAreScoredAsTheComputedOnes) {
     for (int t = 0; t < frames - 1; ++t) shortAnim.frames.push_back({computed.outputs[0][std::size_t(t)], 1, 25});
     io::writeApng((dir / "bar_blur.png").string(), shortAnim);
     try {
-        eval::evaluateTemporalGiven(*eval::apngFrames(dir.string(), "bar"), {{"blur", (dir / "bar_blur.png").string()}}, o);
+        eval::evaluateTemporalGiven(*eval::apngFrames(dir.string(), "bar"), {{"blur", (dir / "bar_blur.png").string()}},
+                                    o);
         ADD_FAILURE() << "no error";
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find("4 frames, the animation has 5"), std::string::npos) << e.what();
     }
-    EXPECT_THROW(eval::evaluateTemporalGiven(*eval::apngFrames(dir.string(), "bar"), {{"x", (dir / "nope.png").string()}}, o),
-                 Error);
+    EXPECT_THROW(
+        eval::evaluateTemporalGiven(*eval::apngFrames(dir.string(), "bar"), {{"x", (dir / "nope.png").string()}}, o),
+        Error);
     EXPECT_THROW(eval::apngFrames((dir / "nothing").string(), "bar"), Error);  // no x8 file
 #ifdef SSFX_CLI
     // The CLI: --source given finds bar_METHOD.png for the methods asked for and prints the
     // same figures; user mistakes exit 2 with a message.
     fs::remove(dir / "bar_blur.png");
     const std::string json = (dir / "given.json").string();
-    EXPECT_EQ(runCli({"eval", "temporal", "--dir", dir.string(), "--image", "bar", "--source", "given", "--json", json},
-                     dir).first,
-              0)
+    EXPECT_EQ(
+        runCli({"eval", "temporal", "--dir", dir.string(), "--image", "bar", "--source", "given", "--json", json}, dir)
+            .first,
+        0)
         << slurp(dir / "cli.err");
     std::ifstream in(json);
     const auto j = nlohmann::json::parse(in);
@@ -186,11 +190,11 @@ TEST(TemporalStream, GivenOutputsAreScoredAsTheComputedOnes) {
     EXPECT_NE(slurp(dir / "cli.err").find("--dir"), std::string::npos);
     EXPECT_EQ(runCli({"eval", "temporal", "--dir", dir.string(), "--image", "nope"}, dir).first, 2);
     EXPECT_NE(slurp(dir / "cli.err").find("nopex8.png"), std::string::npos);
-    EXPECT_EQ(runCli({"eval", "temporal", "--dir", dir.string(), "--image", "bar", "--source", "given", "--methods",
-                      "blur"},
-                     dir)
-                  .first,
-              2);
+    EXPECT_EQ(
+        runCli({"eval", "temporal", "--dir", dir.string(), "--image", "bar", "--source", "given", "--methods", "blur"},
+               dir)
+            .first,
+        2);
     EXPECT_NE(slurp(dir / "cli.err").find("bar_blur.png"), std::string::npos);
 #endif
 }

@@ -170,13 +170,16 @@ TEST(BoundedRead, TheSignatureIsCheckedFirstAndTheCapStopsAnEndlessInput) {
             ::close(fd);  // the reader closed its end: EPIPE
         });
         try {
-            if (std::string(kind) == "png") io::readPng(fifo.string());
-            else io::readFile(fifo.string(), io::kMaxJsonFileBytes, "JSON");
+            if (std::string(kind) == "png")
+                io::readPng(fifo.string());
+            else
+                io::readFile(fifo.string(), io::kMaxJsonFileBytes, "JSON");
             ADD_FAILURE() << "no error for " << kind;
         } catch (const Error& e) {
             const std::string m = e.what();
             EXPECT_NE(m.find(fifo.string()), std::string::npos) << m;
-            EXPECT_NE(m.find(std::string(kind) == "png" ? "wrong signature" : "16777216 bytes"), std::string::npos) << m;
+            EXPECT_NE(m.find(std::string(kind) == "png" ? "wrong signature" : "16777216 bytes"), std::string::npos)
+                << m;
         }
         writer.join();
     }

@@ -54,7 +54,7 @@ TEST(Exr, AHeaderAttributeClaimingMoreThanTheFileIsRefusedBeforeOpenExrAllocates
     const auto at = std::search(bytes.begin(), bytes.end(), attr.begin(), attr.end());
     ASSERT_NE(at, bytes.end());
     std::size_t p = std::size_t(at - bytes.begin()) + attr.size() + 1;  // past "compression\0"
-    while (bytes[p] != 0) ++p;                                             // past the type name
+    while (bytes[p] != 0) ++p;                                          // past the type name
     ++p;
     for (int i = 0; i < 4; ++i) bytes[p + std::size_t(i)] = i == 3 ? 0x7F : 0xFF;  // int32 0x7FFFFFFF
     try {
@@ -80,9 +80,9 @@ TEST(Camera, JsonRoundTripAndErrors) {
     EXPECT_EQ(back.zFar, -300);
     EXPECT_TRUE(std::isinf(io::parseCameraJson(R"({"fov_y_deg": 60, "z_near": -0.1, "z_far": null})", "c").zFar));
     EXPECT_TRUE(std::isinf(io::parseCameraJson(R"({"fov_y_deg": 60, "z_near": -0.1, "z_far": "-inf"})", "c").zFar));
-    for (const char* bad : {"[1]", "{", R"({"fov": 60})", R"({"z_near": 0.1})", R"({"fov_y_deg": 200})",
-                            R"({"z_near": "a"})", R"({"z_near": -1, "z_far": -0.5})", "{}",
-                            R"({"fov_y_deg": 60, "z_near": -0.1})"})
+    for (const char* bad :
+         {"[1]", "{", R"({"fov": 60})", R"({"z_near": 0.1})", R"({"fov_y_deg": 200})", R"({"z_near": "a"})",
+          R"({"z_near": -1, "z_far": -0.5})", "{}", R"({"fov_y_deg": 60, "z_near": -0.1})"})
         EXPECT_THROW(io::parseCameraJson(bad, "c.json"), Error) << bad;
     // Messages name the file and the key as the file spells it.
     auto message = [](const char* text) {

@@ -3,8 +3,8 @@
 
 #include <filesystem>
 
-#include "tests/io/png_writer.hpp"
 #include "ssfx/io/png.hpp"
+#include "tests/io/png_writer.hpp"
 #include "tests/support/test_support.hpp"
 
 using namespace ssfx;
@@ -41,8 +41,8 @@ TEST(Png, GreyAlphaKeepsAlpha) {
 
 TEST(Png, SixteenBitIsScaledWithRounding) {
     // v8 = round(v16 * 255 / 65535): 0x8080 -> 128, 0x7F7F -> 127, 0xFFFF -> 255, 0x0081 -> 1 (0.502).
-    const auto bytes = writeRawPng({1, 1, 16, PNG_COLOR_TYPE_RGB_ALPHA,
-                                    {0x80, 0x80, 0x7F, 0x7F, 0x00, 0x81, 0xFF, 0xFF}});
+    const auto bytes =
+        writeRawPng({1, 1, 16, PNG_COLOR_TYPE_RGB_ALPHA, {0x80, 0x80, 0x7F, 0x7F, 0x00, 0x81, 0xFF, 0xFF}});
     EXPECT_EQ(io::decodePng(bytes, "rgba16")(0, 0), (Rgba8{128, 127, 1, 255}));
 }
 

@@ -4,11 +4,11 @@
 #include <gtest/gtest.h>
 #include <hwy/targets.h>
 
+#include "src/aa/ppaa_hooks.hpp"
 #include "ssfx/aa/ddaa.hpp"
 #include "ssfx/aa/fxaa.hpp"
 #include "ssfx/eval/synthetic.hpp"
 #include "ssfx/registry.hpp"
-#include "src/aa/ppaa_hooks.hpp"
 #include "tests/support/test_support.hpp"
 
 using namespace ssfx;

@@ -13,7 +13,8 @@ namespace ssfx::test {
 class RenderTest : public ::testing::Test {
 protected:
     static render::Renderer& renderer() {
-        static std::unique_ptr<render::Renderer> r = std::make_unique<render::Renderer>(render::RendererOptions{"", true});
+        static std::unique_ptr<render::Renderer> r =
+            std::make_unique<render::Renderer>(render::RendererOptions{"", true});
         return *r;
     }
     void TearDown() override {

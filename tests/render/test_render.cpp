@@ -5,10 +5,10 @@
 #include <cmath>
 #include <numbers>
 
-#include "tests/render/render_fixture.hpp"
 #include "ssfx/ao/depth.hpp"
 #include "ssfx/ao/sao.hpp"
 #include "ssfx/core/error.hpp"
+#include "tests/render/render_fixture.hpp"
 
 namespace ssfx::test {
 namespace {
@@ -56,7 +56,8 @@ Scene sphereScene(glm::vec3 centre, float radius, int segments) {
     for (int j = 0; j <= rings; ++j)
         for (int i = 0; i <= segments; ++i) {
             const double th = std::numbers::pi * j / rings, ph = 2 * std::numbers::pi * i / segments;
-            const glm::vec3 n(float(std::sin(th) * std::cos(ph)), float(std::cos(th)), float(std::sin(th) * std::sin(ph)));
+            const glm::vec3 n(float(std::sin(th) * std::cos(ph)), float(std::cos(th)),
+                              float(std::sin(th) * std::sin(ph)));
             s.vertices.push_back({centre + radius * n, n, glm::vec2(float(i) / segments, float(j) / rings), 0});
         }
     for (int j = 0; j < rings; ++j)
@@ -187,8 +188,10 @@ TEST_F(RenderTest, GuardBandWidensTheViewWithoutMovingTheImage) {
             const float a = plain.depth(x, y), b = guarded.depth(x + 12, y + 12);
             // The two projections differ in float rounding only: depth within a few ulps, and
             // coverage can flip only on silhouette pixels.
-            if (a == 1.0f || b == 1.0f) differ += a != b;
-            else EXPECT_NEAR(a, b, 4e-7) << x << "," << y;
+            if (a == 1.0f || b == 1.0f)
+                differ += a != b;
+            else
+                EXPECT_NEAR(a, b, 4e-7) << x << "," << y;
         }
     EXPECT_LE(differ, 4);
 }
@@ -244,8 +247,10 @@ TEST_F(RenderTest, SurfacesAreTwoSidedWithNormalsTowardsTheCamera) {
         s.name = "quad";
         s.materials.push_back({"m", glm::vec3(1.0f), -1});
         const glm::vec3 a(-1, -1, -2), b(1, -1, -2), c(1, 1, -2), d(-1, 1, -2);
-        if (facing > 0) addQuad(s, a, b, c, d, {0, 0, 1});
-        else addQuad(s, a, d, c, b, {0, 0, -1});
+        if (facing > 0)
+            addQuad(s, a, b, c, d, {0, 0, 1});
+        else
+            addQuad(s, a, d, c, b, {0, 0, -1});
         const auto g = renderer().renderGBuffer(s, originView(), 16, 16, 1);
         const glm::vec3 n = g.normal[g.index(8, 8)];
         EXPECT_NEAR(n.z, 1.0f, 1e-4f) << "facing " << facing;

@@ -185,22 +185,30 @@ TEST(RenderImport, SceneFileNamesModelLightsAndViews) {
 
 TEST(RenderImport, BadInputsGiveClearErrors) {
     const fs::path dir = scratch("bad");
-    EXPECT_NE(errorOf([&] { scene::loadScene((dir / "missing.obj").string()); }).find("no such file"), std::string::npos);
-    EXPECT_NE(errorOf([&] { scene::loadScene("nonexistent-builtin"); }).find("not a built-in scene"), std::string::npos);
+    EXPECT_NE(errorOf([&] { scene::loadScene((dir / "missing.obj").string()); }).find("no such file"),
+              std::string::npos);
+    EXPECT_NE(errorOf([&] { scene::loadScene("nonexistent-builtin"); }).find("not a built-in scene"),
+              std::string::npos);
     writeText(dir / "corrupt.gltf", "{\"asset\": {\"version\": \"2.0\"}, \"meshes\": [ {\"primitives\": [");
-    EXPECT_NE(errorOf([&] { scene::importModel((dir / "corrupt.gltf").string()); }).find("corrupt.gltf"), std::string::npos);
+    EXPECT_NE(errorOf([&] { scene::importModel((dir / "corrupt.gltf").string()); }).find("corrupt.gltf"),
+              std::string::npos);
     writeText(dir / "garbage.obj", "this is not an OBJ file\n\x01\x02\x03");
-    EXPECT_NE(errorOf([&] { scene::importModel((dir / "garbage.obj").string()); }).find("garbage.obj"), std::string::npos);
+    EXPECT_NE(errorOf([&] { scene::importModel((dir / "garbage.obj").string()); }).find("garbage.obj"),
+              std::string::npos);
     writeText(dir / "notex.mtl", "newmtl t\nmap_Kd missing.png\n");
     writeText(dir / "notex.obj", "mtllib notex.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl t\nf 1 2 3\n");
-    EXPECT_NE(errorOf([&] { scene::importModel((dir / "notex.obj").string()); }).find("missing.png"), std::string::npos);
+    EXPECT_NE(errorOf([&] { scene::importModel((dir / "notex.obj").string()); }).find("missing.png"),
+              std::string::npos);
     writeText(dir / "badtex.png", "not a png");
     writeText(dir / "badtex.mtl", "newmtl t\nmap_Kd badtex.png\n");
     writeText(dir / "badtex.obj", "mtllib badtex.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl t\nf 1 2 3\n");
-    EXPECT_NE(errorOf([&] { scene::importModel((dir / "badtex.obj").string()); }).find("cannot decode"), std::string::npos);
-    EXPECT_NE(errorOf([&] { scene::importModel((dir / "badtex.obj").string(), -1.0); }).find("scale"), std::string::npos);
+    EXPECT_NE(errorOf([&] { scene::importModel((dir / "badtex.obj").string()); }).find("cannot decode"),
+              std::string::npos);
+    EXPECT_NE(errorOf([&] { scene::importModel((dir / "badtex.obj").string(), -1.0); }).find("scale"),
+              std::string::npos);
     writeText(dir / "s1.json", R"({"model": "tri.obj", "camera": 1})");
-    EXPECT_NE(errorOf([&] { scene::loadScene((dir / "s1.json").string()); }).find("unknown key 'camera'"), std::string::npos);
+    EXPECT_NE(errorOf([&] { scene::loadScene((dir / "s1.json").string()); }).find("unknown key 'camera'"),
+              std::string::npos);
     writeText(dir / "s2.json", R"({"scale": 1})");
     EXPECT_NE(errorOf([&] { scene::loadScene((dir / "s2.json").string()); }).find("'model'"), std::string::npos);
     writeText(dir / "tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
@@ -220,15 +228,19 @@ TEST(RenderImport, BadInputsGiveClearErrors) {
          "/views/v/fov_y_deg"},
         {R"({"model": "tri.obj", "views": {"v": {"eye": [0, 0, 5], "target": [0, 0, 0], "z_far": "inf"}}})",
          "/views/v/z_far"},
-        {R"({"model": "tri.obj", "views": {"v": {"eye": [0, 0, 5], "target": [0, 0, 0], "fov": 60}}})", "unknown key 'fov'"},
-        {R"({"model": "tri.obj", "lights": [{"type": "point", "position": [0, 1, 0], "power": 3}]})", "unknown key 'power'"},
+        {R"({"model": "tri.obj", "views": {"v": {"eye": [0, 0, 5], "target": [0, 0, 0], "fov": 60}}})",
+         "unknown key 'fov'"},
+        {R"({"model": "tri.obj", "lights": [{"type": "point", "position": [0, 1, 0], "power": 3}]})",
+         "unknown key 'power'"},
         // Views are checked on load (the renderer's own checks), not when first rendered.
         {R"({"model": "tri.obj", "views": {"v": {"eye": [0, 0, 5], "target": [0, 0, 0], "fov_y_deg": 200}}})",
          "view 'v': view: fov_y_deg 200"},
         {R"({"model": "tri.obj", "views": {"v": {"eye": [0, 0, 5], "target": [0, 0, 5]}}})", "same point"},
         {R"({"model": "tri.obj", "views": {"v": {"eye": [0, 0, 5], "target": [0, 0, 0], "z_near": 0}}})", "z_near 0"},
-        {R"({"model": "tri.obj", "views": {"v": {"eye": [0, 0, 5], "target": [0, 0, 0], "z_far": 0.05}}})", "z_far 0.05"},
-        {R"({"model": "tri.obj", "views": {"v": {"eye": [0, 0, 1e300], "target": [0, 0, 0]}}})", "'eye' must be finite"},
+        {R"({"model": "tri.obj", "views": {"v": {"eye": [0, 0, 5], "target": [0, 0, 0], "z_far": 0.05}}})",
+         "z_far 0.05"},
+        {R"({"model": "tri.obj", "views": {"v": {"eye": [0, 0, 1e300], "target": [0, 0, 0]}}})",
+         "'eye' must be finite"},
     };
     // A glTF with no meshes: says what is missing (Assimp gives no text of its own).
     writeText(dir / "empty.gltf", R"({"asset": {"version": "2.0"}, "scenes": [{"nodes": []}], "scene": 0})");
@@ -241,7 +253,8 @@ TEST(RenderImport, BadInputsGiveClearErrors) {
         const fs::path file = fs::path(SSFX_SOURCE_DIR) / "fuzz" / "regressions" / crasher;
         const std::string m = errorOf([&] { scene::importModel(file.string()); });
         EXPECT_NE(m.find(std::string("model '") + file.string() + "'"), std::string::npos) << m;
-        EXPECT_TRUE(m.find("stopped abnormally") != std::string::npos || m.find("cannot import") != std::string::npos) << m;
+        EXPECT_TRUE(m.find("stopped abnormally") != std::string::npos || m.find("cannot import") != std::string::npos)
+            << m;
     }
     // The format is the extension's; none, or one that no importer claims, is refused.
     writeText(dir / "tri_noext", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
@@ -251,8 +264,9 @@ TEST(RenderImport, BadInputsGiveClearErrors) {
     EXPECT_NE(errorOf([&] { scene::importModel((dir / "tri.xyzw").string()); }).find("'.xyzw' is not a model format"),
               std::string::npos);
     writeText(dir / "inf.obj", "v 0 0 0\nv 1e39 0 0\nv 0 1 0\nf 1 2 3\n");
-    EXPECT_NE(errorOf([&] { scene::importModel((dir / "inf.obj").string()); }).find("vertex 1 of mesh 0 has a non-finite"),
-              std::string::npos);
+    EXPECT_NE(
+        errorOf([&] { scene::importModel((dir / "inf.obj").string()); }).find("vertex 1 of mesh 0 has a non-finite"),
+        std::string::npos);
     for (const auto& [text, field] : typeErrors) {
         writeText(dir / "s6.json", text);
         const std::string m = errorOf([&] { scene::loadScene((dir / "s6.json").string()); });
@@ -274,7 +288,8 @@ TEST(RenderImport, ModelFromMemory) {
     writeText(dir / "mem.obj", obj);
     const auto fromFile = scene::importModel((dir / "mem.obj").string(), 2.0);
     ASSERT_EQ(fromFile.vertices.size(), s.vertices.size());
-    for (std::size_t i = 0; i < fromFile.vertices.size(); ++i) EXPECT_EQ(fromFile.vertices[i].position, s.vertices[i].position);
+    for (std::size_t i = 0; i < fromFile.vertices.size(); ++i)
+        EXPECT_EQ(fromFile.vertices[i].position, s.vertices[i].position);
     EXPECT_EQ(fromFile.indices, s.indices);
     // An external texture cannot be opened from memory: named, with the reason.
     const std::string textured = R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
@@ -291,7 +306,7 @@ TEST(RenderImport, ModelFromMemory) {
         {"bufferView": 2, "componentType": 5126, "count": 3, "type": "VEC2"}]})";
     const std::string ext = errorOf([&] {
         scene::importModelFromMemory(std::span(reinterpret_cast<const std::uint8_t*>(textured.data()), textured.size()),
-                                      "gltf", "texmem");
+                                     "gltf", "texmem");
     });
     EXPECT_NE(ext.find("model 'texmem'"), std::string::npos) << ext;
     EXPECT_NE(ext.find("far.png"), std::string::npos) << ext;
@@ -299,11 +314,12 @@ TEST(RenderImport, ModelFromMemory) {
     EXPECT_NE(errorOf([&] { scene::importModelFromMemory({}, "obj", "none"); }).find("no bytes"), std::string::npos);
     EXPECT_NE(errorOf([&] { scene::importModelFromMemory(bytes, "../x", "bad"); }).find("file extension"),
               std::string::npos);
-    EXPECT_NE(errorOf([&] { scene::importModelFromMemory(bytes, "obj", "neg", 0.0); }).find("scale"), std::string::npos);
+    EXPECT_NE(errorOf([&] { scene::importModelFromMemory(bytes, "obj", "neg", 0.0); }).find("scale"),
+              std::string::npos);
     const std::string junk = "\x01\x02 not a model";
     EXPECT_NE(errorOf([&] {
-                  scene::importModelFromMemory(std::span(reinterpret_cast<const std::uint8_t*>(junk.data()), junk.size()),
-                                                "gltf", "junk");
+                  scene::importModelFromMemory(
+                      std::span(reinterpret_cast<const std::uint8_t*>(junk.data()), junk.size()), "gltf", "junk");
               }).find("model 'junk'"),
               std::string::npos);
 }
@@ -320,7 +336,7 @@ TEST(RenderImport, SceneTextWithAnyModelLoader) {
     };
     const auto s = scene::parseSceneFile(R"({"model": "m/x.obj", "scale": 0.5,
         "views": {"v": {"eye": [0, 1, 4], "target": [0, 1, 0]}}})",
-                                          "/some/dir/s.json", loader);
+                                         "/some/dir/s.json", loader);
     EXPECT_EQ(fs::path(seen), fs::path("/some/dir/m/x.obj"));
     EXPECT_EQ(seenScale, 0.5);
     EXPECT_EQ(s.name, "s");

@@ -22,7 +22,8 @@ namespace ssfx::test {
 //! `needs` sets, before a row is probed, the other fields that row's rules across fields
 //! depend on (SaoParams::releasedPacking needs packBlurInput), on both structs alike.
 template <class P>
-void checkParamTable(std::span<const ParamInfo> table, std::string_view id, const std::function<void(const P&)>& validate,
+void checkParamTable(std::span<const ParamInfo> table, std::string_view id,
+                     const std::function<void(const P&)>& validate,
                      const std::function<void(P&, std::string_view)>& needs = {}) {
     SCOPED_TRACE(std::string(id));
     ASSERT_FALSE(table.empty());
@@ -35,8 +36,8 @@ void checkParamTable(std::span<const ParamInfo> table, std::string_view id, cons
         EXPECT_FALSE(row.doc.empty());
         EXPECT_LE(row.min, row.max);
         EXPECT_EQ(row.get(&defaults), row.defaultValue());
-        EXPECT_NO_THROW(checkParam(row, row.defaultValue(), id)) << "default " << row.defaultValue() << " outside "
-                                                                   << row.rangeText();
+        EXPECT_NO_THROW(checkParam(row, row.defaultValue(), id))
+            << "default " << row.defaultValue() << " outside " << row.rangeText();
         if (row.kind == ParamKind::Boolean) {
             EXPECT_TRUE(row.min == 0 && row.max == 1);
         }
@@ -45,9 +46,19 @@ void checkParamTable(std::span<const ParamInfo> table, std::string_view id, cons
         }
         const double inf = std::numeric_limits<double>::infinity();
         const double span = std::max(1.0, row.max - row.min);
-        std::vector<double> probes = {row.min, row.max, (row.min + row.max) / 2, row.min - span * 1e-3,
-                                      row.max + span * 1e-3, row.min - 1, row.max + 1, std::nan(""), inf, -inf,
-                                      4294967297.0, -2147483649.0, std::floor(row.min) + 0.5};
+        std::vector<double> probes = {row.min,
+                                      row.max,
+                                      (row.min + row.max) / 2,
+                                      row.min - span * 1e-3,
+                                      row.max + span * 1e-3,
+                                      row.min - 1,
+                                      row.max + 1,
+                                      std::nan(""),
+                                      inf,
+                                      -inf,
+                                      4294967297.0,
+                                      -2147483649.0,
+                                      std::floor(row.min) + 0.5};
         for (const double v : probes) {
             SCOPED_TRACE(v);
             P viaTable = defaults;
@@ -61,10 +72,10 @@ void checkParamTable(std::span<const ParamInfo> table, std::string_view id, cons
             }
             // A library caller can only store what the member's type holds: an integer, a
             // bool or an enum value that is a whole number in range of the type.
-            const bool storable = row.kind == ParamKind::Real ||
-                                  (std::isfinite(v) && v == std::floor(v) && std::abs(v) < 2147483647.0 &&
-                                   (row.kind != ParamKind::Boolean || v == 0 || v == 1) &&
-                                   (row.kind != ParamKind::Choice || (v >= 0 && v < 256)));
+            const bool storable =
+                row.kind == ParamKind::Real || (std::isfinite(v) && v == std::floor(v) && std::abs(v) < 2147483647.0 &&
+                                                (row.kind != ParamKind::Boolean || v == 0 || v == 1) &&
+                                                (row.kind != ParamKind::Choice || (v >= 0 && v < 256)));
             if (!storable) {
                 EXPECT_FALSE(tableOk) << "setParam took a value no member can hold";
                 continue;

@@ -17,8 +17,10 @@ ImageRgba8 ascii(const std::vector<std::string>& rows) {
         for (int x = 0; x < img.width(); ++x) {
             const char c = rows[std::size_t(y)].at(std::size_t(x));
             std::uint8_t v = 255;
-            if (c == '#') v = 0;
-            else if (c >= '0' && c <= '9') v = std::uint8_t((c - '0') * 28);
+            if (c == '#')
+                v = 0;
+            else if (c >= '0' && c <= '9')
+                v = std::uint8_t((c - '0') * 28);
             img(x, y) = {v, v, v, 255};
         }
     return img;

@@ -59,7 +59,8 @@ struct AffineRun {
         std::vector<float> values(n);
         for (std::uint32_t i = 0; i < n; ++i) values[i] = float(i % 97) - 40.0f;
         in = ctx.uploadBuffer(values.data(), n * sizeof(float), vk::BufferUsageFlagBits::eStorageBuffer);
-        out = ctx.createBuffer(n * sizeof(float), vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eTransferSrc, false);
+        out = ctx.createBuffer(n * sizeof(float),
+                               vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eTransferSrc, false);
         host = ctx.createBuffer(n * sizeof(float), vk::BufferUsageFlagBits::eTransferDst, true);
         sets.bind(0, 0, in);
         sets.bind(0, 1, out);
@@ -105,9 +106,11 @@ TEST(VkDevices, ListsAComputeDevice) {
 }
 
 TEST(VkDevices, UnknownDeviceIsAClearError) {
-    const std::string message = test::errorOf([] { vkx::ContextOptions options;
+    const std::string message = test::errorOf([] {
+        vkx::ContextOptions options;
         options.device = "no-such-gpu";
-        vkx::Context ctx(options); });
+        vkx::Context ctx(options);
+    });
     EXPECT_NE(message.find("no Vulkan device 'no-such-gpu'"), std::string::npos) << message;
     EXPECT_NE(message.find("devices:"), std::string::npos) << message;
 }
@@ -122,7 +125,8 @@ TEST_F(VkTest, DispatchCoversEveryItemAndNoMore) {
     vkx::Context& ctx = computeContext();
     AffineRun run(ctx, 1000);
     const Push push{-3.0f, 1000};
-    ctx.submit([&](const vk::raii::CommandBuffer& cmd) { recordAffine(cmd, run.pipe, run.sets, push, run.out, run.host); });
+    ctx.submit(
+        [&](const vk::raii::CommandBuffer& cmd) { recordAffine(cmd, run.pipe, run.sets, push, run.out, run.host); });
     EXPECT_EQ(run.result(), run.expected(-3.0f));
 }
 
@@ -180,7 +184,8 @@ TEST_F(VkTest, SynchronizationValidationReportsAMissingBarrier) {
     });
     const auto messages = ctx.validationMessages();
     bool hazard = false;
-    for (std::size_t i = seen_; i < messages.size(); ++i) hazard = hazard || messages[i].find("SYNC-HAZARD") != std::string::npos;
+    for (std::size_t i = seen_; i < messages.size(); ++i)
+        hazard = hazard || messages[i].find("SYNC-HAZARD") != std::string::npos;
     EXPECT_TRUE(hazard) << "no SYNC-HAZARD message among " << messages.size() - seen_ << " new messages";
     seen_ = messages.size();  // expected messages: not a failure of TearDown
 }
@@ -207,10 +212,12 @@ TEST(VkShared, RendererAndComputeShareOneContext) {
     EXPECT_EQ(color.color.width(), 32);
     AffineRun run(*ctx, 300);
     const Push push{0.5f, 300};
-    ctx->submit([&](const vk::raii::CommandBuffer& cmd) { recordAffine(cmd, run.pipe, run.sets, push, run.out, run.host); });
+    ctx->submit(
+        [&](const vk::raii::CommandBuffer& cmd) { recordAffine(cmd, run.pipe, run.sets, push, run.out, run.host); });
     EXPECT_EQ(run.result(), run.expected(0.5f));
     const auto messages = ctx->validationMessages();
-    EXPECT_TRUE(messages.empty()) << messages.size() << " messages, the first: " << (messages.empty() ? "" : messages[0]);
+    EXPECT_TRUE(messages.empty()) << messages.size()
+                                  << " messages, the first: " << (messages.empty() ? "" : messages[0]);
 }
 
 }  // namespace

@@ -6,8 +6,8 @@
 #include <array>
 
 #include "ssfx/core/image.hpp"
-#include "ssfx/core/params.hpp"
 #include "ssfx/core/parallel.hpp"
+#include "ssfx/core/params.hpp"
 #include "ssfx/core/sample.hpp"
 
 namespace ssfx::aa {
@@ -33,7 +33,8 @@ void ssaax2(ImageView<const Rgba8> in2x, ImageView<Rgba8> out, Filtering filteri
             const Exec& exec = {});
 //! ssaax4: direct-tap Mitchell resolve of a 4x image (sizes divisible by 4).
 ImageRgba8 ssaax4(ImageView<const Rgba8> in4x, const MitchellParams& params = {}, const Exec& exec = {});
-void ssaax4(ImageView<const Rgba8> in4x, ImageView<Rgba8> out, const MitchellParams& params = {}, const Exec& exec = {});
+void ssaax4(ImageView<const Rgba8> in4x, ImageView<Rgba8> out, const MitchellParams& params = {},
+            const Exec& exec = {});
 
 //! Mitchell resampling by an integer factor: factor > 1 shrinks (`in` size divisible by
 //! factor), factor < -1 magnifies by -factor (e.g. -8 is the evaluation's x8 upscale).

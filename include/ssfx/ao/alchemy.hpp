@@ -7,8 +7,8 @@
 // and the same separable bilateral blur (no 2x2 quad pass, which is SAO's).
 #pragma once
 
-#include "ssfx/ao/depth.hpp"
 #include <string>
+#include "ssfx/ao/depth.hpp"
 
 #include "ssfx/ao/sao.hpp"
 
@@ -23,7 +23,7 @@ struct AlchemyParams {
     int numSamples = 12;     //!< s (AlchemyAO: 12)
     int numSpiralTurns = 5;  //!< spiralTurnsFor(12)
     BilateralParams blur;
-    int guardBand = 0;       //!< px on each side not output
+    int guardBand = 0;  //!< px on each side not output
 };
 //! AlchemyParams' table (core/params.hpp); the defaults are the initialisers.
 inline constexpr auto kAlchemyParams = concat(
@@ -37,8 +37,8 @@ inline constexpr auto kAlchemyParams = concat(
         integer<&AlchemyParams::numSpiralTurns>("numSpiralTurns", "", 1, 64, "turns of the tap spiral"),
     },
     concat(bilateralRows<&AlchemyParams::blur>(),
-           std::array{integer<&AlchemyParams::guardBand>("guardBand", "px", 0, 4096,
-                                                         "guard band on each side, not output")}));
+           std::array{
+               integer<&AlchemyParams::guardBand>("guardBand", "px", 0, 4096, "guard band on each side, not output")}));
 
 void validate(const AlchemyParams& p);
 //! Sets a field by name (blur fields as for SaoParams); throws ssfx::Error for an unknown one.

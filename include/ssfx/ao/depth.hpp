@@ -35,9 +35,9 @@ inline Vec3 reconstructPosition(const Projection& p, float px, float py, float z
 }
 
 //! Pass 1: hardware depth -> camera-space z (float32); d = 1 (nothing drawn) -> -infinity
-//! for any far plane. Evaluated in double and rounded once, so z is the correctly rounded value for the stored depth: what remains is the
-//! depth format's own precision (the Figure 3 experiment), not the arithmetic's. Throws
-//! ssfx::Error naming the pixel for a depth that is NaN, infinite or outside [0, 1].
+//! for any far plane. Evaluated in double and rounded once, so z is the correctly rounded value for the stored depth:
+//! what remains is the depth format's own precision (the Figure 3 experiment), not the arithmetic's. Throws ssfx::Error
+//! naming the pixel for a depth that is NaN, infinite or outside [0, 1].
 ImageF depthToZ(ImageView<const float> depth, const Camera& camera, const Exec& exec = {});
 //! Into a caller's buffer of the depth's size (frame loops: no allocation).
 void depthToZ(ImageView<const float> depth, const Camera& camera, ImageView<float> z, const Exec& exec = {});
@@ -94,7 +94,6 @@ struct ZPyramid {
 void zPyramid(ImageView<const float> z, int maxMip, PyramidFilter filter, ZPyramid& out, const Exec& exec = {});
 
 //! One step of the pyramid: `coarser` (max(1, w / 2) x max(1, h / 2) of `finer`) from `finer`.
-void zPyramidLevel(ImageView<const float> finer, ImageView<float> coarser, PyramidFilter filter,
-                   const Exec& exec = {});
+void zPyramidLevel(ImageView<const float> finer, ImageView<float> coarser, PyramidFilter filter, const Exec& exec = {});
 
 }  // namespace ssfx::ao

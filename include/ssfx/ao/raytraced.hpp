@@ -16,9 +16,9 @@
 #include <cstdint>
 
 #include "ssfx/ao/depth.hpp"
-#include "ssfx/core/params.hpp"
 #include "ssfx/core/image.hpp"
 #include "ssfx/core/parallel.hpp"
+#include "ssfx/core/params.hpp"
 
 namespace ssfx::ao {
 
@@ -27,8 +27,8 @@ struct Vec3d {
 };
 
 struct RayHit {
-    double t;       //!< distance along the (unit) ray direction
-    Vec3d normal;   //!< unit geometric normal facing the ray's origin side
+    double t;      //!< distance along the (unit) ray direction
+    Vec3d normal;  //!< unit geometric normal facing the ray's origin side
 };
 
 //! Geometry that rays can be cast against (camera space, metres).
@@ -45,9 +45,9 @@ public:
 };
 
 struct RaytracedParams {
-    float radius = 1.0f;        //!< m: r, as SAO's
-    int raysPerPixel = 256;     //!< cosine-weighted rays per pixel
-    int guardBand = 0;          //!< px on each side not output (as SAO's)
+    float radius = 1.0f;     //!< m: r, as SAO's
+    int raysPerPixel = 256;  //!< cosine-weighted rays per pixel
+    int guardBand = 0;       //!< px on each side not output (as SAO's)
 };
 //! RaytracedParams' table (core/params.hpp); the defaults are the initialisers.
 inline constexpr std::array kRaytracedParams{
@@ -61,8 +61,8 @@ void validate(const RaytracedParams& p);
 //! A for every pixel of the inner region of a width x height image seen by `camera`.
 //! Sky pixels (no primary hit, or the hit at or beyond a finite far plane, where a
 //! rasteriser leaves the cleared depth 1) are 1.
-ImageF raytraced(const RayScene& scene, const Camera& camera, int width, int height,
-                 const RaytracedParams& params = {}, const Exec& exec = {});
+ImageF raytraced(const RayScene& scene, const Camera& camera, int width, int height, const RaytracedParams& params = {},
+                 const Exec& exec = {});
 
 //! The primary ray through pixel centre (px, py) (unit direction, from the origin).
 Vec3d primaryRay(const Projection& proj, float px, float py);

@@ -12,15 +12,15 @@ namespace ssfx {
 
 //! A symmetric perspective camera for the *whole* depth buffer (guard band included).
 struct Camera {
-    double zNear = -0.1;                   //!< m, < 0: the near plane
-    double zFar = -INFINITY;               //!< m, < zNear, or -infinity (infinite far plane)
-    double fovY = 1.0471975511965976;      //!< rad, (0, pi): vertical field of view (default 60 deg)
+    double zNear = -0.1;               //!< m, < 0: the near plane
+    double zFar = -INFINITY;           //!< m, < zNear, or -infinity (infinite far plane)
+    double fovY = 1.0471975511965976;  //!< rad, (0, pi): vertical field of view (default 60 deg)
 };
 
 //! What the passes need from a camera and a buffer size, derived once.
 struct Projection {
     double c0, c1, c2;  //!< z(d) = c0 / (d * c1 + c2) (paper eq. 2)
-    float p00, p11;    //!< projection matrix P[0][0], P[1][1] (OpenGL convention)
+    float p00, p11;     //!< projection matrix P[0][0], P[1][1] (OpenGL convention)
     int width, height;
     float pixelsPerMeter;  //!< S: pixel size of a 1 m object at z = -1 m, h / (2 tan(fovY / 2)) (eq. 5)
 };

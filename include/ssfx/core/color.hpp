@@ -1,8 +1,8 @@
 // Luma and 8-bit quantisation shared by the anti-aliasing methods (spec ppaa.md section 1).
 #pragma once
 
-#include <cmath>
 #include <bit>
+#include <cmath>
 #include <cstdint>
 
 #include "ssfx/core/image.hpp"
@@ -14,9 +14,7 @@ namespace ssfx {
 //! Perceptual luma of the PPAA methods: sqrt(0.299 r + 0.587 g + 0.114 b) on unorm values
 //! (Rec. 601 weights; the square root approximates lightness). Evaluated left to right in
 //! float32 without fused multiply-add, as the reference shaders are.
-inline float luma(float r, float g, float b) {
-    return std::sqrt(0.299f * r + 0.587f * g + 0.114f * b);
-}
+inline float luma(float r, float g, float b) { return std::sqrt(0.299f * r + 0.587f * g + 0.114f * b); }
 inline float luma(const Rgb& c) { return luma(c.r, c.g, c.b); }
 
 //! The opt-in colour-aware contrast measure of the luma-based PPAA methods (our extension

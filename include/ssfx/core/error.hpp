@@ -24,5 +24,4 @@ int wholeNumber(double v, const std::string& what, double lo = -2147483648.0, do
 }  // namespace ssfx
 
 //! Our own invariants (never caller input). Always on: they guard cheap, non-hot checks.
-#define SSFX_ASSERT(cond) \
-    ((cond) ? static_cast<void>(0) : ::ssfx::assertFailed(#cond, __FILE__, __LINE__))
+#define SSFX_ASSERT(cond) ((cond) ? static_cast<void>(0) : ::ssfx::assertFailed(#cond, __FILE__, __LINE__))

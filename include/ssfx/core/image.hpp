@@ -80,8 +80,7 @@ public:
     //! Deep copy of a view.
     static Image copyOf(ImageView<const T> v) {
         Image out(v.width(), v.height());
-        for (int y = 0; y < v.height(); ++y)
-            std::copy(v.row(y), v.row(y) + v.width(), out.view().row(y));
+        for (int y = 0; y < v.height(); ++y) std::copy(v.row(y), v.row(y) + v.width(), out.view().row(y));
         return out;
     }
 

@@ -17,8 +17,7 @@ inline constexpr int kRowBlock = 16;
 
 //! Calls fn(y0, y1) for consecutive row ranges [y0, y1) covering [0, height), in parallel:
 //! blocks of rowsPerBlock rows (the last one shorter).
-void parallelRows(int height, const Exec& exec, const std::function<void(int, int)>& fn,
-                  int rowsPerBlock = kRowBlock);
+void parallelRows(int height, const Exec& exec, const std::function<void(int, int)>& fn, int rowsPerBlock = kRowBlock);
 
 //! Number of threads Exec resolves to on this machine.
 int resolvedThreads(const Exec& exec);

@@ -33,9 +33,9 @@ struct ParamInfo {
     double min, max;        //!< inclusive; Boolean [0, 1]; Choice [0, choices - 1]
     std::string_view doc;
     std::span<const std::string_view> choices;  //!< Choice: the names of 0, 1, ...
-    double (*get)(const void* params);           //!< the member of a params struct, as a number
-    void (*set)(void* params, double value);     //!< no checks: see setParam
-    double (*initial)();                         //!< the member in a default-constructed struct
+    double (*get)(const void* params);          //!< the member of a params struct, as a number
+    void (*set)(void* params, double value);    //!< no checks: see setParam
+    double (*initial)();                        //!< the member in a default-constructed struct
 
     double defaultValue() const { return initial(); }
     //! "0.6", "5", "1", "rotated-grid": a value as `-p` takes it.
@@ -75,14 +75,19 @@ struct MemberClass<T C::*> {
 
 template <class T>
 double toNumber(const T& v) {
-    if constexpr (std::is_enum_v<T>) return double(static_cast<std::underlying_type_t<T>>(v));
-    else return double(v);
+    if constexpr (std::is_enum_v<T>)
+        return double(static_cast<std::underlying_type_t<T>>(v));
+    else
+        return double(v);
 }
 template <class T>
 T fromNumber(double v) {
-    if constexpr (std::is_enum_v<T>) return static_cast<T>(static_cast<std::underlying_type_t<T>>(v));
-    else if constexpr (std::is_same_v<T, bool>) return v != 0.0;
-    else return static_cast<T>(v);
+    if constexpr (std::is_enum_v<T>)
+        return static_cast<T>(static_cast<std::underlying_type_t<T>>(v));
+    else if constexpr (std::is_same_v<T, bool>)
+        return v != 0.0;
+    else
+        return static_cast<T>(v);
 }
 
 //! The member reached from an Owner by Path (a chain of member pointers; the first may be
@@ -90,8 +95,8 @@ T fromNumber(double v) {
 template <class Owner, auto First, auto... Rest>
 struct Field {
     using P = Owner;
-    static auto& ref(P& p) { return ((p.*First) .* ... .*Rest); }
-    static const auto& cref(const P& p) { return ((p.*First) .* ... .*Rest); }
+    static auto& ref(P& p) { return ((p.*First).*....*Rest); }
+    static const auto& cref(const P& p) { return ((p.*First).*....*Rest); }
     using T = std::remove_cvref_t<decltype(cref(std::declval<const P&>()))>;
     static double get(const void* p) { return toNumber(cref(*static_cast<const P*>(p))); }
     static void set(void* p, double v) { ref(*static_cast<P*>(p)) = fromNumber<T>(v); }
@@ -115,7 +120,8 @@ constexpr ParamInfo real(std::string_view name, std::string_view unit, double mi
     return realIn<typename detail::MemberClass<decltype(First)>::type, First, Rest...>(name, unit, min, max, doc);
 }
 template <auto First, auto... Rest>
-constexpr ParamInfo integer(std::string_view name, std::string_view unit, double min, double max, std::string_view doc) {
+constexpr ParamInfo integer(std::string_view name, std::string_view unit, double min, double max,
+                            std::string_view doc) {
     using F = detail::Field<typename detail::MemberClass<decltype(First)>::type, First, Rest...>;
     static_assert(std::is_integral_v<typename F::T> && !std::is_same_v<typename F::T, bool>,
                   "integer(): the member is not an integer");

@@ -38,8 +38,8 @@ struct AoRenderedScene {
 using AoSceneSource = std::function<std::vector<AoRenderedScene>(int width, int height, int guard)>;
 
 struct AoExperimentOptions {
-    std::string outDir;   //!< images/, plots/, data/ are written here
-    bool quick = false;   //!< small sizes and few repetitions (tests)
+    std::string outDir;  //!< images/, plots/, data/ are written here
+    bool quick = false;  //!< small sizes and few repetitions (tests)
     Exec exec;
     std::function<void(const std::string&)> progress;
     AoSceneSource renderedScenes;  //!< optional: real scenes joining the accuracy table
@@ -53,7 +53,7 @@ Section runAoExperiments(const AoExperimentOptions& options);
 //! Figure 3 alone: the largest |z error| (mm) at each distance, per series
 //! ("D16 finite", "D16 infinite", ...), near plane 0.1 m, finite far plane 1000 m.
 struct ZPrecision {
-    std::vector<double> distances;           //!< m
+    std::vector<double> distances;  //!< m
     std::vector<std::string> series;
     std::vector<std::vector<double>> errorMm;  //!< [series][distance]
 };

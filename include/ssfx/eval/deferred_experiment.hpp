@@ -11,20 +11,20 @@
 #include <string>
 
 #include "ssfx/core/parallel.hpp"
-#include "ssfx/eval/section.hpp"
 #include "ssfx/deferred/adaptive.hpp"
+#include "ssfx/eval/section.hpp"
 
 namespace ssfx::eval {
 
 struct DeferredExperimentOptions {
-    std::string outDir;          //!< images/ and data/deferred.{json,md} are written here
+    std::string outDir;  //!< images/ and data/deferred.{json,md} are written here
     std::string scene = "atrium", view = "nave";
     int width = 1024, height = 768;
-    int stall = 400;             //!< the stalled columns' ShadingParams::stall
-    int repetitions = 3;         //!< timed runs per row (median)
-    bool quick = false;          //!< 256x192, one repetition (tests)
+    int stall = 400;      //!< the stalled columns' ShadingParams::stall
+    int repetitions = 3;  //!< timed runs per row (median)
+    bool quick = false;   //!< 256x192, one repetition (tests)
     deferred::AdaptiveParams params;
-    std::string device;          //!< Vulkan device
+    std::string device;  //!< Vulkan device
     Exec exec;
     std::function<void(const std::string&)> progress;
 };

@@ -8,9 +8,9 @@
 // coverage of ss x ss samples; `shape` Edge: a half-plane instead of a line). Each kernel
 // estimates the gradient at every pixel within `size`/2 - 8 of the centre that a PPAA
 // method would process (contrast >= 0.25 over the pixel and its 4 neighbours) and whose
-// gradient magnitude is at least 0.1 (for a unit step); the edge direction is the gradient's angle + 90 degrees, and the error is its
-// angular distance to theta modulo 180 degrees (so in [0, 90]). The line is drawn at
-// several sub-pixel offsets so that no angle is judged on a single lucky placement.
+// gradient magnitude is at least 0.1 (for a unit step); the edge direction is the gradient's angle + 90 degrees, and
+// the error is its angular distance to theta modulo 180 degrees (so in [0, 90]). The line is drawn at several sub-pixel
+// offsets so that no angle is judged on a single lucky placement.
 //
 // Kernels (x derivative; y is the transpose), each scaled so a unit ramp has slope 1:
 //   central   [-1 0 1] / 2
@@ -25,10 +25,10 @@
 namespace ssfx::eval {
 
 struct KernelExperimentOptions {
-    double stepDegrees = 0.5;                  //!< angle step in degrees, (0, 45]
+    double stepDegrees = 0.5;                   //!< angle step in degrees, (0, 45]
     std::vector<double> widths{1.0, 2.0, 4.0};  //!< line widths in pixels
-    int size = 64;                             //!< image side in pixels, >= 32
-    int supersample = 1;                       //!< 1 = aliased (the PPAA case); n = n x n coverage
+    int size = 64;                              //!< image side in pixels, >= 32
+    int supersample = 1;                        //!< 1 = aliased (the PPAA case); n = n x n coverage
     enum class Shape { Line, Edge } shape = Shape::Line;
 };
 

@@ -18,7 +18,7 @@ struct Series {
 struct ChartStyle {
     int width = 880, height = 420;
     std::string title, xLabel, yLabel;
-    bool logY = false;  //!< logarithmic y axis (values must be > 0)
+    bool logY = false;      //!< logarithmic y axis (values must be > 0)
     bool zeroBased = true;  //!< bars start at 0; false: the axis starts just below the smallest value
 };
 

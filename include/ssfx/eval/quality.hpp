@@ -42,7 +42,7 @@ struct QualityOptions {
     //! Compute: preset and filtering apply to every method that accepts them; each named
     //! parameter to the methods that have it (an error if no chosen method has it).
     MethodSettings settings;
-    std::string outputsDir;            //!< Compute: also write NAME_METHOD.png here when set
+    std::string outputsDir;  //!< Compute: also write NAME_METHOD.png here when set
     Exec exec;
     std::function<void(const std::string&)> progress;  //!< one line per image and method
 };

@@ -23,8 +23,8 @@ struct Table {
 //! Rows x columns of numbers with `decimals` decimals ("-" for NaN, "inf"), the best of each
 //! row (the highest, or the lowest) marked.
 Table numericTable(const std::string& corner, const std::vector<std::string>& rowNames,
-                   const std::vector<std::string>& columns, const std::vector<std::vector<double>>& values, int decimals,
-                   bool higherIsBetter);
+                   const std::vector<std::string>& columns, const std::vector<std::vector<double>>& values,
+                   int decimals, bool higherIsBetter);
 
 //! An image of the section: `path` relative to the report's folder.
 struct Figure {

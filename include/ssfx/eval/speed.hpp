@@ -36,9 +36,9 @@ SpeedTable measureSpeed(const std::string& dir, const SpeedOptions& options);
 //! input: `ids` (blur added when missing, as the baseline) timed interleaved with their
 //! outputs allocated once; `input(scale)` gives the image at scale 1, 2 or 4, each asked for
 //! once and only when a method needs it. `rounds(r, n)` reports progress.
-std::vector<TimingResult> timeMethodsOn(std::vector<std::string>& ids, const std::function<ImageRgba8(int scale)>& input,
-                                        int repetitions, int warmup, const Exec& exec,
-                                        const std::function<void(int, int)>& rounds = {});
+std::vector<TimingResult> timeMethodsOn(std::vector<std::string>& ids,
+                                        const std::function<ImageRgba8(int scale)>& input, int repetitions, int warmup,
+                                        const Exec& exec, const std::function<void(int, int)>& rounds = {});
 
 //! Markdown: relative table (blur = 100) and median table (ms), image rows plus a mean row.
 std::string speedMarkdown(const SpeedTable& t);

@@ -65,9 +65,9 @@ struct TemporalResult {
 };
 
 struct TemporalRun {
-    std::vector<TemporalResult> results;            //!< one per method, in order
-    std::vector<std::vector<ImageRgba8>> outputs;   //!< outputs[m][t] (with keepOutputs)
-    std::vector<ImageRgba8> truth;                  //!< R_t (with keepOutputs)
+    std::vector<TemporalResult> results;           //!< one per method, in order
+    std::vector<std::vector<ImageRgba8>> outputs;  //!< outputs[m][t] (with keepOutputs)
+    std::vector<ImageRgba8> truth;                 //!< R_t (with keepOutputs)
 };
 
 //! Runs every method on every frame, streaming: frame t of each scale is read, the x8 one

@@ -132,9 +132,9 @@ void writePng(const std::string& path, ImageView<const Rgba8> image);
 
 // ---- animated PNG -------------------------------------------------------------------
 struct Frame {
-    ImageRgba8 image;              //!< the whole canvas after this frame
-    std::uint16_t delayNum = 1;    //!< frame delay = delayNum / delayDen seconds
-    std::uint16_t delayDen = 25;   //!< 0 means 1/100 s as in the APNG spec
+    ImageRgba8 image;             //!< the whole canvas after this frame
+    std::uint16_t delayNum = 1;   //!< frame delay = delayNum / delayDen seconds
+    std::uint16_t delayDen = 25;  //!< 0 means 1/100 s as in the APNG spec
     double delaySeconds() const { return double(delayNum) / (delayDen == 0 ? 100.0 : delayDen); }
 };
 struct Animation {

@@ -31,9 +31,9 @@ struct RendererOptions {
 };
 
 struct DepthRender {
-    ImageF depth;          //!< hardware depth in [0, 1] as stored by the format, guard band included
+    ImageF depth;  //!< hardware depth in [0, 1] as stored by the format, guard band included
     scene::CameraSetup camera;
-    double gpuMs = 0;      //!< the draw, from timestamp queries
+    double gpuMs = 0;  //!< the draw, from timestamp queries
 };
 
 struct ColorRender {

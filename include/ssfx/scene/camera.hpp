@@ -18,11 +18,11 @@
 namespace ssfx::scene {
 
 struct CameraSetup {
-    int width = 0, height = 0;  //!< the image without guard band
-    int guard = 0;              //!< pixels added on every side of the rendered buffer
-    glm::dmat4 view{1.0};       //!< world -> camera space
-    glm::dmat4 projection{1.0}; //!< camera -> Vulkan clip space, for the whole buffer
-    Camera camera;          //!< z planes (negative) and the *whole buffer's* vertical fov
+    int width = 0, height = 0;   //!< the image without guard band
+    int guard = 0;               //!< pixels added on every side of the rendered buffer
+    glm::dmat4 view{1.0};        //!< world -> camera space
+    glm::dmat4 projection{1.0};  //!< camera -> Vulkan clip space, for the whole buffer
+    Camera camera;               //!< z planes (negative) and the *whole buffer's* vertical fov
 
     int bufferWidth() const { return width + 2 * guard; }
     int bufferHeight() const { return height + 2 * guard; }

@@ -18,10 +18,10 @@ namespace ssfx::scene {
 struct GBuffer {
     static constexpr std::uint16_t kNoMaterial = 0xFFFF;  //!< background samples
     int width = 0, height = 0, m = 1;
-    ImageF depth;                         //!< D32F, 1 = background
-    std::vector<glm::vec3> normal;        //!< camera space, towards the camera (16-bit snorm on the GPU); 0 on background
-    std::vector<glm::vec2> uv;            //!< texture coordinates (float32)
-    std::vector<glm::vec4> uvGrad;        //!< (du/dx, dv/dx, du/dy, dv/dy) per *final-image* pixel (float32)
+    ImageF depth;                   //!< D32F, 1 = background
+    std::vector<glm::vec3> normal;  //!< camera space, towards the camera (16-bit snorm on the GPU); 0 on background
+    std::vector<glm::vec2> uv;      //!< texture coordinates (float32)
+    std::vector<glm::vec4> uvGrad;  //!< (du/dx, dv/dx, du/dy, dv/dy) per *final-image* pixel (float32)
     std::vector<std::uint16_t> material;  //!< material index or kNoMaterial
     std::vector<std::int16_t> layer;      //!< texture layer or -1
     CameraSetup camera;                   //!< of the (m width) x (m height) sample grid

@@ -10,11 +10,11 @@
 
 #include <cstdint>
 #include <functional>
-#include <span>
-#include <string_view>
 #include <glm/glm.hpp>
 #include <limits>
+#include <span>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -57,9 +57,9 @@ struct View {
     glm::dvec3 eye{0.0, 1.0, 5.0};
     glm::dvec3 target{0.0};
     glm::dvec3 up{0.0, 1.0, 0.0};
-    double fovYDeg = 60.0;                                    //!< vertical field of view of the image (no guard band)
-    double zNear = 0.1;                                       //!< > 0
-    double zFar = std::numeric_limits<double>::infinity();   //!< > zNear, or infinity
+    double fovYDeg = 60.0;                                  //!< vertical field of view of the image (no guard band)
+    double zNear = 0.1;                                     //!< > 0
+    double zFar = std::numeric_limits<double>::infinity();  //!< > zNear, or infinity
 };
 
 struct Scene {

@@ -26,8 +26,8 @@ vk::raii::ShaderModule makeShaderModule(const Context& ctx, std::span<const std:
 //! `count` descriptor sets of one layout, in a pool of their own.
 class DescriptorSets {
 public:
-    DescriptorSets(const Context& ctx, const vk::raii::DescriptorSetLayout& layout, std::span<const BindingSpec> bindings,
-                   std::uint32_t count = 1);
+    DescriptorSets(const Context& ctx, const vk::raii::DescriptorSetLayout& layout,
+                   std::span<const BindingSpec> bindings, std::uint32_t count = 1);
     vk::DescriptorSet operator[](std::size_t i) const { return *sets_[i]; }
     std::size_t size() const { return sets_.size(); }
     //! Points binding `binding` of set `set` at a whole buffer.
@@ -49,7 +49,9 @@ public:
     ComputePipeline(const Context& ctx, std::span<const std::uint32_t> spirv, std::vector<BindingSpec> bindings,
                     std::uint32_t pushConstantBytes = 0, const vk::SpecializationInfo* specialization = nullptr);
 
-    DescriptorSets makeSets(std::uint32_t count = 1) const { return DescriptorSets(*ctx_, setLayout, bindings_, count); }
+    DescriptorSets makeSets(std::uint32_t count = 1) const {
+        return DescriptorSets(*ctx_, setLayout, bindings_, count);
+    }
     //! Binds the pipeline and `set`, pushes `push` (pushConstantBytes long) and dispatches
     //! groups x groupsY x groupsZ work groups.
     void dispatch(const vk::raii::CommandBuffer& cmd, vk::DescriptorSet set, const void* push, std::uint32_t groupsX,
@@ -69,7 +71,8 @@ private:
 constexpr std::uint32_t groupCount(std::uint32_t n, std::uint32_t size) { return (n + size - 1) / size; }
 
 //! A barrier between a compute shader's writes and later compute reads or transfers.
-void computeBarrier(const vk::raii::CommandBuffer& cmd, vk::PipelineStageFlags dstStage = vk::PipelineStageFlagBits::eComputeShader,
+void computeBarrier(const vk::raii::CommandBuffer& cmd,
+                    vk::PipelineStageFlags dstStage = vk::PipelineStageFlagBits::eComputeShader,
                     vk::AccessFlags dstAccess = vk::AccessFlagBits::eShaderRead);
 
 }  // namespace ssfx::vkx

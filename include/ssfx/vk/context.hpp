@@ -71,7 +71,8 @@ public:
     void requireImageSize(std::uint32_t width, std::uint32_t height, const std::string& what) const;
 
 private:
-    std::uint32_t memoryType(std::uint32_t bits, vk::MemoryPropertyFlags wanted, vk::MemoryPropertyFlags preferred = {}) const;
+    std::uint32_t memoryType(std::uint32_t bits, vk::MemoryPropertyFlags wanted,
+                             vk::MemoryPropertyFlags preferred = {}) const;
 };
 
 //! Commands recorded once and submitted any number of times (a benchmark's loop, a frame).
