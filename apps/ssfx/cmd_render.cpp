@@ -22,7 +22,7 @@ struct RenderOptions {
     std::string scene, view, size = "960x540", depthFormat = "d32f", out, device, far;
     int scale = 1, gbuffer = 0, guard = 0;
     double near = 0;
-    bool listViews = false, listDevices = false, validation = false, aaSet = false;
+    bool listViews = false, validation = false, aaSet = false;
 };
 
 DepthFormat parseDepthFormat(const std::string& f) {
@@ -33,14 +33,6 @@ DepthFormat parseDepthFormat(const std::string& f) {
 }
 
 void run(const RenderOptions& o) {
-    if (o.listDevices) {
-        for (const auto& d : vkx::listDevices())
-            fmt::print("{}: {} ({}, Vulkan {}): {}\n", d.index, d.name, d.type, d.api,
-                       d.graphics  ? "renders and computes"
-                       : d.compute ? "computes only (no graphics queue or dynamic rendering)"
-                                   : "unsuitable (needs Vulkan 1.3)");
-        return;
-    }
     if (o.scene.empty())
         throw Error("no scene given (a built-in name: atrium, cornell; a scene .json; or a model file)");
     scene::Scene scene = scene::loadScene(o.scene);
@@ -140,12 +132,12 @@ void addRenderCommand(CLI::App& app) {
     cmd->add_option("--near", o->near, "Override the view's near plane distance (m)")->check(CLI::PositiveNumber);
     cmd->add_option("--far", o->far, "Override the far plane: a distance in m, or inf");
     cmd->add_option("--out", o->out, "Output folder: depth.exr, z.exr, camera.json, color.png [, gbuffer.exr]");
-    cmd->add_option("--device", o->device, "Vulkan device index or part of its name (default: a GPU, else lavapipe)");
+    cmd->add_option("--device", o->device,
+                    "Vulkan device index or part of its name (default: a GPU, else lavapipe; ssfx devices lists them)");
     cmd->add_flag("--validation", o->validation, "Enable the Khronos validation layer and print its messages");
     cmd->add_flag("--aa-set", o->aaSet,
                   "Instead: the colour images at 1x, 2x, 4x, 8x as NAME.png, NAMEx2.png, ... for ssfx eval quality");
     cmd->add_flag("--list-views", o->listViews, "List the scene's viewpoints and exit");
-    cmd->add_flag("--list-devices", o->listDevices, "List the Vulkan devices and exit");
     cmd->footer(
         "Depth is hardware depth in [0, 1] (0 = near); camera.json holds fov_y_deg, z_near, z_far (read by\n"
         "ssfx ao), the size, guard band and the projection and view matrices (docs/render.md).\n"

@@ -30,5 +30,6 @@ void addEvalCommand(CLI::App& app);
 void addAoCommand(CLI::App& app);
 void addRenderCommand(CLI::App& app);
 void addDeferredCommand(CLI::App& app);
+void addDevicesCommand(CLI::App& app);
 
 }  // namespace ssfx::cli

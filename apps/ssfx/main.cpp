@@ -33,6 +33,7 @@ int main(int argc, char** argv) {
 #ifdef SSFX_HAVE_RENDER
     ssfx::cli::addRenderCommand(app);
     ssfx::cli::addDeferredCommand(app);
+    ssfx::cli::addDevicesCommand(app);
 #endif
     ssfx::cli::addEvalCommand(app);
     try {

@@ -209,7 +209,10 @@ contains eval_ao "$OUT/evalao/data/ao.md" "Normal precision"
 # (Only when this ssfx was built with the renderer: -DSSFX_BUILD_RENDER=OFF leaves it out.)
 if "$SSFX" --help 2>/dev/null | grep -qE '^ +render '; then
   check help_render 0 $VK "$SSFX" render --help
-  check render_devices 0 $VK "$SSFX" render --list-devices
+  check devices 0 $VK "$SSFX" devices
+  contains devices "$OUT/devices.out" "computes"
+  check devices_json 0 $VK "$SSFX" devices --json
+  contains devices_json "$OUT/devices_json.out" '"graphics"'
   check render_views 0 $VK "$SSFX" render atrium --list-views
   contains render_views "$OUT/render_views.out" "colonnade"
   check render 0 $VK "$SSFX" render atrium --view nave --size 64x36 --guard 8 --gbuffer 2 --depth-format d24 --out "$OUT/r"
