@@ -2,7 +2,7 @@
 //
 // Tolerance (issue #2): >= 99.9 % of pixels identical and <= 0.01 % off by more than one
 // level. Why: the spec's GPU sampling model reproduces blur, fxaa3d, ddaa1 and ddaa2 bit
-// for bit; the resolves differ by one level where the reference's storage blend scaled
+// for bit; the resolves differ by one level where the author's storage blend scaled
 // colours by (weight sum)^3 (spec ppaa.md, ssaax2), and fxaa3c by one level on ties.
 // A failure writes actual and diff images under the build's test_out folder.
 #include <gtest/gtest.h>
@@ -23,7 +23,7 @@ void PrintTo(const Case& c, std::ostream* os) { *os << c.image << " " << c.metho
 class Golden : public ::testing::TestWithParam<Case> {};
 }  // namespace
 
-TEST_P(Golden, MatchesTheReferenceGpuOutput) {
+TEST_P(Golden, MatchesTheAuthorsGpuOutput) {
     const auto dir = test::sharedDir("reference/ppaa");
     if (!dir) GTEST_SKIP() << "../shared/reference/ppaa is absent: golden comparison skipped";
     const Case& c = GetParam();
@@ -38,7 +38,7 @@ TEST_P(Golden, MatchesTheReferenceGpuOutput) {
     ImageRgba8 diff(actual.width(), actual.height(), Rgba8{0, 0, 0, 255});
     for (int y = 0; y < actual.height(); ++y)
         for (int x = 0; x < actual.width(); ++x) {
-            const Rgba8 a = actual(x, y), e = expected(x, y);  // references are RGB: alpha ignored
+            const Rgba8 a = actual(x, y), e = expected(x, y);  // the author's outputs are RGB: alpha ignored
             const int d = std::max({std::abs(a.r - e.r), std::abs(a.g - e.g), std::abs(a.b - e.b)});
             identical += d == 0;
             offByMore += d > 1;
