@@ -17,6 +17,7 @@ PACKAGES=(
   clang libclang-rt-14-dev           # libFuzzer targets (fuzz smoke run in make test)
   clang-format-14                    # the formatting check (.clang-format is pinned to 14)
   chromium                           # the HTML report's browser test (headless, via playwright-core)
+  ffmpeg                             # the frame-pipe test (ffmpeg | ssfx aa --raw | ffmpeg)
 )
 
 missing=()

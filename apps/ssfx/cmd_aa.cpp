@@ -1,13 +1,19 @@
 // ssfx aa: apply an anti-aliasing method to a PNG (or every frame of an APNG).
 #include <fmt/format.h>
 
-#include <cstdio>
-
+#include <cerrno>
 #include <charconv>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <memory>
+#include <optional>
 
 #include "apps/ssfx/commands.hpp"
 #include "ssfx/aa/presets.hpp"
+#include "ssfx/core/parallel.hpp"
 #include "ssfx/io/png.hpp"
+#include "ssfx/io/sequence.hpp"
 #include "ssfx/registry.hpp"
 
 namespace ssfx::cli {
@@ -59,7 +65,7 @@ std::pair<std::string, double> parseParam(const std::string& text, std::span<con
 namespace {
 
 struct AaOptions {
-    std::string method, input, output, preset, filtering = "gpu";
+    std::string method, input, output, preset, filtering = "gpu", raw, frames;
     std::vector<std::string> params;
     int threads = 0;
     bool listPresets = false;
@@ -73,6 +79,136 @@ void printPresets() {
     for (const auto& p : aa::kPresets)
         fmt::print("{:<8} {:>16} {:>14}  {}\n", p.name, p.thresholds.edgeThresholdMin, p.thresholds.edgeThreshold,
                    p.doc);
+}
+
+// ---- frame sequences: numbered files, folders, raw streams ------------------------------
+// Where a sequence's frames come from: numbered files, a folder's PNGs or a raw stream.
+struct CloseFile {
+    void operator()(std::FILE* f) const {
+        if (f && f != stdin) std::fclose(f);
+    }
+};
+
+struct Frames {
+    std::vector<std::string> files;  // numbered files or a folder's PNGs, in order
+    std::vector<int> numbers;        // the numbered files' frame numbers
+    std::unique_ptr<std::FILE, CloseFile> rawFile;
+    std::unique_ptr<io::RawFrameReader> raw;
+    std::string rawName;
+};
+
+bool isFolder(const std::string& path) {
+    std::error_code ec;
+    return std::filesystem::is_directory(path, ec);
+}
+
+Frames openFrames(const AaOptions& o, std::pair<int, int> rawSize) {
+    Frames f;
+    if (io::FramePattern::isPattern(o.input)) {
+        const io::FramePattern pattern(o.input);
+        f.numbers = o.frames.empty() ? pattern.existing() : io::FrameRange::parse(o.frames).frames();
+        if (f.numbers.empty()) throw Error(fmt::format("{}: no files match the frame pattern", o.input));
+        std::vector<std::string> missing;
+        for (int n : f.numbers) {
+            f.files.push_back(pattern.path(n));
+            if (!std::filesystem::exists(f.files.back())) missing.push_back(f.files.back());
+        }
+        if (!missing.empty())
+            throw Error(fmt::format("{} of {} frames are missing, the first: {}", missing.size(), f.numbers.size(),
+                                    missing.front()));
+        return f;
+    }
+    if (!o.frames.empty()) throw Error("--frames goes with a numbered input (frame.%04d.png)");
+    if (o.input != "-" && isFolder(o.input)) {
+        for (const auto& name : io::pngFilesIn(o.input))
+            f.files.push_back((std::filesystem::path(o.input) / name).string());
+        return f;
+    }
+    if (rawSize.first == 0) throw Error("standard input ('-') holds raw frames: give their size with --raw WxH");
+    f.rawName = o.input == "-" ? "stdin" : o.input;
+    f.rawFile.reset(o.input == "-" ? stdin : std::fopen(o.input.c_str(), "rb"));
+    if (!f.rawFile) throw Error(fmt::format("{}: cannot open ({})", o.input, std::strerror(errno)));
+    f.raw = std::make_unique<io::RawFrameReader>(f.rawFile.get(), rawSize.first, rawSize.second, f.rawName);
+    return f;
+}
+
+void runFrames(const AaOptions& o, const MethodInfo& m, const MethodSettings& settings, const Exec& exec) {
+    const auto rawSize = o.raw.empty() ? std::pair<int, int>{0, 0} : parseSize(o.raw, "--raw", 16384);
+    Frames in = openFrames(o, rawSize);
+    // The output: numbered files, a folder (the input's file names), or a raw stream.
+    const bool outPattern = io::FramePattern::isPattern(o.output);
+    // Without --raw a plain output path is a folder; with it, a raw file unless it is a folder.
+    const bool outFolder =
+        !outPattern && o.output != "-" && (isFolder(o.output) || o.output.back() == '/' || o.raw.empty());
+    const bool outRaw = !outPattern && !outFolder;
+    std::optional<io::FramePattern> pattern;
+    if (outPattern) {
+        pattern.emplace(o.output);
+        const auto parent = std::filesystem::path(pattern->path(0)).parent_path();
+        if (!parent.empty()) io::makeDirectories(parent.string());
+    }
+    if (outFolder) {
+        if (in.raw)
+            throw Error("raw frames go to a numbered output (out/frame.%04d.png) or a raw stream, not a folder");
+        io::makeDirectories(o.output);
+    }
+    std::unique_ptr<io::AtomicFile> rawFile;
+    std::unique_ptr<io::RawFrameWriter> rawOut;
+    if (outRaw) {
+        rawFile = std::make_unique<io::AtomicFile>(o.output);
+        rawOut = std::make_unique<io::RawFrameWriter>(*rawFile);
+    }
+    const int count = in.raw ? -1 : int(in.files.size());
+    auto name = [&](int i) { return in.raw ? fmt::format("{} frame {}", in.rawName, i) : in.files[std::size_t(i)]; };
+    // Frames in flight: a few per thread, each an input and an output slot.
+    const int slots = 2 * resolvedThreads(exec);
+    const auto slotCount = std::size_t(slots);
+    std::vector<ImageRgba8> inputs(slotCount), outputs(slotCount);
+    std::optional<Error> stopped;  // a raw stream cut short: reported after the frames before it
+    orderedPipeline(
+        slots, exec,
+        [&](int i) {
+            if (count >= 0 && i >= count) return false;
+            ImageRgba8& slot = inputs[std::size_t(i % slots)];
+            if (!in.raw) {
+                slot = io::readPng(in.files[std::size_t(i)]);
+                return true;
+            }
+            try {
+                return in.raw->read(slot);
+            } catch (const Error& e) {
+                stopped.emplace(e.what());
+                return false;
+            }
+        },
+        [&](int i) {
+            try {
+                outputs[std::size_t(i % slots)] = m.run(inputs[std::size_t(i % slots)].view(), settings, exec);
+            } catch (const Error& e) {  // e.g. a resolve's size rule: say which frame
+                throw Error(fmt::format("{}: {}", name(i), e.what()));
+            }
+        },
+        [&](int i) {
+            const ImageRgba8& out = outputs[std::size_t(i % slots)];
+            if (rawOut) {
+                rawOut->write(out.view());
+            } else if (pattern) {
+                io::writePng(pattern->path(in.numbers.empty() ? i : in.numbers[std::size_t(i)]), out.view());
+            } else {
+                io::writePng(
+                    (std::filesystem::path(o.output) / std::filesystem::path(in.files[std::size_t(i)]).filename())
+                        .string(),
+                    out.view());
+            }
+        });
+    if (stopped) throw *stopped;
+    if (rawFile) rawFile->commit();
+}
+
+bool isSequence(const AaOptions& o) {
+    // (A single PNG to "-" is a PNG on standard output, not a raw stream.)
+    return !o.raw.empty() || o.input == "-" || io::FramePattern::isPattern(o.input) ||
+           io::FramePattern::isPattern(o.output) || isFolder(o.input) || !o.frames.empty();
 }
 
 void run(const AaOptions& o) {
@@ -93,6 +229,10 @@ void run(const AaOptions& o) {
     for (const auto& p : o.params) settings.params.push_back(parseParam(p, methodById(o.method).params, o.method));
     if (o.filtering == "exact") settings.filtering = Filtering::Exact;
     const Exec exec{o.threads};
+    if (isSequence(o)) {
+        runFrames(o, m, settings, exec);
+        return;
+    }
 
     const std::vector<std::uint8_t> bytes = io::readFile(o.input, io::kMaxImageFileBytes, "PNG", io::kPngMagic);
     if (io::isApng(bytes)) {
@@ -120,12 +260,21 @@ void run(const AaOptions& o) {
 void addAaCommand(CLI::App& app) {
     auto opts = std::make_shared<AaOptions>();
     auto* cmd = app.add_subcommand(
-        "aa", "Apply an anti-aliasing method to a PNG, or to every frame of an APNG (output is then APNG)");
+        "aa", "Apply an anti-aliasing method to a PNG, every frame of an APNG, a frame sequence or a raw stream");
     std::string methodList;
     for (const MethodInfo& mi : methods()) methodList += fmt::format("\n  {:<7} {}", mi.id, mi.summary);
     cmd->add_option("-m,--method", opts->method, "Method id:" + methodList);
-    cmd->add_option("input", opts->input, "Input PNG/APNG (ssaax2/ddaa2p take the 2x render, ssaax4 the 4x)");
-    cmd->add_option("-o,--output", opts->output, "Output PNG/APNG (written atomically)");
+    cmd->add_option("input", opts->input,
+                    "Input PNG/APNG, numbered PNGs (in/frame.%04d.png), a folder of PNGs, or raw frames ('-' = "
+                    "stdin, with --raw) (ssaax2/ddaa2p take the 2x render, ssaax4 the 4x)");
+    cmd->add_option("-o,--output", opts->output,
+                    "Output PNG/APNG, numbered PNGs (out/frame.%04d.png), a folder (the input's file names), or raw "
+                    "frames ('-' = stdout, or a file with --raw); every file written atomically");
+    cmd->add_option("--raw", opts->raw,
+                    "Raw RGBA8 frames of this size (WxH) on the input '-' or FILE; the output is raw too unless it "
+                    "is numbered or a folder (ffmpeg -f rawvideo -pix_fmt rgba)");
+    cmd->add_option("--frames", opts->frames,
+                    "Frames A-B (or A) of a numbered input (default: every file that exists)");
     cmd->add_option("--preset", opts->preset, "Edge-threshold preset: low, medium (default), high, ultra, extreme");
     cmd->add_option("-p,--param", opts->params, "Parameter override NAME=VALUE (repeatable; see 'ssfx methods')")
         ->allow_extra_args(false);
@@ -134,6 +283,14 @@ void addAaCommand(CLI::App& app) {
     cmd->add_option("--threads", opts->threads, "Worker threads (0 = all; the output bytes do not depend on it)")
         ->check(CLI::Range(0, 1024));
     cmd->add_flag("--list-presets", opts->listPresets, "Print the presets with their thresholds and exit");
+    cmd->footer(
+        "Sequences: frames run in parallel, a few per thread in memory at a time, and are written in order;\n"
+        "a numbered output keeps the input's frame numbers (raw or folder input: 0, 1, ...).\n"
+        "  ssfx aa -m ddaa2 'in/frame.%04d.png' -o 'out/frame.%04d.png' --frames 1-240\n"
+        "  ssfx aa -m ddaa2 in/ -o out/\n"
+        "  ffmpeg -i in.mkv -f rawvideo -pix_fmt rgba - | ssfx aa --raw 1920x1080 -m ddaa2 - -o - |\n"
+        "    ffmpeg -f rawvideo -pix_fmt rgba -s 1920x1080 -i - -c:v ffv1 out.mkv\n"
+        "A raw stream cut short is an error naming the frame; the frames before it are written whole.");
     cmd->callback([opts] { run(*opts); });
 }
 

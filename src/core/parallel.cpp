@@ -2,6 +2,7 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_pipeline.h>
 #include <tbb/task_arena.h>
 
 #include <algorithm>
@@ -45,6 +46,32 @@ void parallelRows(int height, const Exec& exec, const std::function<void(int, in
         tbb::parallel_for(tbb::blocked_range<int>(0, blocks, 1), [&](const tbb::blocked_range<int>& r) {
             for (int b = r.begin(); b != r.end(); ++b) runBlock(b);
         });
+    });
+}
+
+void orderedPipeline(int inFlight, const Exec& exec, const std::function<bool(int)>& produce,
+                     const std::function<void(int)>& work, const std::function<void(int)>& consume) {
+    const int threads = resolvedThreads(exec);
+    if (threads == 1 || inFlight <= 1) {  // inline, one item at a time
+        for (int i = 0; produce(i); ++i) work(i), consume(i);
+        return;
+    }
+    int next = 0;
+    arenaFor(threads).execute([&] {
+        tbb::parallel_pipeline(
+            std::size_t(inFlight),
+            tbb::make_filter<void, int>(tbb::filter_mode::serial_in_order, [&](tbb::flow_control& fc) {
+                const int i = next;
+                if (!produce(i)) {
+                    fc.stop();
+                    return -1;
+                }
+                ++next;
+                return i;
+            }) & tbb::make_filter<int, int>(tbb::filter_mode::parallel, [&](int i) {
+                work(i);
+                return i;
+            }) & tbb::make_filter<int, void>(tbb::filter_mode::serial_in_order, [&](int i) { consume(i); }));
     });
 }
 

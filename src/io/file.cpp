@@ -209,6 +209,11 @@ void AtomicFile::write(std::span<const std::uint8_t> bytes) {
         throw Error(fmt::format("{}: write failed ({})", path_, std::strerror(errno)));
 }
 
+void AtomicFile::flush() {
+    if (file_ && std::fflush(file_) != 0)
+        throw Error(fmt::format("{}: write failed ({})", path_, std::strerror(errno)));
+}
+
 namespace {
 thread_local OutputSet* gOpenSet = nullptr;
 }  // namespace

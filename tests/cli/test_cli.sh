@@ -51,6 +51,48 @@ check scene 0 "$SSFX" testscene --out "$OUT/scene" --width 64 --height 48
 check aa 0 "$SSFX" aa -m ddaa2 "$OUT/scene/scene.png" -o "$OUT/ddaa2.png" --preset high --threads 2
 [ -s "$OUT/ddaa2.png" ] || { echo "FAIL aa: no output"; fail=1; }
 check resolve 0 "$SSFX" aa -m ssaax4 "$OUT/scene/scenex4.png" -o "$OUT/ssaax4.png"
+# Frame sequences: numbered files, folders, raw streams; each frame as the per-file CLI gives it.
+mkdir -p "$OUT/seq/in"
+for i in 1 2 3; do "$SSFX" aa -m blur "$OUT/scene/scene.png" -o "$OUT/seq/in/f.000$i.png" -p sigma=0.$((i + 3)); done
+check seq 0 "$SSFX" aa -m ddaa2 "$OUT/seq/in/f.%04d.png" -o "$OUT/seq/out/f.%04d.png" --threads 2
+check seq_dir 0 "$SSFX" aa -m ddaa2 "$OUT/seq/in" -o "$OUT/seq/dir"
+for i in 1 2 3; do
+  "$SSFX" aa -m ddaa2 "$OUT/seq/in/f.000$i.png" -o "$OUT/seq/one.png"
+  cmp -s "$OUT/seq/one.png" "$OUT/seq/out/f.000$i.png" || { echo "FAIL seq: frame $i differs from the per-file run"; fail=1; }
+  cmp -s "$OUT/seq/one.png" "$OUT/seq/dir/f.000$i.png" || { echo "FAIL seq_dir: frame $i differs from the per-file run"; fail=1; }
+done
+check seq_range 0 "$SSFX" aa -m noaa "$OUT/seq/in/f.%04d.png" -o "$OUT/seq/r/g_%d.png" --frames 2-3
+[ -s "$OUT/seq/r/g_2.png" ] && [ -s "$OUT/seq/r/g_3.png" ] && [ ! -e "$OUT/seq/r/g_1.png" ] ||
+  { echo "FAIL seq_range: not frames 2 and 3 alone"; fail=1; }
+check seq_missing 2 "$SSFX" aa -m ddaa2 "$OUT/seq/in/f.%04d.png" -o "$OUT/seq/m/f.%04d.png" --frames 2-5
+contains seq_missing "$OUT/seq_missing.err" "2 of 4 frames are missing, the first: .*f.0004.png"
+[ ! -e "$OUT/seq/m" ] || [ -z "$(ls "$OUT/seq/m")" ] || { echo "FAIL seq_missing: wrote frames"; fail=1; }
+check seq_badpattern 2 "$SSFX" aa -m ddaa2 "$OUT/seq/in/f.%s.png" -o "$OUT/seq/b/f.%04d.png"
+contains seq_badpattern "$OUT/seq_badpattern.err" "frame pattern"
+check seq_frames_alone 2 "$SSFX" aa -m ddaa2 "$OUT/scene/scene.png" -o "$OUT/x.png" --frames 1-2
+check seq_raw_nosize 2 "$SSFX" aa -m ddaa2 - -o -
+contains seq_raw_nosize "$OUT/seq_raw_nosize.err" "--raw WxH"
+# Raw RGBA8 through pipes: the numbered frames out as raw (noaa), ddaa2 raw to raw, back to
+# numbered PNGs: the same bytes as the numbered run.
+check seq_to_raw 0 "$SSFX" aa -m noaa "$OUT/seq/in/f.%04d.png" -o "$OUT/seq/in.rgba" --raw 64x48
+"$SSFX" aa --raw 64x48 -m ddaa2 - -o - <"$OUT/seq/in.rgba" >"$OUT/seq/out.rgba" 2>"$OUT/seq_pipe.err" ||
+  { echo "FAIL seq_pipe: exit $?"; cat "$OUT/seq_pipe.err"; fail=1; }
+check seq_from_raw 0 "$SSFX" aa --raw 64x48 -m noaa "$OUT/seq/out.rgba" -o "$OUT/seq/back/f.%04d.png"
+for i in 1 2 3; do
+  cmp -s "$OUT/seq/out/f.000$i.png" "$OUT/seq/back/f.000$(($i - 1)).png" ||
+    { echo "FAIL seq_pipe: raw frame $((i - 1)) differs from the numbered run"; fail=1; }
+done
+# A raw stream cut short: exit 2 naming the frame; the two frames before it come out whole.
+head -c $((64 * 48 * 4 * 2 + 1000)) "$OUT/seq/in.rgba" >"$OUT/seq/cut.rgba"
+"$SSFX" aa --raw 64x48 -m ddaa2 - -o - <"$OUT/seq/cut.rgba" >"$OUT/seq/cut_out.rgba" 2>"$OUT/seq_cut.err"
+[ $? = 2 ] || { echo "FAIL seq_cut: exit code"; fail=1; }
+contains seq_cut "$OUT/seq_cut.err" "raw frame 2 is cut short: 1000 of 12288 bytes"
+[ "$(stat -c %s "$OUT/seq/cut_out.rgba")" = $((64 * 48 * 4 * 2)) ] || { echo "FAIL seq_cut: not 2 whole frames out"; fail=1; }
+cmp -s "$OUT/seq/cut_out.rgba" <(head -c $((64 * 48 * 4 * 2)) "$OUT/seq/out.rgba") ||
+  { echo "FAIL seq_cut: the frames before the cut differ"; fail=1; }
+# ... and into a file: no file at all (never a partial output).
+check seq_cut_file 2 "$SSFX" aa --raw 64x48 -m ddaa2 "$OUT/seq/cut.rgba" -o "$OUT/seq/cut_file.rgba"
+[ ! -e "$OUT/seq/cut_file.rgba" ] || { echo "FAIL seq_cut_file: a partial file was left"; fail=1; }
 check param 0 "$SSFX" aa -m ddaa2 -p strength=2 -p searchRounds=3 "$OUT/scene/scene.png" -o "$OUT/p.png"
 # The same parameter rules as the library: a value outside a table's range, a non-integer
 # integer, an unknown choice (exit 2).

@@ -22,4 +22,13 @@ void parallelRows(int height, const Exec& exec, const std::function<void(int, in
 //! Number of threads Exec resolves to on this machine.
 int resolvedThreads(const Exec& exec);
 
+//! Items through three stages with at most `inFlight` items alive at once (bounded memory;
+//! the caller keeps them, e.g. in `inFlight` slots indexed by i % inFlight):
+//! produce(i) for i = 0, 1, ... in order on one thread at a time, until it returns false;
+//! work(i) on several items in parallel; consume(i) in order on one thread at a time. An
+//! exception from any stage stops the pipeline and is rethrown (a producer that wants the
+//! items before it finished first returns false and reports its error afterwards).
+void orderedPipeline(int inFlight, const Exec& exec, const std::function<bool(int)>& produce,
+                     const std::function<void(int)>& work, const std::function<void(int)>& consume);
+
 }  // namespace ssfx

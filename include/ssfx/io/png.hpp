@@ -101,6 +101,8 @@ public:
     AtomicFile(const AtomicFile&) = delete;
     AtomicFile& operator=(const AtomicFile&) = delete;
     void write(std::span<const std::uint8_t> bytes);
+    //! Hands what was written on (to a pipe's reader, say); the commit still decides.
+    void flush();
     void commit();
     const std::string& path() const { return path_; }
 
