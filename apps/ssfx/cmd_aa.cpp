@@ -160,45 +160,45 @@ void runFrames(const AaOptions& o, const MethodInfo& m, const MethodSettings& se
     }
     const int count = in.raw ? -1 : int(in.files.size());
     auto name = [&](int i) { return in.raw ? fmt::format("{} frame {}", in.rawName, i) : in.files[std::size_t(i)]; };
-    // Frames in flight: a few per thread, each an input and an output slot.
+    // Frames in flight: a few per thread, each an input, an output and its PNG slot. Files are
+    // decoded and encoded in the parallel stage; only the raw stream is read in order.
     const int slots = 2 * resolvedThreads(exec);
     const auto slotCount = std::size_t(slots);
     std::vector<ImageRgba8> inputs(slotCount), outputs(slotCount);
+    std::vector<std::vector<std::uint8_t>> encoded(slotCount);
     std::optional<Error> stopped;  // a raw stream cut short: reported after the frames before it
     orderedPipeline(
         slots, exec,
         [&](int i) {
-            if (count >= 0 && i >= count) return false;
-            ImageRgba8& slot = inputs[std::size_t(i % slots)];
-            if (!in.raw) {
-                slot = io::readPng(in.files[std::size_t(i)]);
-                return true;
-            }
+            if (!in.raw) return i < count;
             try {
-                return in.raw->read(slot);
+                return in.raw->read(inputs[std::size_t(i % slots)]);
             } catch (const Error& e) {
                 stopped.emplace(e.what());
                 return false;
             }
         },
         [&](int i) {
+            const auto slot = std::size_t(i % slots);
+            if (!in.raw) inputs[slot] = io::readPng(in.files[std::size_t(i)]);
             try {
-                outputs[std::size_t(i % slots)] = m.run(inputs[std::size_t(i % slots)].view(), settings, exec);
+                outputs[slot] = m.run(inputs[slot].view(), settings, exec);
             } catch (const Error& e) {  // e.g. a resolve's size rule: say which frame
                 throw Error(fmt::format("{}: {}", name(i), e.what()));
             }
+            if (!rawOut) encoded[slot] = io::encodePng(outputs[slot].view());
         },
         [&](int i) {
-            const ImageRgba8& out = outputs[std::size_t(i % slots)];
+            const auto slot = std::size_t(i % slots);
             if (rawOut) {
-                rawOut->write(out.view());
+                rawOut->write(outputs[slot].view());
             } else if (pattern) {
-                io::writePng(pattern->path(in.numbers.empty() ? i : in.numbers[std::size_t(i)]), out.view());
+                io::writeFileAtomic(pattern->path(in.numbers.empty() ? i : in.numbers[std::size_t(i)]), encoded[slot]);
             } else {
-                io::writePng(
+                io::writeFileAtomic(
                     (std::filesystem::path(o.output) / std::filesystem::path(in.files[std::size_t(i)]).filename())
                         .string(),
-                    out.view());
+                    encoded[slot]);
             }
         });
     if (stopped) throw *stopped;

@@ -35,19 +35,20 @@ DescriptorSets::DescriptorSets(const Context& ctx, const vk::raii::DescriptorSet
     sets_ = vk::raii::DescriptorSets(ctx.device, vk::DescriptorSetAllocateInfo(*pool_, layouts));
 }
 
-void DescriptorSets::bind(std::size_t set, std::uint32_t binding, const Buffer& buffer) {
+vk::DescriptorType DescriptorSets::typeOf(std::uint32_t binding) const {
     if (binding >= bindings_.size()) throw Error(fmt::format("descriptor binding {} of {}", binding, bindings_.size()));
+    return bindings_[binding].type;
+}
+
+void DescriptorSets::bind(std::size_t set, std::uint32_t binding, const Buffer& buffer) {
     const vk::DescriptorBufferInfo info(*buffer.buffer, 0, VK_WHOLE_SIZE);
-    ctx_->device.updateDescriptorSets(
-        vk::WriteDescriptorSet(*sets_[set], binding, 0, bindings_[binding].type, {}, info), {});
+    ctx_->device.updateDescriptorSets(vk::WriteDescriptorSet(*sets_[set], binding, 0, typeOf(binding), {}, info), {});
 }
 
 void DescriptorSets::bind(std::size_t set, std::uint32_t binding, vk::ImageView view, vk::ImageLayout layout,
                           vk::Sampler sampler) {
-    if (binding >= bindings_.size()) throw Error(fmt::format("descriptor binding {} of {}", binding, bindings_.size()));
     const vk::DescriptorImageInfo info(sampler, view, layout);
-    ctx_->device.updateDescriptorSets(vk::WriteDescriptorSet(*sets_[set], binding, 0, bindings_[binding].type, info),
-                                      {});
+    ctx_->device.updateDescriptorSets(vk::WriteDescriptorSet(*sets_[set], binding, 0, typeOf(binding), info), {});
 }
 
 ComputePipeline::ComputePipeline(const Context& ctx, std::span<const std::uint32_t> spirv,

@@ -37,6 +37,9 @@ public:
               vk::Sampler sampler = nullptr);
 
 private:
+    //! The type of `binding`; an ssfx::Error when the layout has no such binding.
+    vk::DescriptorType typeOf(std::uint32_t binding) const;
+
     const Context* ctx_;
     std::vector<BindingSpec> bindings_;
     vk::raii::DescriptorPool pool_{nullptr};
