@@ -25,7 +25,10 @@ public:
     MemoryIStream(std::span<const std::uint8_t> bytes, const std::string& name)
         : Imf::IStream(name.c_str()), b_(bytes) {}
     bool read(char c[], int n) override {
-        if (n < 0 || pos_ + std::uint64_t(n) > b_.size()) throw IEX_NAMESPACE::InputExc("file is truncated");
+        // Written so that it cannot overflow: a corrupt offset table can seek to any 64-bit
+        // position, and pos_ + n would wrap around to a small number.
+        if (n < 0 || pos_ > b_.size() || std::uint64_t(n) > b_.size() - pos_)
+            throw IEX_NAMESPACE::InputExc("file is truncated");
         std::memcpy(c, b_.data() + pos_, std::size_t(n));
         pos_ += std::uint64_t(n);
         return pos_ < b_.size();
