@@ -1,6 +1,7 @@
 // ssfx aa: apply an anti-aliasing method to a PNG (or every frame of an APNG).
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <charconv>
 #include <cstdio>
@@ -10,6 +11,7 @@
 #include <optional>
 
 #include "apps/ssfx/commands.hpp"
+#include "apps/ssfx/console.hpp"
 #include "ssfx/aa/presets.hpp"
 #include "ssfx/core/parallel.hpp"
 #include "ssfx/io/png.hpp"
@@ -167,6 +169,8 @@ void runFrames(const AaOptions& o, const MethodInfo& m, const MethodSettings& se
     std::vector<ImageRgba8> inputs(slotCount), outputs(slotCount);
     std::vector<std::vector<std::uint8_t>> encoded(slotCount);
     std::optional<Error> stopped;  // a raw stream cut short: reported after the frames before it
+    ProgressLine progress("aa");
+    const std::string what = in.raw ? in.rawName : o.input;
     orderedPipeline(
         slots, exec,
         [&](int i) {
@@ -200,6 +204,7 @@ void runFrames(const AaOptions& o, const MethodInfo& m, const MethodSettings& se
                         .string(),
                     encoded[slot]);
             }
+            progress.report({what, i + 1, std::max(count, 0), "frames"});
         });
     if (stopped) throw *stopped;
     if (rawFile) rawFile->commit();
@@ -237,11 +242,16 @@ void run(const AaOptions& o) {
     const std::vector<std::uint8_t> bytes = io::readFile(o.input, io::kMaxImageFileBytes, "PNG", io::kPngMagic);
     if (io::isApng(bytes)) {
         io::Animation anim = io::decodeApng(bytes, o.input);
-        for (std::size_t i = 0; i < anim.frames.size(); ++i) try {
+        ProgressLine progress("aa");
+        const auto n = std::int64_t(anim.frames.size());
+        for (std::size_t i = 0; i < anim.frames.size(); ++i) {
+            try {
                 anim.frames[i].image = m.run(anim.frames[i].image.view(), settings, exec);
             } catch (const Error& e) {  // e.g. a resolve's size rule: say which file and frame
                 throw Error(fmt::format("{} (frame {}): {}", o.input, i, e.what()));
             }
+            progress.report({o.input, std::int64_t(i) + 1, n, "frames"});
+        }
         io::writeApng(o.output, anim);
     } else {
         const ImageRgba8 in = io::decodePng(bytes, o.input);

@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "apps/ssfx/commands.hpp"
+#include "apps/ssfx/console.hpp"
 #include "ssfx/ao/registry.hpp"
 #include "ssfx/io/camera.hpp"
 #include "ssfx/io/exr.hpp"
@@ -127,7 +128,8 @@ void run(const AoOptions& o, const CLI::App& cmd) {
     if (!o.saveDepth.empty()) io::writeExr(o.saveDepth, depth.view(), "Z");
     if (!o.saveCamera.empty()) io::writeCameraJson(o.saveCamera, cam);
     if (o.output.empty()) return;
-    ao::AoInput input{depth.view(), cam, nullptr};
+    ProgressLine line("ao");
+    ao::AoInput input{depth.view(), cam, nullptr, line.fn()};
     if (method.needsGeometry) input.geometry = meshScene ? meshScene.get() : static_cast<const ao::RayScene*>(&*scene);
     const ImageF a = method.run(input, params, exec);
     writeAo(o.output, a);

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/ssfx/commands.hpp"
+#include "apps/ssfx/console.hpp"
 #include "ssfx/aa/resolve.hpp"
 #include "ssfx/eval/machine.hpp"
 #include "ssfx/eval/speed.hpp"
@@ -38,20 +39,23 @@ void run(const BenchOptions& o) {
         for (const MethodInfo& m : methods()) ids.emplace_back(m.id);
     for (const auto& id : ids) methodById(id);  // every id checked before any work
     const ImageRgba8 first = input(1);
+    ProgressLine line("bench");
     const auto results = eval::timeMethodsOn(
         ids, [&](int scale) { return scale == 1 ? first : input(scale); }, o.reps, o.warmup, exec,
-        [](int r, int n) {
-            std::fprintf(stderr, "\rbench: round %d/%d", r, n);
-            if (r == n) std::fprintf(stderr, "\n");
+        [&](int r, int n) {
+            line.report({"interleaved rounds", r, n, "rounds"});
         });
+    line.end();
     const eval::MachineInfo mi = eval::machineInfo(resolvedThreads(exec));
-    fmt::print("image: {} ({}x{}); {} repetitions, methods interleaved, fastest and slowest quarter dropped\n", source,
-               first.width(), first.height(), o.reps);
-    fmt::print("machine: {}, {} threads used of {}, SIMD target {}\n\n", mi.cpu, mi.threads, mi.hardwareThreads,
-               mi.simdTarget);
-    fmt::print("{:<8} {:>10} {:>12} {:>14}\n", "method", "median ms", "trimmed ms", "% of blur");
+    std::string table =
+        fmt::format("image: {} ({}x{}); {} repetitions, methods interleaved, fastest and slowest quarter dropped\n",
+                    source, first.width(), first.height(), o.reps);
+    table += fmt::format("machine: {}, {} threads used of {}, SIMD target {}\n\n", mi.cpu, mi.threads,
+                         mi.hardwareThreads, mi.simdTarget);
+    table += fmt::format("{:<8} {:>10} {:>12} {:>14}\n", "method", "median ms", "trimmed ms", "% of blur");
     for (const auto& r : results)
-        fmt::print("{:<8} {:>10.3f} {:>12.3f} {:>14.0f}\n", r.id, r.medianMs, r.trimmedMeanMs, r.relative);
+        table += fmt::format("{:<8} {:>10.3f} {:>12.3f} {:>14.0f}\n", r.id, r.medianMs, r.trimmedMeanMs, r.relative);
+    if (o.json != "-") printResult(table);
 
     if (!o.json.empty()) {
         nlohmann::json j;
@@ -68,7 +72,7 @@ void run(const BenchOptions& o) {
             j["methods"][r.id] = {
                 {"median_ms", r.medianMs}, {"trimmed_mean_ms", r.trimmedMeanMs}, {"relative", r.relative}};
         const std::string text = j.dump(2) + "\n";
-        io::writeTextAtomic(o.json, text);
+        writeOutput(o.json, text);
     }
 }
 
@@ -79,7 +83,8 @@ void addBenchCommand(CLI::App& app) {
     auto* cmd = app.add_subcommand("bench", "Time every method relative to blur (= 100), as the DDAA paper's Table 3");
     cmd->add_option("--image", opts->image,
                     "PNG to benchmark on (default: a synthetic 1920x1080 drawing); ssaa methods get it upscaled");
-    cmd->add_option("--json", opts->json, "Also write the results as JSON to this file");
+    cmd->add_option("--json", opts->json,
+                    "Also write the results as JSON to this file ('-': to stdout, instead of the table)");
     cmd->add_option("--methods", opts->methods, "Methods to time (default: all; blur is always included)")
         ->delimiter(',');
     cmd->add_option("--reps", opts->reps, "Timed repetitions per method (default 40)")->check(CLI::Range(4, 100000));

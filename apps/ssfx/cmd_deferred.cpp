@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "apps/ssfx/commands.hpp"
+#include "apps/ssfx/console.hpp"
 #include "ssfx/core/error.hpp"
 #include "ssfx/deferred/registry.hpp"
 #include "ssfx/eval/metrics.hpp"
@@ -58,7 +59,7 @@ void run(const DeferredOptions& o) {
     io::writePng((dir / "k_depth.png").string(), eval::heatMap(a.kDepth.view(), 0.0f, n).view());
     io::writePng((dir / "k_normal.png").string(), eval::heatMap(a.kNormal.view(), 0.0f, n).view());
     io::writePng((dir / "k_shading.png").string(), eval::heatMap(a.kShading.view(), 0.0f, n).view());
-    fmt::print(
+    std::string summary = fmt::format(
         "{} {}x{} m={} on {}: G-buffer {:.1f} ms (GPU); adaptive {:.1f} ms (first {:.1f}, evaluate {:.1f}, rest "
         "{:.1f}), {:.2f} % of the samples",
         scene.name, w, h, o.m, renderer.device().name, g.gpuMs, a.totalMs(), a.firstMs, a.evaluateMs, a.restMs,
@@ -68,10 +69,10 @@ void run(const DeferredOptions& o) {
         io::writePng((dir / "error.png").string(),
                      eval::heatMap(deferred::absoluteError(a.image, ref->image).view(), 0.0f, 0.05f).view());
         const double mse = deferred::mse(a.image, ref->image);
-        fmt::print("; brute force {:.1f} ms; MSE {:.3g} (x1e-5: {:.2f}), PSNR {:.2f} dB", ref->restMs, mse, mse * 1e5,
-                   eval::psnrFromMse(mse));
+        summary += fmt::format("; brute force {:.1f} ms; MSE {:.3g} (x1e-5: {:.2f}), PSNR {:.2f} dB", ref->restMs, mse,
+                               mse * 1e5, eval::psnrFromMse(mse));
     }
-    fmt::print(" -> {}\n", o.out);
+    printResult(summary + fmt::format(" -> {}\n", o.out));
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <map>
 
 #include "apps/ssfx/commands.hpp"
+#include "apps/ssfx/console.hpp"
 #include "ssfx/eval/ao_experiments.hpp"
 #include "ssfx/eval/kernels.hpp"
 #include "ssfx/eval/quality.hpp"
@@ -26,7 +27,8 @@ namespace ssfx::cli {
 
 namespace {
 
-void progressLine(const std::string& s) { std::fprintf(stderr, "eval: %s\n", s.c_str()); }
+// Steps of the evaluation go to the command's progress line (a log line each off a terminal).
+void progressLine(const Progress& p) { reportProgress(p); }
 
 void addQuality(CLI::App& eval) {
     struct Options {
@@ -38,8 +40,8 @@ void addQuality(CLI::App& eval) {
     auto* cmd = eval.add_subcommand("quality", "PSNR and SSIM of every method against the x8 render (paper's Table 2)");
     cmd->add_option("dir", o->dir, "Directory with NAME.png, NAMEx2/x4/x8.png (e.g. from 'ssfx testimages')")
         ->required();
-    cmd->add_option("--json", o->json, "Also write the tables as JSON");
-    cmd->add_option("--md", o->markdown, "Also write the tables as Markdown");
+    cmd->add_option("--json", o->json, "Also write the tables as JSON ('-': to stdout, instead of the table)");
+    cmd->add_option("--md", o->markdown, "Also write the tables as Markdown ('-': to stdout)");
     cmd->add_option("--source", o->source,
                     "compute: run each method on the renders; given: score the NAME_METHOD.png files in DIR")
         ->check(CLI::IsMember({"compute", "given"}));
@@ -57,6 +59,8 @@ void addQuality(CLI::App& eval) {
         "Mitchell filter and compared with NAMEx8.png: PSNR = 10 log10(1 / MSE) over RGB in [0,1];\n"
         "SSIM on non-overlapping 8x8 windows (docs/evaluation.md).");
     cmd->callback([o] {
+        ProgressLine line("eval", true);
+        const bool toStdout = anyStdout({o->json, o->markdown});  // checked before the work
         eval::QualityOptions q;
         q.methods = o->methods;
         q.images = o->images;
@@ -67,9 +71,9 @@ void addQuality(CLI::App& eval) {
         q.exec = Exec{o->threads};
         q.progress = progressLine;
         const eval::QualityTable t = eval::evaluateQuality(o->dir, q);
-        fmt::print("{}", eval::qualityText(t));
-        if (!o->json.empty()) io::writeTextAtomic(o->json, eval::qualityJson(t));
-        if (!o->markdown.empty()) io::writeTextAtomic(o->markdown, eval::qualityMarkdown(t));
+        if (!toStdout) printResult(eval::qualityText(t));
+        if (!o->json.empty()) writeOutput(o->json, eval::qualityJson(t));
+        if (!o->markdown.empty()) writeOutput(o->markdown, eval::qualityMarkdown(t));
     });
 }
 
@@ -89,8 +93,8 @@ void addTemporal(CLI::App& eval) {
                     "(outputs made elsewhere, e.g. the DDAA author's) against the same x8 truth")
         ->check(CLI::IsMember({"compute", "given"}));
     cmd->add_option("--out", o->out, "Write NAME_METHOD.png and NAME_truth.png (APNG) to this directory");
-    cmd->add_option("--json", o->json, "Also write the results as JSON");
-    cmd->add_option("--md", o->markdown, "Also write the results as Markdown");
+    cmd->add_option("--json", o->json, "Also write the results as JSON ('-': to stdout, instead of the table)");
+    cmd->add_option("--md", o->markdown, "Also write the results as Markdown ('-': to stdout)");
     cmd->add_option("--methods", o->methods,
                     "Methods (default: the quality table's; with --source given: those whose NAME_METHOD.png exists)")
         ->delimiter(',');
@@ -103,6 +107,8 @@ void addTemporal(CLI::App& eval) {
         "92 MB), plus two 1x frames per method (and each 1x frame with --out: APNGs are written as they\n"
         "come), whatever the number of frames (docs/evaluation.md).");
     cmd->callback([o] {
+        ProgressLine line("eval", true);
+        const bool toStdout = anyStdout({o->json, o->markdown});  // checked before the work
         if (o->source == "given" && o->dir.empty())
             throw Error("--source given needs --dir (where NAME_METHOD.png are)");
         std::unique_ptr<eval::FrameSource> source;
@@ -170,9 +176,9 @@ void addTemporal(CLI::App& eval) {
         const eval::TemporalRun run =
             given.empty() ? eval::evaluateTemporal(*source, t) : eval::evaluateTemporalGiven(*source, given, t);
         for (auto& w : writers) w->commit();
-        fmt::print("{}", eval::temporalMarkdown(run.results));
-        if (!o->json.empty()) io::writeTextAtomic(o->json, eval::temporalJson(run.results));
-        if (!o->markdown.empty()) io::writeTextAtomic(o->markdown, eval::temporalMarkdown(run.results));
+        if (!toStdout) printResult(eval::temporalMarkdown(run.results));
+        if (!o->json.empty()) writeOutput(o->json, eval::temporalJson(run.results));
+        if (!o->markdown.empty()) writeOutput(o->markdown, eval::temporalMarkdown(run.results));
     });
 }
 
@@ -191,13 +197,14 @@ void addKernels(CLI::App& eval) {
     cmd->add_flag_function(
         "--edge", [o](std::int64_t) { o->k.shape = eval::KernelExperimentOptions::Shape::Edge; },
         "Half-plane edges instead of lines");
-    cmd->add_option("--json", o->json, "Also write the results (with the error per angle) as JSON");
-    cmd->add_option("--md", o->markdown, "Also write the table as Markdown");
+    cmd->add_option("--json", o->json, "Also write the results (with the error per angle) as JSON ('-': to stdout)");
+    cmd->add_option("--md", o->markdown, "Also write the table as Markdown ('-': to stdout)");
     cmd->callback([o] {
+        const bool toStdout = anyStdout({o->json, o->markdown});
         const auto e = eval::runKernelExperiment(o->k);
-        fmt::print("{}", eval::kernelMarkdown(e));
-        if (!o->json.empty()) io::writeTextAtomic(o->json, eval::kernelJson(e));
-        if (!o->markdown.empty()) io::writeTextAtomic(o->markdown, eval::kernelMarkdown(e));
+        if (!toStdout) printResult(eval::kernelMarkdown(e));
+        if (!o->json.empty()) writeOutput(o->json, eval::kernelJson(e));
+        if (!o->markdown.empty()) writeOutput(o->markdown, eval::kernelMarkdown(e));
     });
 }
 
@@ -218,15 +225,17 @@ void addSpeed(CLI::App& eval) {
     cmd->add_option("--reps", o->s.repetitions, "Timed repetitions (default 40)")->check(CLI::Range(4, 100000));
     cmd->add_option("--warmup", o->s.warmup, "Untimed rounds first (default 3)")->check(CLI::Range(0, 1000));
     cmd->add_option("--threads", o->threads, "Worker threads (0 = all)")->check(CLI::Range(0, 1024));
-    cmd->add_option("--json", o->json, "Also write the results as JSON");
-    cmd->add_option("--md", o->markdown, "Also write the tables as Markdown");
+    cmd->add_option("--json", o->json, "Also write the results as JSON ('-': to stdout, instead of the table)");
+    cmd->add_option("--md", o->markdown, "Also write the tables as Markdown ('-': to stdout)");
     cmd->callback([o] {
+        ProgressLine line("eval", true);
+        const bool toStdout = anyStdout({o->json, o->markdown});  // checked before the work
         o->s.exec = Exec{o->threads};
         o->s.progress = progressLine;
         const auto t = eval::measureSpeed(o->dir, o->s);
-        fmt::print("{}", eval::speedMarkdown(t));
-        if (!o->json.empty()) io::writeTextAtomic(o->json, eval::speedJson(t));
-        if (!o->markdown.empty()) io::writeTextAtomic(o->markdown, eval::speedMarkdown(t));
+        if (!toStdout) printResult(eval::speedMarkdown(t));
+        if (!o->json.empty()) writeOutput(o->json, eval::speedJson(t));
+        if (!o->markdown.empty()) writeOutput(o->markdown, eval::speedMarkdown(t));
     });
 }
 
@@ -249,11 +258,11 @@ eval::AoSceneSource renderedAoScenes(const std::vector<std::string>& specs) {
                 scene = scene::loadScene(scenePath);
             } catch (const Error& e) {
                 if (scenePath.find('/') == std::string::npos) throw;  // a built-in name: a real error
-                progressLine(fmt::format("ao: skipping {} ({})", scenePath, e.what()));
+                progressLine({fmt::format("ao: skipping {} ({})", scenePath, e.what())});
                 continue;
             }
             if (!renderer) renderer = std::make_unique<render::Renderer>();
-            progressLine(fmt::format("ao: rendering {} on {}", spec, renderer->device().name));
+            progressLine({fmt::format("ao: rendering {} on {}", spec, renderer->device().name)});
             const scene::View& view = viewName.empty() ? scene.views.at(0).second : scene.view(viewName);
             auto r = renderer->renderDepth(scene, view, width, height, DepthFormat::D32F, guard);
             out.push_back({scene.name, std::move(r.depth), r.camera.camera,
@@ -262,7 +271,7 @@ eval::AoSceneSource renderedAoScenes(const std::vector<std::string>& specs) {
         return out;
     };
 #else
-    if (!specs.empty()) progressLine("ao: built without the renderer; rendered scenes left out");
+    if (!specs.empty()) progressLine({"ao: built without the renderer; rendered scenes left out"});
     return {};
 #endif
 }
@@ -289,6 +298,7 @@ void addReport(CLI::App& eval) {
     cmd->add_flag("--no-render", *noRender,
                   "Leave out what needs the Vulkan renderer: the atrium in the quality table, adaptive supersampling");
     cmd->callback([o, threads, scenes, noRender] {
+        ProgressLine line("eval", true);
         // --author-data must name the data, and is not silently dropped by --quick.
         if (!o->authorDataDir.empty() && !std::filesystem::is_directory(o->authorDataDir))
             throw Error(
@@ -304,7 +314,7 @@ void addReport(CLI::App& eval) {
             o->addRenderSets = [quick = o->quick](const std::string& dir) {
                 render::Renderer renderer;
                 const scene::Scene scene = scene::atrium();
-                progressLine(fmt::format("report: rendering the atrium at 1x..8x on {}", renderer.device().name));
+                progressLine({fmt::format("report: rendering the atrium at 1x..8x on {}", renderer.device().name)});
                 const int w = quick ? 160 : 640, h = quick ? 90 : 360;
                 render::writeAaRenderSet(renderer, scene, scene.view("nave"), w, h, dir, "atrium");
                 return std::vector<std::pair<std::string, std::string>>{
@@ -332,7 +342,7 @@ void addReport(CLI::App& eval) {
         o->exec = Exec{*threads};
         o->progress = progressLine;
         eval::writeReport(*o);
-        std::fprintf(stderr, "eval: wrote %s/index.html\n", o->outDir.c_str());
+        printNote("eval", fmt::format("wrote {}/index.html", o->outDir));
     });
 }
 
@@ -357,8 +367,9 @@ void addDeferred(CLI::App& eval) {
     cmd->callback([o, threads, size] {
         std::tie(o->width, o->height) = parseSize(*size, "--size", 8192);
         o->exec = Exec{*threads};
+        ProgressLine line("eval", true);
         o->progress = progressLine;
-        fmt::print("{}", eval::markdown(eval::runDeferredExperiment(*o)));
+        printResult(eval::markdown(eval::runDeferredExperiment(*o)));
     });
 }
 #endif
@@ -383,10 +394,11 @@ void addAo(CLI::App& eval) {
         "their triangles ray traced with Embree. The ground truth is ray-traced obscurance with SAO's\n"
         "falloff (docs/evaluation.md).");
     cmd->callback([o, threads, scenes] {
+        ProgressLine line("eval", true);
         if (!(scenes->size() == 1 && scenes->front() == "none")) o->renderedScenes = renderedAoScenes(*scenes);
         o->exec = Exec{*threads};
         o->progress = progressLine;
-        fmt::print("{}", eval::markdown(eval::runAoExperiments(*o)));
+        printResult(eval::markdown(eval::runAoExperiments(*o)));
     });
 }
 

@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "apps/ssfx/commands.hpp"
+#include "apps/ssfx/console.hpp"
 #include "ssfx/ao/depth.hpp"
 #include "ssfx/core/error.hpp"
 #include "ssfx/io/exr.hpp"
@@ -84,10 +85,13 @@ void run(const RenderOptions& o) {
     io::OutputSet outputs;  // depth.exr, z.exr, camera.json, color.png, gbuffer.exr: all or none
     if (o.aaSet) {
         io::makeDirectories(o.out);
-        render::writeAaRenderSet(renderer, scene, view, w, h, o.out, scene.name);
+        {
+            ProgressLine line("render");
+            render::writeAaRenderSet(renderer, scene, view, w, h, o.out, scene.name, line.fn());
+        }
         outputs.commit();
-        fmt::print("{}: {}.png, {}x2.png, {}x4.png, {}x8.png -> {}\n", scene.name, scene.name, scene.name, scene.name,
-                   scene.name, o.out);
+        printResult(fmt::format("{}: {}.png, {}x2.png, {}x4.png, {}x8.png -> {}\n", scene.name, scene.name, scene.name,
+                                scene.name, scene.name, o.out));
         return;
     }
     const auto depth = renderer.renderDepth(scene, view, w, h, format, o.guard);
@@ -104,12 +108,13 @@ void run(const RenderOptions& o) {
     io::writePng((dir / "color.png").string(), color.color.view());
     if (gbuffer) scene::writeGBufferExr((dir / "gbuffer.exr").string(), *gbuffer);
     outputs.commit();
-    fmt::print("{} / {}: {} triangles, {}x{} + guard {} on {}: depth ({}) {:.2f} ms, colour x{} {:.2f} ms", scene.name,
-               o.view.empty() ? scene.views.at(0).first : o.view, scene.triangleCount(), w, h, o.guard,
-               renderer.device().name, o.depthFormat, depth.gpuMs, o.scale, color.gpuMs);
-    if (gbuffer) fmt::print(", G-buffer {}x{} {:.2f} ms", o.gbuffer, o.gbuffer, gbuffer->gpuMs);
-    fmt::print(" (GPU time) -> {}\n", o.out);
-    for (const auto& m : renderer.validationMessages()) fmt::print(stderr, "validation: {}\n", m);
+    std::string summary =
+        fmt::format("{} / {}: {} triangles, {}x{} + guard {} on {}: depth ({}) {:.2f} ms, colour x{} {:.2f} ms",
+                    scene.name, o.view.empty() ? scene.views.at(0).first : o.view, scene.triangleCount(), w, h, o.guard,
+                    renderer.device().name, o.depthFormat, depth.gpuMs, o.scale, color.gpuMs);
+    if (gbuffer) summary += fmt::format(", G-buffer {}x{} {:.2f} ms", o.gbuffer, o.gbuffer, gbuffer->gpuMs);
+    printResult(summary + fmt::format(" (GPU time) -> {}\n", o.out));
+    for (const auto& m : renderer.validationMessages()) printNote("validation", m);
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "apps/ssfx/commands.hpp"
+#include "apps/ssfx/console.hpp"
 #include "ssfx/eval/quality.hpp"
 #include "ssfx/eval/test_images.hpp"
 #include "ssfx/io/png.hpp"
@@ -40,7 +41,7 @@ void addTestimagesCommand(CLI::App& app) {
             const eval::TestImageInfo& info = eval::testImageByName(name);
             for (int scale : o->scales) {
                 const std::string file = eval::renderSetPath(o->out, name, scale);
-                std::fprintf(stderr, "testimages: %s\n", file.c_str());
+                printNote("testimages", file);
                 if (info.frames == 1) {
                     io::writePng(file, eval::drawTestImage(name, scale).view());
                     continue;

@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <atomic>
 #include <cmath>
 #include <numbers>
 
@@ -49,7 +50,7 @@ Vec3d primaryRay(const Projection& proj, float px, float py) {
 void validate(const RaytracedParams& p) { validateParams(kRaytracedParams, &p, "raytraced"); }
 
 ImageF raytraced(const RayScene& scene, const Camera& camera, int width, int height, const RaytracedParams& p,
-                 const Exec& exec) {
+                 const Exec& exec, const ProgressFn& progress) {
     validate(p);
     if (width <= 2 * p.guardBand || height <= 2 * p.guardBand)
         throw Error(fmt::format("raytraced: no pixels inside a guard band of {} in {}x{}", p.guardBand, width, height));
@@ -57,6 +58,7 @@ ImageF raytraced(const RayScene& scene, const Camera& camera, int width, int hei
     const int g = p.guardBand, w = width - 2 * g, h = height - 2 * g;
     const double r = p.radius, n = p.raysPerPixel;
     ImageF out(w, h);
+    std::atomic<std::int64_t> rowsDone{0};
     parallelRows(h, exec, [&](int r0, int r1) {
         for (int j = r0; j < r1; ++j)
             for (int i = 0; i < w; ++i) {
@@ -101,6 +103,7 @@ ImageF raytraced(const RayScene& scene, const Camera& camera, int width, int hei
                 }
                 out(i, j) = float(1.0 - occlusion / n);
             }
+        if (progress) progress({"ray tracing", rowsDone += r1 - r0, h, "rows"});
     });
     return out;
 }

@@ -76,7 +76,7 @@ const std::array<AoMethodInfo, 3> kAoMethods{{
         [](const AoInput& in, const AoParams& p, const Exec& e) {
             if (!in.geometry) throw Error("raytraced needs the scene's geometry (a depth buffer is not enough)");
             return raytraced(*in.geometry, in.camera, in.depth.width(), in.depth.height(),
-                             as<RaytracedParams>(p, "raytraced"), e);
+                             as<RaytracedParams>(p, "raytraced"), e, in.progress);
         }),
 }};
 

@@ -72,7 +72,7 @@ struct Context {
     fs::path out;
     nlohmann::ordered_json& j;
     void say(const std::string& s) const {
-        if (o.progress) o.progress(s);
+        if (o.progress) o.progress({s});
     }
     std::string image(const std::string& file) const { return (out / "images" / file).string(); }
 };

@@ -35,7 +35,7 @@ ImageF toFloat(const Image<std::uint8_t>& k) {
 
 Section runDeferredExperiment(const DeferredExperimentOptions& o) {
     auto say = [&](const std::string& s) {
-        if (o.progress) o.progress(s);
+        if (o.progress) o.progress({s});
     };
     deferred::validate(o.params);
     const fs::path out(o.outDir);

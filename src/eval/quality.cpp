@@ -120,7 +120,7 @@ QualityTable evaluateQuality(const std::string& dir, const QualityOptions& o) {
     for (const auto& id : t.methods) methodById(id);  // unknown ids fail before any work
     checkSettingsApply(t.methods, o.settings);
     auto say = [&](const std::string& s) {
-        if (o.progress) o.progress(s);
+        if (o.progress) o.progress({s});
     };
     for (const auto& name : t.images) {
         say(fmt::format("{}: loading renders", name));

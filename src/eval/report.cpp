@@ -45,7 +45,7 @@ struct Run {
     nlohmann::ordered_json all;
 
     void say(const std::string& s) const {
-        if (o.progress) o.progress(s);
+        if (o.progress) o.progress({s});
     }
     std::string images() const { return (out / "images").string(); }
     std::string path(const char* sub, const std::string& file) const { return (out / sub / file).string(); }

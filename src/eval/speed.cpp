@@ -46,7 +46,7 @@ SpeedTable measureSpeed(const std::string& dir, const SpeedOptions& o) {
     for (const auto& name : t.images) {
         auto file = [&](int scale) { return io::readPng(renderSetPath(dir, name, scale)); };
         auto rounds = [&](int r, int n) {
-            if (o.progress && (r == n || r % 10 == 0)) o.progress(fmt::format("speed: {} round {}/{}", name, r, n));
+            if (o.progress) o.progress({fmt::format("speed: {}", name), r, n, "rounds"});
         };
         t.results.push_back(timeMethodsOn(t.methods, file, o.repetitions, o.warmup, o.exec, rounds));
     }

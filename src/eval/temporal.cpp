@@ -174,7 +174,7 @@ TemporalRun runTemporal(FrameSource& source, const std::vector<std::string>& nam
     if (o.keepOutputs) run.outputs.resize(names.size());
     std::vector<TemporalScorer> scorers(names.size(), TemporalScorer(o.exec));
     for (int t = 0; t < frames; ++t) {
-        if (o.progress) o.progress(fmt::format("temporal: frame {}/{}", t + 1, frames));
+        if (o.progress) o.progress({"temporal", t + 1, frames, "frames"});
         const std::vector<ImageRgba8> outputs = outputsOf(t);
         const ImageRgba8 ref = truthFrame(source, t, outputs[0].width(), outputs[0].height(), o.exec);
         for (std::size_t m = 0; m < names.size(); ++m) {

@@ -429,12 +429,22 @@ ColorRender Renderer::renderColor(const scene::Scene& scene, const scene::View& 
 }
 
 void writeAaRenderSet(Renderer& renderer, const scene::Scene& scene, const scene::View& view, int width, int height,
-                      const std::string& dir, const std::string& name) {
+                      const std::string& dir, const std::string& name, const ProgressFn& progress) {
     std::vector<ImageRgba8> images;  // all rendered before any is written
-    for (int scale : {1, 2, 4, 8}) images.push_back(renderer.renderColor(scene, view, width, height, scale).color);
     const char* suffix[] = {"", "x2", "x4", "x8"};
-    for (std::size_t i = 0; i < images.size(); ++i)
+    // Eight steps: four renders, four PNGs (the x8 PNG alone takes longer than the renders).
+    auto step = [&](int done) {
+        if (progress) progress({"the 1x, x2, x4 and x8 images", done, 8, "steps"});
+    };
+    step(0);
+    for (int scale : {1, 2, 4, 8}) {
+        images.push_back(renderer.renderColor(scene, view, width, height, scale).color);
+        step(int(images.size()));
+    }
+    for (std::size_t i = 0; i < images.size(); ++i) {
         io::writePng(dir + "/" + name + suffix[i] + ".png", images[i].view());
+        step(int(i) + 5);
+    }
 }
 
 }  // namespace ssfx::render

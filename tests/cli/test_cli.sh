@@ -93,6 +93,13 @@ cmp -s "$OUT/seq/cut_out.rgba" <(head -c $((64 * 48 * 4 * 2)) "$OUT/seq/out.rgba
 # ... and into a file: no file at all (never a partial output).
 check seq_cut_file 2 "$SSFX" aa --raw 64x48 -m ddaa2 "$OUT/seq/cut.rgba" -o "$OUT/seq/cut_file.rgba"
 [ ! -e "$OUT/seq/cut_file.rgba" ] || { echo "FAIL seq_cut_file: a partial file was left"; fail=1; }
+# Progress: nothing off a terminal by default (stderr is a file here); with --progress a line
+# per redraw with the count, and its last state ends with the frame count and the time.
+[ ! -s "$OUT/seq_dir.err" ] || { echo "FAIL seq_dir: wrote to stderr off a terminal"; fail=1; }
+check seq_progress 0 "$SSFX" --progress aa -m ddaa2 "$OUT/seq/in" -o "$OUT/seq/dir_p"
+contains seq_progress "$OUT/seq_progress.err" "aa: .*seq/in  3/3 frames  [0-9.]* frames/s  0:0"
+check seq_quiet 0 "$SSFX" aa -q --progress -m ddaa2 "$OUT/seq/in" -o "$OUT/seq/dir_q"
+[ ! -s "$OUT/seq_quiet.err" ] && [ ! -s "$OUT/seq_quiet.out" ] || { echo "FAIL seq_quiet: -q printed"; fail=1; }
 check param 0 "$SSFX" aa -m ddaa2 -p strength=2 -p searchRounds=3 "$OUT/scene/scene.png" -o "$OUT/p.png"
 # The same parameter rules as the library: a value outside a table's range, a non-integer
 # integer, an unknown choice (exit 2).
@@ -176,6 +183,17 @@ check quality_given 0 "$SSFX" eval quality "$OUT/ti" --source given --methods dd
 check kernels 0 "$SSFX" eval kernels --step 10 --widths 1,2 --json "$OUT/k.json"
 contains kernels "$OUT/kernels.out" "scharr"
 check kernels_width 2 "$SSFX" eval kernels --widths 0
+# --json - puts the JSON alone on stdout (no table), -q keeps it and silences the rest; two
+# outputs to stdout are refused before any work.
+check kernels_json_stdout 0 "$SSFX" -q eval kernels --step 10 --widths 1 --json -
+python3 -c 'import json,sys; j=json.load(open(sys.argv[1])); assert "kernels" in j and "angles" in j' "$OUT/kernels_json_stdout.out" ||
+  { echo "FAIL kernels_json_stdout: stdout is not JSON alone"; fail=1; }
+[ ! -s "$OUT/kernels_json_stdout.err" ] || { echo "FAIL kernels_json_stdout: -q wrote to stderr"; fail=1; }
+check kernels_two_stdout 2 "$SSFX" eval kernels --step 10 --json - --md -
+contains kernels_two_stdout "$OUT/kernels_two_stdout.err" "only one output can go to stdout"
+check quality_quiet 0 "$SSFX" eval quality "$OUT/ti" --methods ddaa2 -q
+[ ! -s "$OUT/quality_quiet.err" ] && [ ! -s "$OUT/quality_quiet.out" ] || { echo "FAIL quality_quiet: -q printed"; fail=1; }
+contains quality "$OUT/quality.err" "eval: circles ddaa2: PSNR"
 check testimages_bad 2 "$SSFX" testimages --out "$OUT/ti2" --images nope
 contains testimages_bad "$OUT/testimages_bad.err" "unknown test image"
 check eval_nosub 2 "$SSFX" eval

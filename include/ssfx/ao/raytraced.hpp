@@ -19,6 +19,7 @@
 #include "ssfx/core/image.hpp"
 #include "ssfx/core/parallel.hpp"
 #include "ssfx/core/params.hpp"
+#include "ssfx/core/progress.hpp"
 
 namespace ssfx::ao {
 
@@ -60,9 +61,9 @@ void validate(const RaytracedParams& p);
 
 //! A for every pixel of the inner region of a width x height image seen by `camera`.
 //! Sky pixels (no primary hit, or the hit at or beyond a finite far plane, where a
-//! rasteriser leaves the cleared depth 1) are 1.
+//! rasteriser leaves the cleared depth 1) are 1. `progress` hears the rows done.
 ImageF raytraced(const RayScene& scene, const Camera& camera, int width, int height, const RaytracedParams& params = {},
-                 const Exec& exec = {});
+                 const Exec& exec = {}, const ProgressFn& progress = {});
 
 //! The primary ray through pixel centre (px, py) (unit direction, from the origin).
 Vec3d primaryRay(const Projection& proj, float px, float py);

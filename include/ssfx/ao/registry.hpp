@@ -11,6 +11,7 @@
 #include "ssfx/ao/raytraced.hpp"
 #include "ssfx/ao/sao.hpp"
 #include "ssfx/core/method.hpp"
+#include "ssfx/core/progress.hpp"
 
 namespace ssfx::ao {
 
@@ -24,6 +25,7 @@ struct AoInput {
     ImageView<const float> depth;
     Camera camera;
     const RayScene* geometry = nullptr;
+    ProgressFn progress;  //!< reported by the slow methods (raytraced: rows done)
 };
 
 struct AoMethodInfo : MethodDesc {

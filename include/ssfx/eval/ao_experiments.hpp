@@ -22,6 +22,7 @@
 #include "ssfx/ao/raytraced.hpp"
 #include "ssfx/core/image.hpp"
 #include "ssfx/core/parallel.hpp"
+#include "ssfx/core/progress.hpp"
 #include "ssfx/eval/section.hpp"
 
 namespace ssfx::eval {
@@ -41,7 +42,7 @@ struct AoExperimentOptions {
     std::string outDir;  //!< images/, plots/, data/ are written here
     bool quick = false;  //!< small sizes and few repetitions (tests)
     Exec exec;
-    std::function<void(const std::string&)> progress;
+    ProgressFn progress;
     AoSceneSource renderedScenes;  //!< optional: real scenes joining the accuracy table
 };
 

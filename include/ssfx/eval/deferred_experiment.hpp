@@ -11,6 +11,7 @@
 #include <string>
 
 #include "ssfx/core/parallel.hpp"
+#include "ssfx/core/progress.hpp"
 #include "ssfx/deferred/adaptive.hpp"
 #include "ssfx/eval/section.hpp"
 
@@ -26,7 +27,7 @@ struct DeferredExperimentOptions {
     deferred::AdaptiveParams params;
     std::string device;  //!< Vulkan device
     Exec exec;
-    std::function<void(const std::string&)> progress;
+    ProgressFn progress;
 };
 
 //! Runs the experiment, writes its outputs and returns its section (paths relative to

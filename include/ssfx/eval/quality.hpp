@@ -14,6 +14,7 @@
 
 #include "ssfx/core/image.hpp"
 #include "ssfx/core/parallel.hpp"
+#include "ssfx/core/progress.hpp"
 #include "ssfx/registry.hpp"
 
 namespace ssfx::eval {
@@ -44,7 +45,7 @@ struct QualityOptions {
     MethodSettings settings;
     std::string outputsDir;  //!< Compute: also write NAME_METHOD.png here when set
     Exec exec;
-    std::function<void(const std::string&)> progress;  //!< one line per image and method
+    ProgressFn progress;  //!< one line per image and method
 };
 
 struct QualityTable {

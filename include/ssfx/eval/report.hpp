@@ -11,6 +11,7 @@
 //   DIR/ao/                        the ambient obscurance experiments (images, plots, data)
 #pragma once
 
+#include "ssfx/core/progress.hpp"
 #include "ssfx/eval/ao_experiments.hpp"
 
 #include <functional>
@@ -45,7 +46,7 @@ struct ReportOptions {
     //! returns their names with a one-line description each.
     std::function<std::vector<std::pair<std::string, std::string>>(const std::string& imagesDir)> addRenderSets;
     Exec exec;
-    std::function<void(const std::string&)> progress;
+    ProgressFn progress;
 };
 
 void writeReport(const ReportOptions& options);

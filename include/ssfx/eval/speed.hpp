@@ -10,6 +10,7 @@
 
 #include "ssfx/core/image.hpp"
 #include "ssfx/core/parallel.hpp"
+#include "ssfx/core/progress.hpp"
 #include "ssfx/eval/machine.hpp"
 #include "ssfx/eval/timing.hpp"
 
@@ -20,7 +21,7 @@ struct SpeedOptions {
     std::vector<std::string> images;   //!< empty = findRenderSets(dir)
     int repetitions = 40, warmup = 3;
     Exec exec;
-    std::function<void(const std::string&)> progress;
+    ProgressFn progress;
 };
 
 struct SpeedTable {

@@ -22,6 +22,7 @@
 
 #include "ssfx/core/image.hpp"
 #include "ssfx/core/parallel.hpp"
+#include "ssfx/core/progress.hpp"
 #include "ssfx/registry.hpp"
 
 namespace ssfx::eval {
@@ -49,7 +50,7 @@ struct TemporalOptions {
     std::vector<std::string> methods;  //!< ids; empty = the quality table's order
     MethodSettings settings;
     Exec exec;
-    std::function<void(const std::string&)> progress;
+    ProgressFn progress;
     //! Keep every 1x output and truth frame in TemporalRun (off: memory stays a few 1x
     //! frames per method; use onFrame to write them out as they come).
     bool keepOutputs = true;

@@ -11,6 +11,7 @@
 
 #include "ssfx/ao/depth.hpp"
 #include "ssfx/core/image.hpp"
+#include "ssfx/core/progress.hpp"
 #include "ssfx/scene/camera.hpp"
 #include "ssfx/scene/gbuffer.hpp"
 #include "ssfx/scene/scene.hpp"
@@ -76,6 +77,6 @@ private:
 //! width x height and NAMEx2.png, NAMEx4.png, NAMEx8.png at 2, 4 and 8 times that size, all
 //! forward-shaded without anti-aliasing, written into `dir` (like the paper's sponza image).
 void writeAaRenderSet(Renderer& renderer, const scene::Scene& scene, const scene::View& view, int width, int height,
-                      const std::string& dir, const std::string& name);
+                      const std::string& dir, const std::string& name, const ProgressFn& progress = {});
 
 }  // namespace ssfx::render
