@@ -121,13 +121,12 @@ void intoDdaa2p(ImageView<const Rgba8> in, ImageView<Rgba8> out, const MethodSet
 // The resolves have no SIMD variant yet: their fast path is the threaded scalar code.
 ImageRgba8 refDdaa2p(ImageView<const Rgba8> in, const MethodSettings& s, const Exec&) {
     const ImageRgba8 aa = ddaa2Reference(in, ddaa2Params("ddaa2p", s));
-    return ssaax2(aa.view(), s.filtering, Exec{1});
+    return ssaax2(aa.view(), s.filtering, Exec{1}, ddaa2Params("ddaa2p", s).texture);
 }
 
 void intoSsaax2(ImageView<const Rgba8> in, ImageView<Rgba8> out, const MethodSettings& s, const Exec& e) {
     rejectPreset("ssaax2", s);
-    rejectParams("ssaax2", s);
-    ssaax2(in, out, s.filtering, e);
+    ssaax2(in, out, s.filtering, e, applySettings("ssaax2", Ssaax2Params{}, kSsaax2Params, s).texture);
 }
 ImageRgba8 refSsaax2(ImageView<const Rgba8> in, const MethodSettings& s, const Exec&) {
     return allocating<intoSsaax2, 2>(in, s, Exec{1});
@@ -183,7 +182,7 @@ const std::array<MethodInfo, 9> kMethods{{
           kDdaa2Params, "ppaa", true, 1, allocating<intoDdaa2, 1>, intoDdaa2, refDdaa2),
     entry({"ssaax2", "2x supersampling resolve: Mitchell filter in 12 bilinear reads (input: 2x render)", kMitchellCite,
            kImage2x},
-          {}, "resolve", false, 2, allocating<intoSsaax2, 2>, intoSsaax2, refSsaax2),
+          kSsaax2Params, "resolve", false, 2, allocating<intoSsaax2, 2>, intoSsaax2, refSsaax2),
     entry({"ssaax4", "4x supersampling resolve: direct Mitchell taps (input: 4x render)", kMitchellCite, kImage4x},
           kMitchellParams, "resolve", false, 4, allocating<intoSsaax4, 4>, intoSsaax4, refSsaax4),
     entry({"ddaa2p", "ddaa2 on the 2x render, then the ssaax2 resolve (input: 2x render)", "DDAA paper section 4",

@@ -39,7 +39,7 @@ ImageRgba8 blurReference(ImageView<const Rgba8> in, const BlurParams& params) {
     const detail::BlurWeights w = detail::blurWeights(params);
     ImageRgba8 out(in.width(), in.height());
     for (int y = 0; y < in.height(); ++y)
-        for (int x = 0; x < in.width(); ++x) out(x, y) = detail::blurPixel(in, x, y, w);
+        for (int x = 0; x < in.width(); ++x) out(x, y) = detail::blurPixel(in, x, y, w, params.texture);
     return out;
 }
 
@@ -47,6 +47,13 @@ void blur(ImageView<const Rgba8> in, ImageView<Rgba8> out, const BlurParams& par
     detail::checkInput("blur", in);
     detail::checkOutput("blur", in, out);
     const detail::BlurWeights w = detail::blurWeights(params);
+    if (params.texture != TextureFormat::Unorm) {  // sRGB textures: the scalar kernel, on all threads
+        parallelRows(in.height(), exec, [&](int y0, int y1) {
+            for (int y = y0; y < y1; ++y)
+                for (int x = 0; x < in.width(); ++x) out(x, y) = detail::blurPixel(in, x, y, w, params.texture);
+        });
+        return;
+    }
     parallelRows(in.height(), exec, [&](int y0, int y1) {
         HWY_DYNAMIC_DISPATCH(detail::BlurRows)(in, out, y0, y1, w);
     });

@@ -23,14 +23,18 @@ inline float blurChannel(float c, float w, float e, float s, float n, float sw, 
     return ((c + direct) + corner) * k.norm;
 }
 
-inline Rgba8 blurPixel(ImageView<const Rgba8> in, int x, int y, const BlurWeights& k) {
+//! `format`: an sRGB texture's texels are decoded (kSrgb8) and the result encoded back.
+inline Rgba8 blurPixel(ImageView<const Rgba8> in, int x, int y, const BlurWeights& k,
+                       TextureFormat format = TextureFormat::Unorm) {
+    const float* d = format == TextureFormat::Srgb ? kSrgb8.data() : kUnorm8.data();
     const Rgba8 c = in(x, y), w = in.clamped(x - 1, y), e = in.clamped(x + 1, y);
     const Rgba8 s = in.clamped(x, y - 1), n = in.clamped(x, y + 1);
     const Rgba8 sw = in.clamped(x - 1, y - 1), se = in.clamped(x + 1, y - 1);
     const Rgba8 nw = in.clamped(x - 1, y + 1), ne = in.clamped(x + 1, y + 1);
     auto ch = [&](std::uint8_t Rgba8::*m) {
-        return toUnorm8(blurChannel(kUnorm8[c.*m], kUnorm8[w.*m], kUnorm8[e.*m], kUnorm8[s.*m], kUnorm8[n.*m],
-                                    kUnorm8[sw.*m], kUnorm8[se.*m], kUnorm8[nw.*m], kUnorm8[ne.*m], k));
+        return encode8(
+            blurChannel(d[c.*m], d[w.*m], d[e.*m], d[s.*m], d[n.*m], d[sw.*m], d[se.*m], d[nw.*m], d[ne.*m], k),
+            format);
     };
     return {ch(&Rgba8::r), ch(&Rgba8::g), ch(&Rgba8::b), c.a};
 }

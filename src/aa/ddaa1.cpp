@@ -24,9 +24,9 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Ddaa1Params& p, 
     checkInput("ddaa1", in);
     checkOutput("ddaa1", in, out);
     validateParams(kDdaa1Params, &p, "ddaa1");
-    const Texture tex(in, p.filtering);
-    // The colour-aware measure (chromaWeight > 0) runs the scalar kernel, on all threads.
-    const bool scalar = reference || p.chromaWeight != 0.0f;
+    const Texture tex(in, p.filtering, p.texture);
+    // The colour-aware measure (chromaWeight > 0) and sRGB textures run the scalar kernel, on all threads.
+    const bool scalar = reference || p.chromaWeight != 0.0f || p.texture != TextureFormat::Unorm;
     auto pixel = [&](int x, int y, const Luma3x3& n, float) {
         const Diffusion d = diffusion(n, edgeSides(n), p);
         return diffuse(tex, x, y, d, p.maxDiffusion, 0.0f, 0.0f);
@@ -36,8 +36,8 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Ddaa1Params& p, 
         if (!scalar && p.filtering == Filtering::Gpu)
             HWY_DYNAMIC_DISPATCH(Ddaa1RowSimd)(tex, band, y, mask, p, src, dst);
     };
-    runLumaMethod(in, out, scalar, p.chromaWeight, p.edgeThresholdMin, p.edgeThreshold, exec, PlaneNeeds{}, pixel,
-                  rows);
+    runLumaMethod(in, out, scalar, p.chromaWeight, p.texture, p.edgeThresholdMin, p.edgeThreshold, exec, PlaneNeeds{},
+                  pixel, rows);
 }
 }  // namespace
 }  // namespace detail

@@ -146,9 +146,9 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Ddaa2Params& p, 
     checkInput("ddaa2", in);
     checkOutput("ddaa2", in, out);
     validate(p);
-    const Texture tex(in, p.filtering);
-    // The colour-aware measure (chromaWeight > 0) runs the scalar kernel, on all threads.
-    const bool scalar = reference || p.chromaWeight != 0.0f;
+    const Texture tex(in, p.filtering, p.texture);
+    // The colour-aware measure (chromaWeight > 0) and sRGB textures run the scalar kernel, on all threads.
+    const bool scalar = reference || p.chromaWeight != 0.0f || p.texture != TextureFormat::Unorm;
     // The vector kernel across pixels: GPU filtering model, and search reads provably equal
     // to pair-plane lookups for this size (else everything takes the scalar kernel).
     const bool vector = !scalar && p.filtering == Filtering::Gpu &&
@@ -164,7 +164,7 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Ddaa2Params& p, 
         if (vector) HWY_DYNAMIC_DISPATCH(Ddaa2RowSimd)(tex, band, planes, y, mask, p, src, dst);
     };
     runLumaMethod(
-        in, out, scalar, p.chromaWeight, p.edgeThresholdMin, p.edgeThreshold, exec, needs,
+        in, out, scalar, p.chromaWeight, p.texture, p.edgeThresholdMin, p.edgeThreshold, exec, needs,
         [&](int x, int y, const Luma3x3& n, float) {
             const EdgeSides s = edgeSides(n);
             Diffusion d = diffusion(n, s, p);

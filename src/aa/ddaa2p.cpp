@@ -18,13 +18,13 @@ void checkInput2x(ImageView<const Rgba8> in2x) {
 ImageRgba8 ddaa2p(ImageView<const Rgba8> in2x, const Ddaa2Params& params, const Exec& exec) {
     checkInput2x(in2x);
     const ImageRgba8 aa = ddaa2(in2x, params, exec);
-    return ssaax2(aa.view(), params.filtering, exec);
+    return ssaax2(aa.view(), params.filtering, exec, params.texture);
 }
 
 void ddaa2p(ImageView<const Rgba8> in2x, ImageView<Rgba8> out, const Ddaa2Params& params, const Exec& exec) {
     checkInput2x(in2x);
     const ImageRgba8 aa = ddaa2(in2x, params, exec);
-    ssaax2(aa.view(), out, params.filtering, exec);
+    ssaax2(aa.view(), out, params.filtering, exec, params.texture);
 }
 
 }  // namespace ssfx::aa

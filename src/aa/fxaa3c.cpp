@@ -29,7 +29,7 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Fxaa3cParams& p,
     checkInput("fxaa3c", in);
     checkOutput("fxaa3c", in, out);
     validate(p);
-    const Texture tex(in, p.filtering);
+    const Texture tex(in, p.filtering, p.texture);
     // At +-1 pixel the diagonal reads land on pixel centres, which return the pixel
     // (spec section 1): luma plane lookups.
     const bool centres = p.diagonalOffset == 1.0f;
@@ -71,12 +71,12 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Fxaa3cParams& p,
         const Rgb B = add(scale(add(n2, p2), 0.25f), scale(A, 0.25f));
         const float lumaB = edgeLuma(B, p.chromaWeight);
         const Rgb result = (lumaB < lumaMin || lumaB > lumaMax) ? scale(A, 0.5f) : B;
-        return toRgba8(result, m.a);
+        return toRgba8(result, m.a, p.texture);
     };
-    // Reference path, and the colour-aware measure (chromaWeight > 0): the luma plane
-    // pixel by pixel, the scalar kernel everywhere, on all threads.
-    if (reference || p.chromaWeight != 0.0f) {
-        const ImageF plane = lumaPlaneReference(in, p.chromaWeight);
+    // Reference path, the colour-aware measure (chromaWeight > 0) and sRGB textures: the
+    // luma plane pixel by pixel, the scalar kernel everywhere, on all threads.
+    if (reference || p.chromaWeight != 0.0f || p.texture != TextureFormat::Unorm) {
+        const ImageF plane = lumaPlaneReference(in, p.chromaWeight, p.texture);
         const LumaRows L{plane.data(), w, h, 0};
         parallelRows(h, exec, [&](int y0, int y1) {
             for (int y = y0; y < y1; ++y)

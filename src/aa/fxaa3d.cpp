@@ -143,9 +143,9 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Fxaa3dParams& p,
     checkInput("fxaa3d", in);
     checkOutput("fxaa3d", in, out);
     validate(p);
-    const Texture tex(in, p.filtering);
-    // The colour-aware measure (chromaWeight > 0) runs the scalar kernel, on all threads.
-    const bool scalar = reference || p.chromaWeight != 0.0f;
+    const Texture tex(in, p.filtering, p.texture);
+    // The colour-aware measure (chromaWeight > 0) and sRGB textures run the scalar kernel, on all threads.
+    const bool scalar = reference || p.chromaWeight != 0.0f || p.texture != TextureFormat::Unorm;
     // The vector kernel across pixels: GPU filtering model, and walk reads provably equal to
     // plane lookups for this size (else everything takes the scalar kernel).
     const bool vector = !scalar && p.filtering == Filtering::Gpu &&
@@ -161,7 +161,7 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Fxaa3dParams& p,
         if (vector) HWY_DYNAMIC_DISPATCH(Fxaa3dRowSimd)(tex, band, planes, lerp, y, mask, p, src, dst);
     };
     runLumaMethod(
-        in, out, scalar, p.chromaWeight, p.edgeThresholdMin, p.edgeThreshold, exec, needs,
+        in, out, scalar, p.chromaWeight, p.texture, p.edgeThresholdMin, p.edgeThreshold, exec, needs,
         [&](int x, int y, const Luma3x3& n, float range) { return fxaa3dPixel(tex, x, y, n, range, p); }, rows);
 }
 

@@ -85,19 +85,21 @@ struct NoRowKernel {
     void operator()(int, const LumaRows&, const LumaPlanes&, std::uint8_t*, const Rgba8*, Rgba8*) const {}
 };
 
-//! Scalar path (the reference, or a colour-aware measure, chromaWeight > 0): the luma plane
+//! Scalar path (the reference, a colour-aware measure, chromaWeight > 0, or an sRGB texture): the luma plane
 //! pixel by pixel, then every pixel through the scalar kernel `pixel`. Fast path: per band of kBandRows
 //! rows, in parallel, the band's luma rows, then per row the plane rows `needs` asks for
 //! and the early-exit mask; `rowKernel(y, L, planes, mask, src, dst)` may write pixels of row y
 //! itself (a vector kernel across pixels) and sets their mask bytes to kWritten; the
 //! driver copies kExit runs and runs `pixel` on the kEdge pixels.
 template <class PixelFn, class RowKernel = NoRowKernel>
-void runLumaMethod(ImageView<const Rgba8> in, ImageView<Rgba8> out, bool scalar, float chromaWeight, float thresholdMin,
-                   float threshold, const Exec& exec, const PlaneNeeds& needs, const PixelFn& pixel,
-                   const RowKernel& rowKernel = {}) {
+void runLumaMethod(ImageView<const Rgba8> in, ImageView<Rgba8> out, bool scalar, float chromaWeight,
+                   TextureFormat format, float thresholdMin, float threshold, const Exec& exec, const PlaneNeeds& needs,
+                   const PixelFn& pixel, const RowKernel& rowKernel = {}) {
     const int w = in.width();
+    // The vector kernels and band luma rows read unorm texels only: an sRGB texture takes the scalar path.
+    SSFX_ASSERT(scalar || format == TextureFormat::Unorm);
     if (scalar) {
-        const ImageF plane = lumaPlaneReference(in, chromaWeight);
+        const ImageF plane = lumaPlaneReference(in, chromaWeight, format);
         const LumaRows L{plane.data(), w, in.height(), 0};
         parallelRows(in.height(), exec, [&](int y0, int y1) {
             for (int y = y0; y < y1; ++y) {
@@ -108,7 +110,7 @@ void runLumaMethod(ImageView<const Rgba8> in, ImageView<Rgba8> out, bool scalar,
                     float range;
                     dst[x] = belowEdgeThreshold(n, thresholdMin, threshold, &range)
                                  ? src[x]
-                                 : toRgba8(pixel(x, y, n, range), src[x].a);
+                                 : toRgba8(pixel(x, y, n, range), src[x].a, format);
                 }
             }
         });

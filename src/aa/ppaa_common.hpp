@@ -37,7 +37,11 @@ inline void checkOutput(const char* method, ImageView<const Rgba8> in, ImageView
 inline float maxf(float a, float b) { return a < b ? b : a; }
 inline float minf(float a, float b) { return b < a ? b : a; }
 
-inline Rgba8 toRgba8(const Rgb& c, std::uint8_t alpha) { return {toUnorm8(c.r), toUnorm8(c.g), toUnorm8(c.b), alpha}; }
+//! A filtered colour back to 8 bits in its texture's encoding (unorm: toUnorm8; sRGB:
+//! encodeSrgb8, round to nearest, as a GPU writes an sRGB render target).
+inline Rgba8 toRgba8(const Rgb& c, std::uint8_t alpha, TextureFormat format = TextureFormat::Unorm) {
+    return {encode8(c.r, format), encode8(c.g, format), encode8(c.b, format), alpha};
+}
 
 //! Luma of the 3x3 neighbourhood. Names as in the reference shader (spec section 1):
 //! S = (0, -1) is the row above, N = (0, +1) the row below.
@@ -105,13 +109,16 @@ void forEachPixel(ImageView<Rgba8> out, const Exec& exec, const Kernel& kernel) 
 }
 
 //! Luma plane computed one pixel at a time (the scalar oracle of lumaPlane()); with a
-//! non-zero chromaWeight, the colour-aware edgeLuma() instead.
-inline ImageF lumaPlaneReference(ImageView<const Rgba8> in, float chromaWeight = 0.0f) {
+//! non-zero chromaWeight, the colour-aware edgeLuma() instead. `format`: the texels as the
+//! texture reads them (an sRGB texture's luma is that of the decoded, linear values).
+inline ImageF lumaPlaneReference(ImageView<const Rgba8> in, float chromaWeight = 0.0f,
+                                 TextureFormat format = TextureFormat::Unorm) {
+    const float* d = format == TextureFormat::Srgb ? kSrgb8.data() : kUnorm8.data();
     ImageF L(in.width(), in.height());
     for (int y = 0; y < in.height(); ++y)
         for (int x = 0; x < in.width(); ++x) {
             const Rgba8 p = in(x, y);
-            L(x, y) = edgeLuma(Rgb{kUnorm8[p.r], kUnorm8[p.g], kUnorm8[p.b]}, chromaWeight);
+            L(x, y) = edgeLuma(Rgb{d[p.r], d[p.g], d[p.b]}, chromaWeight);
         }
     return L;
 }

@@ -75,17 +75,18 @@ void checkDivisible(const char* method, ImageView<const Rgba8> in, int m) {
 }
 }  // namespace
 
-ImageRgba8 ssaax2(ImageView<const Rgba8> in, Filtering filtering, const Exec& exec) {
+ImageRgba8 ssaax2(ImageView<const Rgba8> in, Filtering filtering, const Exec& exec, TextureFormat format) {
     checkDivisible("ssaax2", in, 2);
     ImageRgba8 out(in.width() / 2, in.height() / 2);
-    ssaax2(in, out.view(), filtering, exec);
+    ssaax2(in, out.view(), filtering, exec, format);
     return out;
 }
 
-void ssaax2(ImageView<const Rgba8> in, ImageView<Rgba8> out, Filtering filtering, const Exec& exec) {
+void ssaax2(ImageView<const Rgba8> in, ImageView<Rgba8> out, Filtering filtering, const Exec& exec,
+            TextureFormat format) {
     checkDivisible("ssaax2", in, 2);
     detail::checkOutput("ssaax2", in, out, 1, 2);
-    const Texture tex(in, filtering);
+    const Texture tex(in, filtering, format);
     const float invW = tex.invW(), invH = tex.invH();
     const float outW = float(out.width()), outH = float(out.height());
     detail::forEachPixel(out, exec, [&](int x, int y) {
@@ -97,7 +98,7 @@ void ssaax2(ImageView<const Rgba8> in, ImageView<Rgba8> out, Filtering filtering
         }
         // The weights sum to 0.9999961 and are deliberately not renormalised (spec).
         const Rgba8 a = in(2 * x, 2 * y);  // alpha: the top-left source pixel of the 2x2 block
-        return detail::toRgba8(sum, a.a);
+        return detail::toRgba8(sum, a.a, format);
     });
 }
 
@@ -144,6 +145,7 @@ void resampleMitchell(ImageView<const Rgba8> in, int factor, ImageView<Rgba8> ou
     std::vector<AxisTaps> tx(std::size_t(out.width())), ty(std::size_t(out.height()));
     for (int x = 0; x < out.width(); ++x) tx[std::size_t(x)] = axisTaps(coord(x), support, s, params);
     for (int y = 0; y < out.height(); ++y) ty[std::size_t(y)] = axisTaps(coord(y), support, s, params);
+    const float* d = params.texture == TextureFormat::Srgb ? kSrgb8.data() : kUnorm8.data();
     detail::forEachPixel(out, exec, [&](int x, int y) {
         const AxisTaps& ax = tx[std::size_t(x)];
         const AxisTaps& ay = ty[std::size_t(y)];
@@ -157,13 +159,13 @@ void resampleMitchell(ImageView<const Rgba8> in, int factor, ImageView<Rgba8> ou
                 if (skipCorners && (i == 0 || i == nx - 1) && (j == 0 || j == ny - 1)) continue;
                 const float w = ax.weights[std::size_t(i)] * ay.weights[std::size_t(j)];
                 const Rgba8 c = row[std::clamp(ax.first + i, 0, in.width() - 1)];
-                sum.r += kUnorm8[c.r] * w, sum.g += kUnorm8[c.g] * w, sum.b += kUnorm8[c.b] * w;
+                sum.r += d[c.r] * w, sum.g += d[c.g] * w, sum.b += d[c.b] * w;
                 wsum += w;
             }
         }
         const Rgb r{sum.r / wsum, sum.g / wsum, sum.b / wsum};
         const int sx = shrink ? x * m : x / m, sy = shrink ? y * m : y / m;
-        return detail::toRgba8(r, in(sx, sy).a);
+        return detail::toRgba8(r, in(sx, sy).a, params.texture);
     });
 }
 

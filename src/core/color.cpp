@@ -8,6 +8,8 @@
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
+#include <algorithm>
+#include <array>
 #include <cstdint>
 #include <cstring>
 #include <vector>
@@ -90,6 +92,19 @@ ImageF lumaPlane(ImageView<const Rgba8> in, const Exec& exec) {
     ImageF L(in.width(), in.height());
     lumaPlane(in, L.view(), exec);
     return L;
+}
+
+std::uint8_t encodeSrgb8(float v) {
+    // t[k]: the linear value whose encoding is (k + 0.5) / 255, where the nearest level
+    // changes from k to k + 1. A float v is never exactly on one (they are not floats).
+    static const std::array<double, 255> t = [] {
+        std::array<double, 255> a{};
+        for (int k = 0; k < 255; ++k) a[std::size_t(k)] = srgbToLinear((k + 0.5) / 255.0);
+        return a;
+    }();
+    if (!(v > 0.0f)) return 0;  // and NaN
+    if (v >= 1.0f) return 255;
+    return static_cast<std::uint8_t>(std::upper_bound(t.begin(), t.end(), double(v)) - t.begin());
 }
 
 }  // namespace ssfx

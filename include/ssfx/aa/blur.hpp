@@ -4,20 +4,24 @@
 
 #include <array>
 
+#include "ssfx/aa/presets.hpp"
 #include "ssfx/core/image.hpp"
 #include "ssfx/core/parallel.hpp"
 #include "ssfx/core/params.hpp"
+#include "ssfx/core/sample.hpp"
 
 namespace ssfx::aa {
 
 struct BlurParams {
-    float sigma = 0.6f;  //!< Gaussian sigma in pixels; 0.6 gives w1 = 0.2493522
+    float sigma = 0.6f;                            //!< Gaussian sigma in pixels; 0.6 gives w1 = 0.2493522
+    TextureFormat texture = TextureFormat::Unorm;  //!< rgba8unorm or rgba8unorm_srgb reads (kTextureDoc)
 };
 //! BlurParams' table (params.hpp): ranges, docs; defaults are the initialisers above.
 inline constexpr std::array kBlurParams{
     real<&BlurParams::sigma>("sigma", "px", 0.05, 10,
                              "Gaussian sigma (section 3.1: 0.6); weights 1, w1 = exp(-1 / (2 sigma^2)) at the edges, "
                              "w1^2 at the corners"),
+    choice<&BlurParams::texture>("texture", kTextureFormatNames, kTextureDoc),
 };
 
 //! Blurs RGB; alpha is copied from the centre pixel. Clamp-to-edge at the borders.

@@ -22,6 +22,7 @@ struct Ddaa1Params {
     float ridgeFactor = 10.0f;         //!< small-structure preservation (section 2.2)
     float chromaWeight = 0.0f;         //!< as Fxaa3cParams::chromaWeight
     Filtering filtering = Filtering::Gpu;
+    TextureFormat texture = TextureFormat::Unorm;  //!< rgba8unorm or rgba8unorm_srgb reads (kTextureDoc)
 };
 
 struct Ddaa2Params : Ddaa1Params {
@@ -50,11 +51,13 @@ constexpr std::array<ParamInfo, 5> ddaa1Rows() {
 //! Ddaa1Params' and Ddaa2Params' tables (params.hpp); the defaults are the initialisers above.
 inline constexpr auto kDdaa1Params =
     concat(detail::ddaa1Rows<Ddaa1Params>(),
-           std::array{real<&Ddaa1Params::chromaWeight>("chromaWeight", "", 0, 4, kChromaWeightDoc)});
+           std::array{real<&Ddaa1Params::chromaWeight>("chromaWeight", "", 0, 4, kChromaWeightDoc),
+                      choice<&Ddaa1Params::texture>("texture", kTextureFormatNames, kTextureDoc)});
 inline constexpr auto kDdaa2Params = concat(
     detail::ddaa1Rows<Ddaa2Params>(),
     std::array{integer<&Ddaa2Params::searchRounds>("searchRounds", "", 1, 5, "edge-search rounds of 3 pixels per side"),
-               realIn<Ddaa2Params, &Ddaa1Params::chromaWeight>("chromaWeight", "", 0, 4, kChromaWeightDoc)});
+               realIn<Ddaa2Params, &Ddaa1Params::chromaWeight>("chromaWeight", "", 0, 4, kChromaWeightDoc),
+               choiceIn<Ddaa2Params, &Ddaa1Params::texture>("texture", kTextureFormatNames, kTextureDoc)});
 
 Ddaa1Params ddaa1ParamsFor(Preset p);
 Ddaa2Params ddaa2ParamsFor(Preset p);

@@ -24,6 +24,7 @@ struct Fxaa3cParams {
     //! paper's luma (default, outputs unchanged). Non-zero runs the scalar kernel.
     float chromaWeight = 0.0f;
     Filtering filtering = Filtering::Gpu;
+    TextureFormat texture = TextureFormat::Unorm;  //!< rgba8unorm or rgba8unorm_srgb reads (kTextureDoc)
 };
 //! Fxaa3cParams' table (params.hpp); the defaults are the initialisers above.
 inline constexpr std::array kFxaa3cParams{
@@ -36,6 +37,7 @@ inline constexpr std::array kFxaa3cParams{
         "diagonalOffset", "px", 1e-3, 2,
         "offset of the diagonal reads (the DDAA paper's comparison: 1; Lottes' shader: 0.5)"),
     real<&Fxaa3cParams::chromaWeight>("chromaWeight", "", 0, 4, kChromaWeightDoc),
+    choice<&Fxaa3cParams::texture>("texture", kTextureFormatNames, kTextureDoc),
 };
 
 struct Fxaa3dParams {
@@ -48,6 +50,7 @@ struct Fxaa3dParams {
     bool paperSearchQuirk = true;
     float chromaWeight = 0.0f;  //!< as Fxaa3cParams::chromaWeight
     Filtering filtering = Filtering::Gpu;
+    TextureFormat texture = TextureFormat::Unorm;  //!< rgba8unorm or rgba8unorm_srgb reads (kTextureDoc)
 };
 //! Fxaa3dParams' table (params.hpp); the defaults are the initialisers above.
 inline constexpr std::array kFxaa3dParams{
@@ -58,6 +61,7 @@ inline constexpr std::array kFxaa3dParams{
         "paperSearchQuirk",
         "1: side 2 steps back after its first read, as in the paper's shader; 0: FXAA 3.11 as written"),
     real<&Fxaa3dParams::chromaWeight>("chromaWeight", "", 0, 4, kChromaWeightDoc),
+    choice<&Fxaa3dParams::texture>("texture", kTextureFormatNames, kTextureDoc),
 };
 
 Fxaa3cParams fxaa3cParamsFor(Preset p);

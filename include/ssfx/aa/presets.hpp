@@ -37,6 +37,10 @@ inline constexpr std::string_view kEdgeThresholdMinDoc = "absolute luma contrast
 inline constexpr std::string_view kEdgeThresholdDoc = "contrast threshold relative to the local maximum luma";
 inline constexpr std::string_view kChromaWeightDoc =
     "opt-in colour-aware contrast: luma + chromaWeight * (max - min of RGB); 0 = luma";
+inline constexpr std::string_view kTextureDoc =
+    "the input texture's format: unorm (rgba8unorm, the paper's) or srgb (rgba8unorm_srgb: every read decoded to "
+    "linear light, filtered, the result encoded back with round-to-nearest; luma thresholds apply to the decoded "
+    "values' luma). srgb runs the scalar kernel";
 
 inline constexpr EdgeThresholds thresholdsFor(Preset p) {
     for (const auto& i : kPresets)

@@ -40,6 +40,22 @@ inline std::uint8_t toUnorm8(float v) {
     return static_cast<std::uint8_t>(double(v) * 255.0 + 0.5);
 }
 
+//! The sRGB transfer functions of IEC 61966-2-1 (Vulkan's "sRGB EOTF" and its inverse), in
+//! double: encoded value in [0, 1] to linear light and back.
+inline double srgbToLinear(double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4); }
+inline double linearToSrgb(double l) { return l <= 0.0031308 ? 12.92 * l : 1.055 * std::pow(l, 1.0 / 2.4) - 0.055; }
+
+//! Linear light in [0, 1] (clamped; NaN gives 0) to the nearest sRGB-encoded 8-bit level:
+//! round(255 * linearToSrgb(v)) exactly, by comparing v with the 255 linear values where
+//! that rounding changes (decoded half-levels, in double), so no pow() rounding can move a
+//! result. encodeSrgb8(kSrgb8[k]) == k for every k.
+std::uint8_t encodeSrgb8(float v);
+
+//! A filtered channel back to its texture's 8-bit encoding (toUnorm8 or encodeSrgb8).
+inline std::uint8_t encode8(float v, TextureFormat format) {
+    return format == TextureFormat::Srgb ? encodeSrgb8(v) : toUnorm8(v);
+}
+
 //! Luma plane of an RGBA8 image (one float per pixel; reads at pixel centres become lookups).
 //! SIMD and threaded; equal to luma() per pixel, bit for bit.
 ImageF lumaPlane(ImageView<const Rgba8> image, const Exec& exec = {});

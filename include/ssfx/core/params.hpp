@@ -133,11 +133,16 @@ constexpr ParamInfo boolean(std::string_view name, std::string_view doc) {
     static_assert(std::is_same_v<typename F::T, bool>, "boolean(): the member is not a bool");
     return {name, ParamKind::Boolean, "", 0, 1, doc, {}, &F::get, &F::set, &F::initial};
 }
-template <auto First, auto... Rest>
-constexpr ParamInfo choice(std::string_view name, std::span<const std::string_view> names, std::string_view doc) {
-    using F = detail::Field<typename detail::MemberClass<decltype(First)>::type, First, Rest...>;
+template <class Owner, auto... Path>
+constexpr ParamInfo choiceIn(std::string_view name, std::span<const std::string_view> names, std::string_view doc) {
+    using F = detail::Field<Owner, Path...>;
     static_assert(std::is_enum_v<typename F::T>, "choice(): the member is not an enum");
     return {name, ParamKind::Choice, "", 0, double(names.size()) - 1, doc, names, &F::get, &F::set, &F::initial};
+}
+//! A Choice row; choiceIn<Derived, &Base::member> binds a base class's member for a derived struct.
+template <auto First, auto... Rest>
+constexpr ParamInfo choice(std::string_view name, std::span<const std::string_view> names, std::string_view doc) {
+    return choiceIn<typename detail::MemberClass<decltype(First)>::type, First, Rest...>(name, names, doc);
 }
 
 //! Two tables as one (a method's own rows, then shared ones).

@@ -12,11 +12,19 @@
 //    channel is k / (255 * 16) for an integer k. Exact in integer arithmetic; it reproduces
 //    the reference GPU outputs bit for bit (spec ppaa.md, "GPU sampling model").
 //  - Filtering::Exact: float32 bilinear interpolation with the unrounded fraction.
+//
+// Two texture formats: TextureFormat::Unorm (rgba8unorm, the paper's and its reference
+// images') returns v / 255; TextureFormat::Srgb (rgba8unorm_srgb, what GPU plotting renderers
+// post-process) decodes every texel to linear light first (IEC 61966-2-1, as Vulkan's sRGB
+// formats do, "sRGB EOTF") and filters the decoded values: in the Gpu model with the same
+// 8-bit sub-texel weights, the sum in float32 (no 1/16-level grid: that grid is the fixed-point
+// filtering of unorm texels, and a decoded texel is not on an 8-bit grid).
 #pragma once
 
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <string_view>
 
 #include "ssfx/core/image.hpp"
 
@@ -38,6 +46,18 @@ constexpr std::array<float, 256> makeUnormTable() {
 //! 8-bit unorm to float: v / 255 rounded to float32 (what a GPU returns for rgba8unorm).
 inline constexpr std::array<float, 256> kUnorm8 = detail::makeUnormTable();
 
+//! How a texture's 8-bit texels are read: as unorm (v / 255) or sRGB-decoded to linear.
+enum class TextureFormat : std::uint8_t {
+    Unorm,  //!< rgba8unorm (the default: the paper's and its reference images' textures)
+    Srgb,   //!< rgba8unorm_srgb: every read decoded to linear light before filtering
+};
+inline constexpr std::array<std::string_view, 2> kTextureFormatNames{"unorm", "srgb"};
+
+//! sRGB-encoded 8-bit value to linear light, IEC 61966-2-1 (c <= 0.04045: c / 12.92, else
+//! ((c + 0.055) / 1.055)^2.4), computed in double and rounded to float32; 0 and 255 give 0
+//! and 1 exactly.
+extern const std::array<float, 256> kSrgb8;
+
 //! k / (255 * 16) rounded to float32, for k = 0 .. 4080: a GPU-model filtered channel.
 //! A table lookup instead of a division; the same correctly rounded floats.
 extern const std::array<float, 4081> kSixteenthLevels;
@@ -49,7 +69,7 @@ struct Rgb {
 //! An RGBA8 image seen as a texture (RGB channels; alpha is never filtered in ssfx).
 class Texture {
 public:
-    Texture(ImageView<const Rgba8> image, Filtering filtering)
+    Texture(ImageView<const Rgba8> image, Filtering filtering, TextureFormat format = TextureFormat::Unorm)
         : img_(image),
           w_(image.width()),
           h_(image.height()),
@@ -57,7 +77,9 @@ public:
           fh_(static_cast<float>(image.height())),
           invW_(1.0f / static_cast<float>(image.width())),
           invH_(1.0f / static_cast<float>(image.height())),
-          filtering_(filtering) {}
+          filtering_(filtering),
+          format_(format),
+          decode_(format == TextureFormat::Srgb ? kSrgb8.data() : kUnorm8.data()) {}
 
     int width() const { return w_; }
     int height() const { return h_; }
@@ -65,6 +87,9 @@ public:
     float invW() const { return invW_; }
     float invH() const { return invH_; }
     Filtering filtering() const { return filtering_; }
+    TextureFormat format() const { return format_; }
+    //! The 256 values a texel channel reads as (kUnorm8 or kSrgb8).
+    const float* decodeTable() const { return decode_; }
     ImageView<const Rgba8> image() const { return img_; }
 
     //! Texture coordinate of pixel x's centre: (x + 0.5) / W in float32.
@@ -74,7 +99,7 @@ public:
     //! Exact texel value with clamp-to-edge (a read at a pixel centre).
     Rgb texel(int x, int y) const {
         const Rgba8 p = img_.clamped(x, y);
-        return {kUnorm8[p.r], kUnorm8[p.g], kUnorm8[p.b]};
+        return {decode_[p.r], decode_[p.g], decode_[p.b]};
     }
 
     //! Bilinear read at texture coordinate (u, v) plus an integer texel offset (ox, oy).
@@ -91,7 +116,8 @@ public:
     AxisPos axisV(float v) const { return axis(v, fh_, h_); }
     //! The read at split coordinates plus integer texel offsets; same result as sample().
     Rgb sample(const AxisPos& ax, const AxisPos& ay, int ox, int oy) const {
-        return filtering_ == Filtering::Gpu ? sampleGpu(ax, ay, ox, oy) : sampleExact(ax, ay, ox, oy);
+        if (filtering_ == Filtering::Exact) return sampleExact(ax, ay, ox, oy);
+        return format_ == TextureFormat::Unorm ? sampleGpu(ax, ay, ox, oy) : sampleGpuDecoded(ax, ay, ox, oy);
     }
 
 private:
@@ -123,12 +149,15 @@ private:
         return {r0[x0], r0[x1], r1[x0], r1[x1]};
     }
     Rgb sampleGpu(const AxisPos& ax, const AxisPos& ay, int ox, int oy) const;
+    Rgb sampleGpuDecoded(const AxisPos& ax, const AxisPos& ay, int ox, int oy) const;
     Rgb sampleExact(const AxisPos& ax, const AxisPos& ay, int ox, int oy) const;
 
     ImageView<const Rgba8> img_;
     int w_, h_;
     float fw_, fh_, invW_, invH_;
     Filtering filtering_;
+    TextureFormat format_;
+    const float* decode_;
 };
 
 }  // namespace ssfx
