@@ -46,7 +46,7 @@ bench: build
 
 # Applies .clang-format (clang-format 14) to every C++ source and header; ctest format.check checks it.
 format:
-	@find src include apps tests bench fuzz -name node_modules -prune -o \( -name '*.cpp' -o -name '*.hpp' -o -name '*.h' \) -print | xargs clang-format-14 -i
+	@find src include apps tests bench fuzz python -name node_modules -prune -o \( -name '*.cpp' -o -name '*.hpp' -o -name '*.h' \) -print | xargs clang-format-14 -i
 
 clean:
 	rm -rf build out

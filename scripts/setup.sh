@@ -18,6 +18,8 @@ PACKAGES=(
   clang-format-14                    # the formatting check (.clang-format is pinned to 14)
   chromium                           # the HTML report's browser test (headless, via playwright-core)
   ffmpeg                             # the frame-pipe test (ffmpeg | ssfx aa --raw | ffmpeg)
+  pybind11-dev python3-dev python3-numpy python3-pytest   # the Python module and its tests
+  python3-matplotlib python3-dask python3-distributed     # its examples (a plot; a Dask cluster)
 )
 
 missing=()

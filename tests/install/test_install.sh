@@ -15,4 +15,16 @@ PKG_CONFIG_PATH="$OUT/prefix/lib/pkgconfig" c++ -std=c++20 "$SRC/consumer.cpp" -
   $(PKG_CONFIG_PATH="$OUT/prefix/lib/pkgconfig" pkg-config --cflags --libs --static ssfx)
 "$OUT/consumer_pc"
 test -x "$OUT/prefix/bin/ssfx"
+# The Python package, when it was built: importable from the prefix's site directory.
+site=$(ls -d "$OUT"/prefix/lib/python3*/dist-packages 2>/dev/null | head -n 1)
+if [ -n "$site" ] && [ -e "$site/ssfx/__init__.py" ]; then
+  test -e "$site/ssfx/__init__.pyi"
+  (cd "$OUT" && PYTHONPATH="$site" /usr/bin/python3 -c "
+import numpy as np, ssfx
+img = np.zeros((16, 16, 3), np.uint8); img[:, 8:] = 255
+assert ssfx.aa(img, 'ddaa2').shape == (16, 16, 3)
+assert ssfx.__file__.startswith('$site'), ssfx.__file__
+")
+  echo "install: the Python package imports from $site"
+fi
 echo "install: consumer built with CMake and pkg-config"

@@ -71,7 +71,7 @@ while IFS= read -r line; do
   inc=$(sed -E 's/.*#include *"([^"]+)".*/\1/' <<<"$line")
   [[ $inc =~ ^(ssfx|src|apps|tests|bench|fuzz)/ || $inc =~ ^shaders/.*\.inc$ ]] ||
     bad "${line%%:*} includes \"$inc\" (project headers by their path from include/ or the root)"
-done < <(grep -rHE '^#include *"' "$src/src" "$src/include" "$src/apps" "$src/tests" "$src/bench" "$src/fuzz" \
+done < <(grep -rHE '^#include *"' "$src/src" "$src/include" "$src/apps" "$src/tests" "$src/bench" "$src/fuzz" "$src/python" \
            --include=*.cpp --include=*.hpp --include=*.h --exclude-dir=node_modules)
 
 # Link lines: "TARGET: lib;lib;..." per line.
