@@ -57,6 +57,13 @@ def main():
         ssfx.io.write_png(os.path.join(args.out, f"plot_{m['id']}.png"), out)
         p8, s8 = ssfx.metrics.score_x8(out, renders[8])
         rows.append((m["id"], p8, s8, ssfx.metrics.psnr(out, truth), ssfx.metrics.ssim(out, truth)))
+    # A close-up of the legend (the same region of every 1x image), 3x, side by side.
+    y0, x0 = h // 10, w * 23 // 40
+    tiles = []
+    for name in ("plot", "plot_truth", "plot_ddaa2", "plot_fxaa3d", "plot_ddaa2p", "plot_ssaax4"):
+        tile = ssfx.io.read_png(os.path.join(args.out, name + ".png"))[y0:y0 + h // 3, x0:x0 + w * 2 // 5]
+        tiles += [tile.repeat(3, 0).repeat(3, 1), np.full((tile.shape[0] * 3, 6, 4), 255, np.uint8)]
+    ssfx.io.write_png(os.path.join(args.out, "crops.png"), np.concatenate(tiles[:-1], axis=1))
     lines = [f"{w}x{h} px ({args.dpi} dpi), matplotlib {matplotlib.__version__}, antialiased=False everywhere.",
              "", "| method | PSNR vs x8 (dB) | SSIM vs x8 | PSNR vs resolved 1x (dB) | SSIM vs resolved 1x |",
              "|---|---:|---:|---:|---:|"]
