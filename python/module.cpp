@@ -338,6 +338,16 @@ void writeApngFrames(const std::string& path, const py::list& frames, double fps
     io::writeApng(path, anim);
 }
 
+// A metric of two images of one size (3 or 4 channels each; RGB compared).
+double pairMetric(const py::array& a, const py::array& b,
+                  double (*metric)(ImageView<const Rgba8>, ImageView<const Rgba8>, const Exec&)) {
+    const RgbaInput x = rgbaInput(a, "a"), y = rgbaInput(b, "b");
+    if (x.view.width() != y.view.width() || x.view.height() != y.view.height())
+        throw Error(fmt::format("a and b: not the same size ({}x{} and {}x{})", x.view.width(), x.view.height(),
+                                y.view.width(), y.view.height()));
+    return metric(x.view, y.view, Exec{});
+}
+
 std::string methodsDoc() {
     std::string s =
         "Anti-aliases an image (a new array unless `out` is given).\n\n"
@@ -418,23 +428,11 @@ PYBIND11_MODULE(_ssfx, m) {
     m.def("write_apng", &writeApngFrames, py::arg("path"), py::arg("frames"), py::arg("fps") = 25.0,
           "Writes frames (a list of (H, W, 3|4) uint8 of one size) as a looping APNG, atomically.");
     m.def(
-        "psnr",
-        [](const py::array& a, const py::array& b) {
-            const RgbaInput x = rgbaInput(a, "a"), y = rgbaInput(b, "b");
-            if (x.view.width() != y.view.width() || x.view.height() != y.view.height())
-                throw Error("a and b: not the same size");
-            return eval::psnr(x.view, y.view);
-        },
-        py::arg("a"), py::arg("b"), "PSNR in dB over RGB in [0, 1] (inf when equal).");
+        "psnr", [](const py::array& a, const py::array& b) { return pairMetric(a, b, eval::psnr); }, py::arg("a"),
+        py::arg("b"), "PSNR in dB over RGB in [0, 1] (inf when equal).");
     m.def(
-        "ssim",
-        [](const py::array& a, const py::array& b) {
-            const RgbaInput x = rgbaInput(a, "a"), y = rgbaInput(b, "b");
-            if (x.view.width() != y.view.width() || x.view.height() != y.view.height())
-                throw Error("a and b: not the same size");
-            return eval::ssim(x.view, y.view);
-        },
-        py::arg("a"), py::arg("b"), "SSIM on non-overlapping 8x8 windows, mean over RGB (docs/evaluation.md).");
+        "ssim", [](const py::array& a, const py::array& b) { return pairMetric(a, b, eval::ssim); }, py::arg("a"),
+        py::arg("b"), "SSIM on non-overlapping 8x8 windows, mean over RGB (docs/evaluation.md).");
     m.def(
         "score_x8",
         [](const py::array& output, const py::array& render8x, int threads) {
