@@ -44,6 +44,43 @@ void text(cairo_t* cr, double x, double y, const std::string& s, double size, do
     cairo_show_text(cr, s.c_str());
 }
 
+}  // namespace
+
+std::vector<double> axisTicks(double lo, double hi, bool log) {
+    std::vector<double> t;
+    if (!(hi > lo) || !std::isfinite(lo) || !std::isfinite(hi)) return t;
+    if (log) {
+        for (double p = std::pow(10.0, std::floor(std::log10(lo))); p <= hi * 1.0001; p *= 10)
+            if (p >= lo * 0.9999) t.push_back(p);
+        return t;
+    }
+    const double raw = (hi - lo) / 6, mag = std::pow(10.0, std::floor(std::log10(raw)));
+    const double step = raw / mag < 1.5 ? mag : raw / mag < 3.5 ? 2 * mag : raw / mag < 7.5 ? 5 * mag : 10 * mag;
+    // Multiples of the step by an integer count, so that no sum of rounding errors drifts.
+    for (double k = std::ceil(lo / step - 1e-9); k * step <= hi + step * 1e-9; ++k) t.push_back(k * step);
+    return t;
+}
+
+std::vector<std::string> tickLabels(const std::vector<double>& ticks, bool log) {
+    std::vector<std::string> labels;
+    if (log) {
+        for (double t : ticks) labels.push_back(fmt::format("{:g}", t));
+        return labels;
+    }
+    // The step's decimals (0.02: 2, 0.5: 1, 5: 0), more if two labels still come out alike.
+    const double step = ticks.size() > 1 ? ticks[1] - ticks[0] : 1.0;
+    int decimals = std::max(0, int(std::ceil(-std::log10(step) - 1e-9)));
+    for (;; ++decimals) {
+        labels.clear();
+        for (double t : ticks) labels.push_back(fmt::format("{:.{}f}", std::abs(t) < step * 1e-6 ? 0.0 : t, decimals));
+        bool distinct = true;
+        for (std::size_t i = 1; i < labels.size(); ++i) distinct = distinct && labels[i] != labels[i - 1];
+        if (distinct || decimals >= 9) return labels;
+    }
+}
+
+namespace {
+
 // A value axis: maps values to pixels, with "nice" ticks.
 struct Axis {
     double lo, hi;
@@ -54,18 +91,7 @@ struct Axis {
         const double t = ((log ? std::log10(v) : v) - a) / (b - a);
         return bottom - t * (bottom - top);
     }
-    std::vector<double> ticks() const {
-        std::vector<double> t;
-        if (log) {
-            for (double p = std::pow(10.0, std::floor(std::log10(lo))); p <= hi * 1.0001; p *= 10)
-                if (p >= lo * 0.9999) t.push_back(p);
-            return t;
-        }
-        const double raw = (hi - lo) / 6, mag = std::pow(10.0, std::floor(std::log10(raw)));
-        const double step = raw / mag < 1.5 ? mag : raw / mag < 3.5 ? 2 * mag : raw / mag < 7.5 ? 5 * mag : 10 * mag;
-        for (double v = std::ceil(lo / step) * step; v <= hi + 1e-9; v += step) t.push_back(v);
-        return t;
-    }
+    std::vector<double> ticks() const { return axisTicks(lo, hi, log); }
 };
 
 Axis valueAxis(const std::vector<Series>& series, const ChartStyle& st, double top, double bottom) {
@@ -89,15 +115,17 @@ Axis valueAxis(const std::vector<Series>& series, const ChartStyle& st, double t
 
 void frame(cairo_t* cr, const ChartStyle& st, const Axis& ax, double left, double right) {
     cairo_set_line_width(cr, 1);
-    for (double t : ax.ticks()) {
+    const std::vector<double> ticks = ax.ticks();
+    const std::vector<std::string> labels = tickLabels(ticks, ax.log);
+    for (std::size_t i = 0; i < ticks.size(); ++i) {
+        const double t = ticks[i];
         const double y = std::round(ax.map(t)) + 0.5;
         cairo_set_source_rgb(cr, 0.88, 0.88, 0.88);
         cairo_move_to(cr, left, y);
         cairo_line_to(cr, right, y);
         cairo_stroke(cr);
         cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
-        text(cr, left - 6, y + 4,
-             std::abs(t) >= 1000 || t == std::floor(t) ? fmt::format("{:g}", t) : fmt::format("{:.1f}", t), 11, 1.0);
+        text(cr, left - 6, y + 4, labels[i], 11, 1.0);
     }
     cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
     cairo_rectangle(cr, left + 0.5, ax.top + 0.5, right - left, ax.bottom - ax.top);

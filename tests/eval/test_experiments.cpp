@@ -90,3 +90,31 @@ TEST(Plot, ChartsDrawBarsAndLines) {
     st.width = 10;
     EXPECT_THROW(eval::lineChart({0, 1}, {{"k", {1, 2}}}, st), Error);
 }
+
+TEST(Plot, TickLabelsAreDistinctAndHaveTheStepsDigits) {
+    // The report's SSIM chart spans about 0.78..0.99: ticks 0.80, 0.85, ... must not all read "0.8"/"0.9".
+    const auto ticks = eval::axisTicks(0.78, 0.99, false);
+    ASSERT_GE(ticks.size(), 4u);
+    EXPECT_EQ(eval::tickLabels(ticks, false).front(), "0.78");
+    // Every range of value axes the report draws (PSNR in dB, SSIM, ms, degrees of error,
+    // tiny and huge spans): the labels are distinct, and read back within half a step.
+    const std::pair<double, double> ranges[] = {{0.78, 0.99},    {0.86, 0.875}, {15.2, 46.7}, {0, 100},
+                                                {0.001, 0.0042}, {-3.5, 2.25},  {0, 12000},   {0.9990, 0.99995}};
+    for (const auto& [lo, hi] : ranges) {
+        const auto t = eval::axisTicks(lo, hi, false);
+        const auto l = eval::tickLabels(t, false);
+        ASSERT_GE(t.size(), 3u) << lo << ".." << hi;
+        const double step = t[1] - t[0];
+        for (std::size_t i = 0; i < t.size(); ++i) {
+            EXPECT_GE(t[i], lo - step * 1e-6);
+            EXPECT_LE(t[i], hi + step * 1e-6);
+            EXPECT_NEAR(std::stod(l[i]), t[i], step / 2) << l[i];
+            if (i > 0) {
+                EXPECT_NE(l[i], l[i - 1]) << lo << ".." << hi;
+            }
+        }
+    }
+    const auto logTicks = eval::axisTicks(0.1, 1000, true);
+    EXPECT_EQ(eval::tickLabels(logTicks, true), (std::vector<std::string>{"0.1", "1", "10", "100", "1000"}));
+    EXPECT_TRUE(eval::axisTicks(1, 1, false).empty());
+}

@@ -26,6 +26,13 @@ ImageRgba8 groupedBarChart(const std::vector<std::string>& categories, const std
                            const ChartStyle& style);
 ImageRgba8 lineChart(const std::vector<double>& x, const std::vector<Series>& series, const ChartStyle& style);
 
+//! The ticks of a value axis over [lo, hi]: steps of 1, 2 or 5 times a power of ten, about
+//! six of them (log axes: the powers of ten).
+std::vector<double> axisTicks(double lo, double hi, bool log);
+//! Their labels, with as many decimals as the step needs (0.80, 0.82, ... not 0.8, 0.8) and
+//! never two alike.
+std::vector<std::string> tickLabels(const std::vector<double>& ticks, bool log);
+
 //! A heat map of a float image: lo -> dark blue, through cyan, green, yellow, to red at hi
 //! (a piecewise-linear "jet"-like ramp, clamped); NaN -> black.
 ImageRgba8 heatMap(ImageView<const float> values, float lo, float hi);
