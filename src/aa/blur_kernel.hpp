@@ -26,7 +26,7 @@ inline float blurChannel(float c, float w, float e, float s, float n, float sw, 
 //! `format`: an sRGB texture's texels are decoded (kSrgb8) and the result encoded back.
 inline Rgba8 blurPixel(ImageView<const Rgba8> in, int x, int y, const BlurWeights& k,
                        TextureFormat format = TextureFormat::Unorm) {
-    const float* d = format == TextureFormat::Srgb ? kSrgb8.data() : kUnorm8.data();
+    const float* d = decodeTable(format);
     const Rgba8 c = in(x, y), w = in.clamped(x - 1, y), e = in.clamped(x + 1, y);
     const Rgba8 s = in.clamped(x, y - 1), n = in.clamped(x, y + 1);
     const Rgba8 sw = in.clamped(x - 1, y - 1), se = in.clamped(x + 1, y - 1);

@@ -113,7 +113,7 @@ void forEachPixel(ImageView<Rgba8> out, const Exec& exec, const Kernel& kernel) 
 //! texture reads them (an sRGB texture's luma is that of the decoded, linear values).
 inline ImageF lumaPlaneReference(ImageView<const Rgba8> in, float chromaWeight = 0.0f,
                                  TextureFormat format = TextureFormat::Unorm) {
-    const float* d = format == TextureFormat::Srgb ? kSrgb8.data() : kUnorm8.data();
+    const float* d = decodeTable(format);
     ImageF L(in.width(), in.height());
     for (int y = 0; y < in.height(); ++y)
         for (int x = 0; x < in.width(); ++x) {

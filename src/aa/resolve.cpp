@@ -145,7 +145,7 @@ void resampleMitchell(ImageView<const Rgba8> in, int factor, ImageView<Rgba8> ou
     std::vector<AxisTaps> tx(std::size_t(out.width())), ty(std::size_t(out.height()));
     for (int x = 0; x < out.width(); ++x) tx[std::size_t(x)] = axisTaps(coord(x), support, s, params);
     for (int y = 0; y < out.height(); ++y) ty[std::size_t(y)] = axisTaps(coord(y), support, s, params);
-    const float* d = params.texture == TextureFormat::Srgb ? kSrgb8.data() : kUnorm8.data();
+    const float* d = decodeTable(params.texture);
     detail::forEachPixel(out, exec, [&](int x, int y) {
         const AxisTaps& ax = tx[std::size_t(x)];
         const AxisTaps& ay = ty[std::size_t(y)];

@@ -58,6 +58,11 @@ inline constexpr std::array<std::string_view, 2> kTextureFormatNames{"unorm", "s
 //! and 1 exactly.
 extern const std::array<float, 256> kSrgb8;
 
+//! The 256 values a texel channel of this format reads as (kUnorm8 or kSrgb8).
+inline const float* decodeTable(TextureFormat format) {
+    return format == TextureFormat::Srgb ? kSrgb8.data() : kUnorm8.data();
+}
+
 //! k / (255 * 16) rounded to float32, for k = 0 .. 4080: a GPU-model filtered channel.
 //! A table lookup instead of a division; the same correctly rounded floats.
 extern const std::array<float, 4081> kSixteenthLevels;
@@ -79,7 +84,7 @@ public:
           invH_(1.0f / static_cast<float>(image.height())),
           filtering_(filtering),
           format_(format),
-          decode_(format == TextureFormat::Srgb ? kSrgb8.data() : kUnorm8.data()) {}
+          decode_(ssfx::decodeTable(format)) {}
 
     int width() const { return w_; }
     int height() const { return h_; }
