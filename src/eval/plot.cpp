@@ -153,6 +153,11 @@ void legend(cairo_t* cr, const std::vector<Series>& series, double x, double y) 
 void checkStyle(const ChartStyle& st) {
     if (st.width < 200 || st.height < 150 || st.width > 4000 || st.height > 4000)
         throw Error(fmt::format("chart size {}x{} is not in [200, 4000] x [150, 4000]", st.width, st.height));
+    // Every value axis says what it measures and in which unit: "PSNR (dB)".
+    if (st.yLabel.find('(') == std::string::npos || st.yLabel.find(')') == std::string::npos)
+        throw Error(
+            fmt::format("chart '{}': the value axis label '{}' names no unit, e.g. 'PSNR (dB)'", st.title, st.yLabel));
+    if (st.xLabel.empty()) throw Error(fmt::format("chart '{}': no x-axis label", st.title));
 }
 
 // The parts every chart shares: validated sizes, a white surface, the plot area, the value
@@ -206,6 +211,8 @@ ImageRgba8 groupedBarChart(const std::vector<std::string>& categories, const std
 
 ImageRgba8 lineChart(const std::vector<double>& x, const std::vector<Series>& series, const ChartStyle& st) {
     if (x.size() < 2) throw Error("chart: a line chart needs at least two x values");
+    if (st.xLabel.find('(') == std::string::npos)
+        throw Error(fmt::format("chart '{}': the x axis label '{}' names no unit", st.title, st.xLabel));
     Chart ch(st, series, x.size(), "x values");
     cairo_t* cr = ch.sf.cr.get();
     const double left = ch.left, right = ch.right, bottom = ch.bottom;
@@ -213,10 +220,12 @@ ImageRgba8 lineChart(const std::vector<double>& x, const std::vector<Series>& se
     const double x0 = x.front(), x1 = x.back();
     auto mapX = [&](double v) { return left + (v - x0) / (x1 - x0) * (right - left); };
     cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
-    for (int i = 0; i <= 6; ++i) {
-        const double v = x0 + (x1 - x0) * i / 6;
-        text(cr, mapX(v), bottom + 16, fmt::format("{:g}", std::round(v * 10) / 10), 11, 0.5);
-    }
+    // The x axis gets the value axis's ticks (1, 2 or 5 times a power of ten, distinct labels).
+    const std::vector<double> xTicks = axisTicks(x0, x1, false);
+    const std::vector<std::string> xLabels = tickLabels(xTicks, false);
+    for (std::size_t i = 0; i < xTicks.size(); ++i)
+        if (xTicks[i] >= x0 - 1e-9 * std::abs(x1 - x0) && xTicks[i] <= x1 + 1e-9 * std::abs(x1 - x0))
+            text(cr, mapX(xTicks[i]), bottom + 16, xLabels[i], 11, 0.5);
     for (std::size_t s = 0; s < series.size(); ++s) {
         const auto* c = kPalette[s % std::size(kPalette)];
         cairo_set_source_rgb(cr, c[0], c[1], c[2]);

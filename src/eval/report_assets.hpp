@@ -104,12 +104,13 @@ function initViewer(v) {
   }
   // Crisp pixels need the panes on whole device pixels: text above may leave the viewer at a
   // fractional offset, which would resample every image pixel. Shift the panes to snap.
+  // (Padding, not margin: the top margin would collapse with the controls' bottom margin.)
   function snap() {
-    panes.style.marginLeft = panes.style.marginTop = "0px";
+    panes.style.paddingLeft = panes.style.paddingTop = "0px";
     const r = panes.getBoundingClientRect(), dpr = window.devicePixelRatio || 1;
     const fx = (r.left + window.scrollX) * dpr, fy = (r.top + window.scrollY) * dpr;
-    panes.style.marginLeft = (Math.ceil(fx - 1e-6) - fx) / dpr + "px";
-    panes.style.marginTop = (Math.ceil(fy - 1e-6) - fy) / dpr + "px";
+    panes.style.paddingLeft = (Math.ceil(fx - 1e-6) - fx) / dpr + "px";
+    panes.style.paddingTop = (Math.ceil(fy - 1e-6) - fy) / dpr + "px";
   }
   window.addEventListener("load", snap);
   window.addEventListener("resize", snap);

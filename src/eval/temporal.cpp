@@ -131,6 +131,7 @@ void TemporalScorer::add(ImageView<const Rgba8> out, ImageView<const Rgba8> ref)
         flickerSum_ += flickerSum(prevOut_.view(), out, prevRef_.view(), ref, exec_);
     }
     mseSum_ += mse(out, ref, exec_);
+    frameScores_.push_back(scoreOutput(Protocol::Truth, out, {}, ref, {}, exec_));
     prevOut_ = ImageRgba8::copyOf(out), prevRef_ = ImageRgba8::copyOf(ref);
     ++frames_;
 }
@@ -142,7 +143,15 @@ TemporalResult TemporalScorer::result() const {
         flickerSum_ + flickerSum(prevOut_.view(), firstOut_.view(), prevRef_.view(), firstRef_.view(), exec_);
     const double meanSq =
         double(sum) / (255.0 * 255.0) / (double(firstRef_.width()) * firstRef_.height() * 3 * double(frames_));
-    return {"", std::sqrt(meanSq) * 255.0, psnrFromMse(meanSq), psnrFromMse(mseSum_ / double(frames_))};
+    Scores mean{0, 0, 0, 0};
+    for (const Scores& f : frameScores_) {
+        mean.psnr += f.psnr / frames_;
+        mean.ssim += f.ssim / frames_;
+        mean.maxError += f.maxError / frames_;
+        mean.p99Error += f.p99Error / frames_;
+    }
+    return {"",  std::sqrt(meanSq) * 255.0, psnrFromMse(meanSq), psnrFromMse(mseSum_ / double(frames_)), frameScores_,
+            mean};
 }
 
 TemporalResult temporalScore(const std::vector<ImageRgba8>& out, const std::vector<ImageRgba8>& ref, const Exec& exec) {
@@ -253,18 +262,28 @@ TemporalRun evaluateTemporalGiven(FrameSource& source, const std::vector<std::pa
 }
 
 std::string temporalMarkdown(const std::vector<TemporalResult>& results) {
-    std::string s = "| method | flicker (levels RMS) | tPSNR (dB) | PSNR (dB) |\n|---|---:|---:|---:|\n";
+    std::string s =
+        "| method | flicker (levels RMS) | tPSNR (dB) | PSNR (dB) | mean frame PSNR (dB) | mean frame SSIM | mean max "
+        "error (levels) | mean 99th-pct error (levels) |\n|---|---:|---:|---:|---:|---:|---:|---:|\n";
     for (const auto& r : results)
-        s += fmt::format("| {} | {:.3f} | {:.3f} | {:.3f} |\n", r.method, r.flickerLevels, r.temporalPsnr, r.psnr);
+        s += fmt::format("| {} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {:.4f} | {:.1f} | {:.1f} |\n", r.method,
+                         r.flickerLevels, r.temporalPsnr, r.psnr, r.mean.psnr, r.mean.ssim, r.mean.maxError,
+                         r.mean.p99Error);
     return s;
 }
 
 std::string temporalJson(const std::vector<TemporalResult>& results) {
     nlohmann::ordered_json j = nlohmann::ordered_json::object();
     auto num = [](double v) { return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(); };
-    for (const auto& r : results)
+    for (const auto& r : results) {
         j[r.method] = {
             {"flicker_levels", num(r.flickerLevels)}, {"temporal_psnr", num(r.temporalPsnr)}, {"psnr", num(r.psnr)}};
+        for (const Metric k : kMetrics) {
+            j[r.method]["mean"][metricKey(k)] = num(value(r.mean, k));
+            auto& frames = j[r.method]["frames"][metricKey(k)] = nlohmann::ordered_json::array();
+            for (const Scores& f : r.frames) frames.push_back(num(value(f, k)));
+        }
+    }
     return j.dump(2) + "\n";
 }
 

@@ -193,7 +193,7 @@ check kernels_two_stdout 2 "$SSFX" eval kernels --step 10 --json - --md -
 contains kernels_two_stdout "$OUT/kernels_two_stdout.err" "only one output can go to stdout"
 check quality_quiet 0 "$SSFX" eval quality "$OUT/ti" --methods ddaa2 -q
 [ ! -s "$OUT/quality_quiet.err" ] && [ ! -s "$OUT/quality_quiet.out" ] || { echo "FAIL quality_quiet: -q printed"; fail=1; }
-contains quality "$OUT/quality.err" "eval: circles ddaa2: PSNR"
+contains quality "$OUT/quality.err" "eval: circles ddaa2: paper PSNR"
 check testimages_bad 2 "$SSFX" testimages --out "$OUT/ti2" --images nope
 contains testimages_bad "$OUT/testimages_bad.err" "unknown test image"
 check eval_nosub 2 "$SSFX" eval

@@ -76,7 +76,7 @@ TEST(Kernels, AxisAlignedLinesAreExactAndSmoothingHelps) {
 }
 
 TEST(Plot, ChartsDrawBarsAndLines) {
-    eval::ChartStyle st{300, 200, "t", "x", "y", false, true};
+    eval::ChartStyle st{300, 200, "t", "x (m)", "y (dB)", false, true};
     const auto bars = eval::groupedBarChart({"a", "b"}, {{"s1", {1.0, 2.0}}, {"s2", {NAN, 3.0}}}, st);
     EXPECT_EQ(bars.width(), 300);
     EXPECT_EQ(bars.height(), 200);
@@ -89,6 +89,17 @@ TEST(Plot, ChartsDrawBarsAndLines) {
     EXPECT_THROW(eval::lineChart({0}, {{"k", {1}}}, st), Error);
     st.width = 10;
     EXPECT_THROW(eval::lineChart({0, 1}, {{"k", {1, 2}}}, st), Error);
+    // Every axis names its unit (the value axis of both kinds, the x axis of line charts).
+    st.width = 300;
+    st.yLabel = "y";
+    std::string e = test::errorOf([&] { eval::groupedBarChart({"a"}, {{"s", {1.0}}}, st); });
+    EXPECT_NE(e.find("names no unit"), std::string::npos) << e;
+    st.yLabel = "y (dB)";
+    st.xLabel = "x";
+    e = test::errorOf([&] { eval::lineChart({0, 1}, {{"k", {1, 2}}}, st); });
+    EXPECT_NE(e.find("x axis label 'x' names no unit"), std::string::npos) << e;
+    st.xLabel = "";
+    EXPECT_THROW(eval::groupedBarChart({"a"}, {{"s", {1.0}}}, st), Error);
 }
 
 TEST(Plot, TickLabelsAreDistinctAndHaveTheStepsDigits) {

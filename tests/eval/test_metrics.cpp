@@ -58,6 +58,12 @@ TEST(Metrics, IndependentOfThreadCount) {
     const auto a = test::noise(301, 203, 1), b = test::noise(301, 203, 2);
     EXPECT_EQ(eval::mse(a.view(), b.view(), Exec{1}), eval::mse(a.view(), b.view(), Exec{4}));
     EXPECT_EQ(eval::ssim(a.view(), b.view(), Exec{1}), eval::ssim(a.view(), b.view(), Exec{4}));
+    const Image<std::uint8_t> mask = eval::differenceMask(a.view(), test::noise(301, 203, 3).view());
+    const eval::ErrorStats e1 = eval::errorStats(a.view(), b.view(), {mask.view(), 1}, Exec{1});
+    const eval::ErrorStats e4 = eval::errorStats(a.view(), b.view(), {mask.view(), 1}, Exec{4});
+    EXPECT_EQ(e1.pixels, e4.pixels);
+    EXPECT_EQ(e1.psnr, e4.psnr);
+    EXPECT_EQ(e1.p99Error, e4.p99Error);
 }
 
 TEST(Metrics, MitchellX8UpscaleByHand) {
@@ -75,4 +81,66 @@ TEST(Metrics, MitchellX8UpscaleByHand) {
     const int expected[16] = {0, 0, 0, 7, 23, 47, 77, 110, 145, 178, 208, 232, 248, 255, 255, 255};
     for (int y = 0; y < 8; ++y)
         for (int x = 0; x < 16; ++x) EXPECT_EQ(up(x, y).r, expected[x]) << "x=" << x << " y=" << y;
+}
+
+TEST(Metrics, ErrorStatsByHand) {
+    // 100 pixels, e = max(|dR|, |dG|, |dB|): 97 exact, then 3, 10 and 40 levels. Nearest rank
+    // 99: the 99th smallest e is 10; the largest is 40.
+    ImageRgba8 a(10, 10, Rgba8{100, 100, 100, 255}), b = a;
+    b(0, 0) = {103, 100, 99, 255};  // e = 3 (dR 3, dB 1)
+    b(5, 5) = {100, 90, 100, 255};  // e = 10
+    b(9, 9) = {60, 100, 100, 255};  // e = 40
+    const eval::ErrorStats all = eval::errorStats(a.view(), b.view());
+    EXPECT_EQ(all.pixels, 100);
+    EXPECT_EQ(all.maxError, 40);
+    EXPECT_EQ(all.p99Error, 10);
+    // PSNR from the same squares as psnr(): (9 + 1 + 100 + 1600) / 255^2 / 300.
+    EXPECT_NEAR(all.psnr, 10 * std::log10(1 / (1710.0 / (255.0 * 255.0) / 300.0)), 1e-9);
+    EXPECT_DOUBLE_EQ(all.psnr, eval::psnr(a.view(), b.view()));
+    // A mask of the left column (x = 0): 10 pixels, one of them off by 3.
+    Image<std::uint8_t> mask(10, 10);
+    for (int y = 0; y < 10; ++y) mask(0, y) = 1;
+    const eval::ErrorStats left = eval::errorStats(a.view(), b.view(), {mask.view(), 1});
+    EXPECT_EQ(left.pixels, 10);
+    EXPECT_EQ(left.maxError, 3);
+    EXPECT_EQ(left.p99Error, 3);  // rank ceil(9.9) = 10: the largest of ten
+    // An empty mask counts nothing: NaN figures.
+    const Image<std::uint8_t> none(10, 10);
+    const eval::ErrorStats empty = eval::errorStats(a.view(), b.view(), {none.view(), 1});
+    EXPECT_EQ(empty.pixels, 0);
+    EXPECT_TRUE(std::isnan(empty.psnr) && std::isnan(empty.maxError) && std::isnan(empty.p99Error));
+    // A mask at scale 5 over the same image: the 2x2 mask pixel (1, 1) covers [5, 10) x [5, 10).
+    Image<std::uint8_t> coarse(2, 2);
+    coarse(1, 1) = 1;
+    const eval::ErrorStats block = eval::errorStats(a.view(), b.view(), {coarse.view(), 5});
+    EXPECT_EQ(block.pixels, 25);
+    EXPECT_EQ(block.maxError, 40);
+    // A mask that does not cover the images is an error naming both sizes.
+    const std::string e = test::errorOf([&] { eval::errorStats(a.view(), b.view(), {coarse.view(), 4}); });
+    EXPECT_NE(e.find("2x2 mask at scale 4"), std::string::npos) << e;
+    EXPECT_NE(e.find("10x10"), std::string::npos) << e;
+}
+
+TEST(Metrics, MaskedSsimAveragesTheWindowsWithACountedPixel) {
+    // Two 8x8 windows side by side: the left one equal (SSIM 1), the right constant 51 vs 153.
+    ImageRgba8 a(16, 8, Rgba8{51, 51, 51, 255}), b = a;
+    for (int y = 0; y < 8; ++y)
+        for (int x = 8; x < 16; ++x) b(x, y) = {153, 153, 153, 255};
+    const double right = (2 * 0.2 * 0.6 + 1e-4) / (0.04 + 0.36 + 1e-4);
+    EXPECT_NEAR(eval::ssim(a.view(), b.view()), (1 + right) / 2, 1e-12);
+    Image<std::uint8_t> mask(16, 8);
+    mask(9, 3) = 1;  // one pixel of the right window
+    EXPECT_NEAR(eval::ssim(a.view(), b.view(), {mask.view(), 1}), right, 1e-12);
+    mask(0, 0) = 1;  // and one of the left
+    EXPECT_NEAR(eval::ssim(a.view(), b.view(), {mask.view(), 1}), (1 + right) / 2, 1e-12);
+    const Image<std::uint8_t> none(16, 8);
+    EXPECT_TRUE(std::isnan(eval::ssim(a.view(), b.view(), {none.view(), 1})));
+}
+
+TEST(Metrics, DifferenceMaskMarksPixelsThatDifferInRgbOnly) {
+    ImageRgba8 a(3, 1, Rgba8{10, 10, 10, 255}), b = a;
+    b(1, 0).g = 11;
+    b(2, 0).a = 0;  // alpha does not count
+    const Image<std::uint8_t> m = eval::differenceMask(a.view(), b.view());
+    EXPECT_EQ(m.pixels(), (std::vector<std::uint8_t>{0, 1, 0}));
 }

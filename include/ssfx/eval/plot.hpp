@@ -15,6 +15,9 @@ struct Series {
     std::vector<double> values;  //!< one per category (bars) or per x value (lines); NaN = no value
 };
 
+//! A chart's size, title and axis labels. Every value axis label names its unit in parentheses
+//! ("PSNR (dB)", "SSIM (unitless, 1 = identical)"), and so does a line chart's x label; a bar
+//! chart's x label names its categories ("image"). The charts throw ssfx::Error otherwise.
 struct ChartStyle {
     int width = 880, height = 420;
     std::string title, xLabel, yLabel;

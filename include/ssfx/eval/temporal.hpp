@@ -11,6 +11,8 @@
 //   PSNR      = 10 log10(1 / mean over t of mse(O_t, R_t))             (per-frame quality at 1x)
 // A method that changes a pixel exactly as the truth changes it has flicker 0; an
 // aliased edge that jumps a whole pixel while the truth moves smoothly scores badly.
+// Each frame is also scored under the truth protocol of quality.hpp (O_t against R_t:
+// PSNR, SSIM, largest and 99th-percentile per-pixel error), kept per frame and averaged.
 #pragma once
 
 #include <cstdint>
@@ -23,6 +25,7 @@
 #include "ssfx/core/image.hpp"
 #include "ssfx/core/parallel.hpp"
 #include "ssfx/core/progress.hpp"
+#include "ssfx/eval/quality.hpp"
 #include "ssfx/registry.hpp"
 
 namespace ssfx::eval {
@@ -60,9 +63,11 @@ struct TemporalOptions {
 
 struct TemporalResult {
     std::string method;
-    double flickerLevels;  //!< RMS error of frame-to-frame differences, in 8-bit levels
-    double temporalPsnr;   //!< dB
-    double psnr;           //!< dB, outputs vs resolved x8 frames
+    double flickerLevels;        //!< RMS error of frame-to-frame differences, in 8-bit levels
+    double temporalPsnr;         //!< dB
+    double psnr;                 //!< dB, outputs vs resolved x8 frames (of the whole sequence's MSE)
+    std::vector<Scores> frames;  //!< per frame t: O_t against R_t (the truth protocol)
+    Scores mean;                 //!< the mean of `frames`, metric by metric
 };
 
 struct TemporalRun {
@@ -99,6 +104,7 @@ private:
     ImageRgba8 firstOut_, firstRef_, prevOut_, prevRef_;
     std::uint64_t flickerSum_ = 0;  //!< sum of squared differences of differences (levels^2)
     double mseSum_ = 0;
+    std::vector<Scores> frameScores_;
     int frames_ = 0;
 };
 
@@ -106,7 +112,9 @@ private:
 TemporalResult temporalScore(const std::vector<ImageRgba8>& outputs, const std::vector<ImageRgba8>& truth,
                              const Exec& exec = {});
 
-//! Markdown table (method, flicker, tPSNR, PSNR) and JSON {"METHOD": {"flicker_levels", ...}}.
+//! Markdown table (method, flicker, tPSNR, PSNR, then the per-frame means of PSNR, SSIM and
+//! the errors) and JSON {"METHOD": {"flicker_levels", "temporal_psnr", "psnr", "mean":
+//! {"psnr", "ssim", "max_error", "p99_error"}, "frames": {"psnr": [...], ...}}}.
 std::string temporalMarkdown(const std::vector<TemporalResult>& results);
 std::string temporalJson(const std::vector<TemporalResult>& results);
 
