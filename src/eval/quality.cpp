@@ -99,6 +99,8 @@ const char* metricKey(Metric m) {
     return k[int(m)];
 }
 
+int metricDecimals(Metric m) { return m == Metric::Psnr ? 3 : m == Metric::Ssim ? 4 : 1; }
+
 const char* metricTitle(Metric m) {
     constexpr const char* k[] = {"PSNR (dB)", "SSIM", "max error (levels)", "99th-percentile error (levels)"};
     return k[int(m)];
@@ -280,8 +282,6 @@ std::string qualityJson(const QualityTable& t) {
 
 namespace {
 
-int decimalsOf(Metric k) { return k == Metric::Psnr ? 3 : k == Metric::Ssim ? 4 : 1; }
-
 std::string regionTitle(Protocol p, Region r) {
     const char* what = p == Protocol::Paper ? "x8 upscale vs x8 render" : "1x output vs the truth (x8 resolved to 1x)";
     return fmt::format("{} protocol ({}){}", protocolName(p), what, r == Region::Edges ? ", edge pixels only" : "");
@@ -296,7 +296,7 @@ std::string metricTable(const QualityTable& t, Protocol p, Region r, Metric k, b
     for (std::size_t i = 0; i <= t.images.size(); ++i) {
         std::vector<std::string> row{i < t.images.size() ? t.images[i] : "mean"};
         for (std::size_t m = 0; m < t.methods.size(); ++m)
-            row.push_back(cell(i < t.images.size() ? t.value(p, r, k, i, m) : t.mean(p, r, k, m), decimalsOf(k)));
+            row.push_back(cell(i < t.images.size() ? t.value(p, r, k, i, m) : t.mean(p, r, k, m), metricDecimals(k)));
         rows.push_back(row);
     }
     std::string s;

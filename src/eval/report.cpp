@@ -109,8 +109,7 @@ Table withMeanTable(const QualityTable& t, Protocol p, Region region, Metric k) 
             values[i].push_back(i < t.images.size() ? t.value(p, region, k, i, m) : t.mean(p, region, k, m));
     std::vector<std::string> rows = t.images;
     rows.push_back("mean");
-    const int decimals = k == Metric::Psnr ? 3 : k == Metric::Ssim ? 4 : 1;
-    return numericTable("image", rows, t.methods, values, decimals, k == Metric::Psnr || k == Metric::Ssim);
+    return numericTable("image", rows, t.methods, values, metricDecimals(k), k == Metric::Psnr || k == Metric::Ssim);
 }
 
 // A grouped bar chart of one metric per image and method, written to plots/FILE.
@@ -128,6 +127,17 @@ Figure metricChart(const Run& r, const QualityTable& t, Protocol p, Region regio
     return plot(file, title, 880, 400);
 }
 
+// A block of one metric's table (image rows and a mean row), with its chart when `chart` is set.
+Block metricBlock(const Run& r, const QualityTable& t, Protocol p, Region region, Metric k, std::string heading,
+                  std::string text, const std::string& chart = "", const std::string& chartTitle = "") {
+    Block b;
+    b.heading = std::move(heading);
+    b.text = std::move(text);
+    b.table = withMeanTable(t, p, region, k);
+    if (!chart.empty()) b.figures.push_back(metricChart(r, t, p, region, k, chart, chartTitle));
+    return b;
+}
+
 Section qualitySection(const Run& r, const QualityTable& quality) {
     const Protocol p = Protocol::Paper;
     Section s;
@@ -137,22 +147,10 @@ Section qualitySection(const Run& r, const QualityTable& quality) {
         "with the Mitchell filter and compared with the x8 render. PSNR over RGB in [0,1]; SSIM on non-overlapping "
         "8x8 windows (one window per 1x pixel). Best per row in bold. `noaa` is the aliased input itself. The x8 "
         "render is aliased too, so this protocol rewards staying sharp: see the next section for the truth protocol.";
-    Block psnr{"PSNR (dB)",
-               "",
-               {},
-               withMeanTable(quality, p, Region::All, Metric::Psnr),
-               "",
-               {metricChart(r, quality, p, Region::All, Metric::Psnr, "psnr.png",
-                            "PSNR per image and method, paper protocol (higher is better)")},
-               {}};
-    Block ssim{"SSIM",
-               "",
-               {},
-               withMeanTable(quality, p, Region::All, Metric::Ssim),
-               "",
-               {metricChart(r, quality, p, Region::All, Metric::Ssim, "ssim.png",
-                            "SSIM per image and method, paper protocol (8x8 windows)")},
-               {}};
+    Block psnr = metricBlock(r, quality, p, Region::All, Metric::Psnr, "PSNR (dB)", "", "psnr.png",
+                             "PSNR per image and method, paper protocol (higher is better)");
+    Block ssim = metricBlock(r, quality, p, Region::All, Metric::Ssim, "SSIM", "", "ssim.png",
+                             "SSIM per image and method, paper protocol (8x8 windows)");
     s.blocks = {psnr, ssim};
     return s;
 }
@@ -212,60 +210,26 @@ Section truthSection(const Run& r, const QualityTable& quality) {
         sizes +=
             fmt::format("{}`{}` {} of {} pixels ({:.1f} %)", i ? ", " : "", quality.images[i], quality.edgePixels[i],
                         quality.pixels[i], 100.0 * double(quality.edgePixels[i]) / double(quality.pixels[i]));
-    Block psnr{"PSNR (dB)",
-               "",
-               {},
-               withMeanTable(quality, p, Region::All, Metric::Psnr),
-               "",
-               {metricChart(r, quality, p, Region::All, Metric::Psnr, "truth_psnr.png",
-                            "PSNR per image and method against the truth (higher is better)")},
-               {}};
-    Block ssim{"SSIM",
-               "",
-               {},
-               withMeanTable(quality, p, Region::All, Metric::Ssim),
-               "",
-               {metricChart(r, quality, p, Region::All, Metric::Ssim, "truth_ssim.png",
-                            "SSIM per image and method against the truth (8x8 windows at 1x)")},
-               {}};
-    Block worst{"Largest per-pixel error (levels)",
-                "Lowest per row in bold.",
-                {},
-                withMeanTable(quality, p, Region::All, Metric::MaxError),
-                "",
-                {},
-                {}};
-    Block p99{"99th-percentile per-pixel error (levels)",
-              "Lowest per row in bold.",
-              {},
-              withMeanTable(quality, p, Region::All, Metric::P99Error),
-              "",
-              {},
-              {}};
-    Block edges{"Edge pixels only: PSNR (dB) against the truth",
-                "The mask: the pixels where the truth differs from the aliased 1x render: " + sizes + ".",
-                {},
-                withMeanTable(quality, p, Region::Edges, Metric::Psnr),
-                "",
-                {metricChart(r, quality, p, Region::Edges, Metric::Psnr, "truth_edges_psnr.png",
-                             "PSNR on the edge pixels against the truth (higher is better)")},
-                {}};
-    Block edgesSsim{"Edge pixels only: SSIM against the truth",
-                    "The mean over the 8x8 windows that hold an edge pixel.",
-                    {},
-                    withMeanTable(quality, p, Region::Edges, Metric::Ssim),
-                    "",
-                    {},
-                    {}};
+    Block psnr = metricBlock(r, quality, p, Region::All, Metric::Psnr, "PSNR (dB)", "", "truth_psnr.png",
+                             "PSNR per image and method against the truth (higher is better)");
+    Block ssim = metricBlock(r, quality, p, Region::All, Metric::Ssim, "SSIM", "", "truth_ssim.png",
+                             "SSIM per image and method against the truth (8x8 windows at 1x)");
+    Block worst = metricBlock(r, quality, p, Region::All, Metric::MaxError, "Largest per-pixel error (levels)",
+                              "Lowest per row in bold.");
+    Block p99 = metricBlock(r, quality, p, Region::All, Metric::P99Error, "99th-percentile per-pixel error (levels)",
+                            "Lowest per row in bold.");
+    Block edges =
+        metricBlock(r, quality, p, Region::Edges, Metric::Psnr, "Edge pixels only: PSNR (dB) against the truth",
+                    "The mask: the pixels where the truth differs from the aliased 1x render: " + sizes + ".",
+                    "truth_edges_psnr.png", "PSNR on the edge pixels against the truth (higher is better)");
+    Block edgesSsim =
+        metricBlock(r, quality, p, Region::Edges, Metric::Ssim, "Edge pixels only: SSIM against the truth",
+                    "The mean over the 8x8 windows that hold an edge pixel.");
     s.blocks = {psnr, ssim, worst, p99, edges, edgesSsim};
     if (quality.has(Protocol::Paper)) {
-        Block paperEdges{"Edge pixels only: PSNR (dB) under the paper's protocol",
-                         "The same mask, each edge pixel selecting its 8x8 block of the x8 images.",
-                         {},
-                         withMeanTable(quality, Protocol::Paper, Region::Edges, Metric::Psnr),
-                         "",
-                         {},
-                         {}};
+        Block paperEdges = metricBlock(r, quality, Protocol::Paper, Region::Edges, Metric::Psnr,
+                                       "Edge pixels only: PSNR (dB) under the paper's protocol",
+                                       "The same mask, each edge pixel selecting its 8x8 block of the x8 images.");
         s.blocks.push_back(std::move(paperEdges));
     }
     s.blocks.push_back(beatsNoaaBlock(quality));

@@ -69,6 +69,7 @@ inline constexpr Metric kMetrics[] = {Metric::Psnr, Metric::Ssim, Metric::MaxErr
 double value(const Scores& scores, Metric metric);
 const char* metricKey(Metric metric);    //!< "psnr", "ssim", "max_error", "p99_error"
 const char* metricTitle(Metric metric);  //!< "PSNR (dB)", "SSIM", "max error (levels)", ...
+int metricDecimals(Metric metric);       //!< in tables: PSNR 3, SSIM 4, errors 1
 
 struct QualityOptions {
     std::vector<Protocol> protocols{Protocol::Paper, Protocol::Truth};
