@@ -236,8 +236,40 @@ Section truthSection(const Run& r, const QualityTable& quality) {
     return s;
 }
 
-// ---- The paper's rows from the DDAA author's data, when present ----------------------
-std::optional<Block> authorRowsBlock(Run& r) {
+// The truth protocol on the author's images: PSNR over the whole image and over the edge
+// pixels, for the author's GPU outputs and for ssfx's on the same inputs.
+Block truthRowsBlock(const QualityTable& given, const QualityTable& ours) {
+    std::vector<std::string> rows;
+    std::vector<std::vector<double>> vals;
+    for (const Region region : {Region::All, Region::Edges})
+        for (std::size_t i = 0; i < given.images.size(); ++i)
+            for (const QualityTable* t : {&given, &ours}) {
+                rows.push_back(fmt::format("{}{} ({})", given.images[i], region == Region::Edges ? ", edges" : "",
+                                           t == &given ? "author's outputs" : "ssfx"));
+                vals.emplace_back();
+                for (std::size_t m = 0; m < t->methods.size(); ++m)
+                    vals.back().push_back(t->value(Protocol::Truth, region, Metric::Psnr, i, m));
+            }
+    std::string sizes;
+    for (std::size_t i = 0; i < given.images.size(); ++i)
+        sizes +=
+            fmt::format("{}`{}` {} of {} pixels", i ? ", " : "", given.images[i], given.edgePixels[i], given.pixels[i]);
+    Block b;
+    b.heading = "The author's images against the truth";
+    b.text =
+        "PSNR (dB) under the truth protocol of the DDAA author's GPU outputs and of ssfx's, over the whole "
+        "image and over the edge pixels (" +
+        sizes + "). Best per row in bold.";
+    b.table = numericTable("image", rows, given.methods, vals, 3, true);
+    return b;
+}
+
+// ---- The paper's rows from the DDAA author's data, when present, and the same images under
+// the truth protocol ----------------------
+struct AuthorBlocks {
+    Block paperRows, truthRows;
+};
+std::optional<AuthorBlocks> authorRowsBlock(Run& r) {
     const ReportOptions& o = r.o;
     if (o.authorDataDir.empty() || !fs::is_directory(o.authorDataDir) || o.quick) return std::nullopt;
     QualityOptions ro;
@@ -276,7 +308,7 @@ std::optional<Block> authorRowsBlock(Run& r) {
         "with the paper's published (rounded) values. Source: the author's ppaa-experiments repository (see "
         "`../shared/reference/README.md`).";
     b.table = numericTable("image", rows, given.methods, vals, 3, true);
-    return b;
+    return AuthorBlocks{std::move(b), truthRowsBlock(given, ours)};
 }
 
 ImageRgba8 crop(const ImageRgba8& img, int x0, int y0, int w, int h) {
@@ -486,8 +518,11 @@ Section viewersSection(const Run& r, const QualityTable& quality, const std::map
     s.title = "Compare the outputs";
     s.note =
         "Pick one or more methods; \"side by side\" shows them together, \"flip\" shows one at a time (button "
-        "\"next\" or key `f`, or auto-flip). Zoom is nearest-neighbour; drag or scroll to pan (all panes move "
-        "together). "
+        "\"next\" or key `f`, or auto-flip), \"wipe\" the first two picked on either side of the slider, "
+        "\"difference\" |method - truth| (the largest of R, G and B, times the gain) through the colour scale "
+        "shown above the panes. Zoom is nearest-neighbour; drag or scroll to pan (all panes move together). Under "
+        "the cursor, the readout gives the RGB of the truth and of each shown method, and each one's error e. The "
+        "address bar keeps the view (image, methods, mode, zoom, pan): copy it to link this view. "
         "`truth` is the x8 render resolved to 1x with the Mitchell filter.";
     for (const auto& name : quality.images) {
         Viewer v;
@@ -507,7 +542,13 @@ Section viewersSection(const Run& r, const QualityTable& quality, const std::map
         v.sources = {{"truth", "images/" + name + "_truth.png"}};
         for (const auto& id : r.methodIds) v.sources.emplace_back(id, fmt::format("images/{}_{}.png", name, id));
         v.initial = {"noaa", "ddaa2"};
-
+        std::vector<std::pair<std::string, std::string>> pngs;
+        for (const auto& [label, file] : v.sources) {
+            const auto bytes = io::readFile((r.out / file).string(), io::kMaxImageFileBytes, "PNG", io::kPngMagic);
+            pngs.emplace_back(label, std::string(bytes.begin(), bytes.end()));
+        }
+        v.pixels = "images/" + name + "_pixels.js";
+        io::writeTextAtomic((r.out / v.pixels).string(), html::pixelScript(name, pngs));
         Block b;
         b.heading = name;
         b.text = description;
@@ -636,7 +677,7 @@ Section temporalSection(Run& r) {
     s.blocks.push_back(std::move(pictures));
     Block zoomable;
     zoomable.heading = "Animation, zoomable";
-    Viewer v;
+    Viewer v;  // APNGs: no pixel script (no difference mode or readout)
     v.id = "animated";
     v.width = anim.width;
     v.height = anim.height;
@@ -776,10 +817,13 @@ void writeReport(const ReportOptions& o) {
     const std::map<std::string, std::string> extraSets = addRenderSets(r);
     const QualityTable quality = runQuality(r);
     Section qualityPart = qualitySection(r, quality);
-    const Section truth = truthSection(r, quality);
+    Section truth = truthSection(r, quality);
+    if (auto author = authorRowsBlock(r)) {
+        qualityPart.blocks.push_back(std::move(author->paperRows));
+        truth.blocks.push_back(std::move(author->truthRows));
+    }
     const Section colour = colourAwareSection(r, quality);
     const Section srgb = srgbSection(r, quality);
-    if (auto author = authorRowsBlock(r)) qualityPart.blocks.push_back(std::move(*author));
     const Section temporal = temporalSection(r);
     const Section speed = speedSection(r);
     const Section kernels = kernelSection(r);

@@ -98,18 +98,38 @@ std::string viewer(const Viewer& v) {
     nlohmann::ordered_json src = nlohmann::ordered_json::object();
     for (const auto& [label, url] : v.sources) src[label] = url;
     const nlohmann::json init = v.initial;
+    const bool exact = !v.pixels.empty();
     std::string s = fmt::format(
-        "<section class=\"viewer\" id=\"viewer-{}\" data-width=\"{}\" data-height=\"{}\" data-pane-width=\"{}\" "
-        "data-pane-height=\"{}\" data-sources=\"{}\" data-initial=\"{}\">\n<div class=\"controls\">"
-        "<span>methods</span>",
-        escape(v.id), v.width, v.height, 400, 400, escape(src.dump()), escape(init.dump()));
+        "<section class=\"viewer\" id=\"viewer-{0}\" data-viewer=\"{0}\" data-width=\"{1}\" data-height=\"{2}\" "
+        "data-pane-width=\"{3}\" data-pane-height=\"{4}\" data-sources=\"{5}\" data-initial=\"{6}\" "
+        "data-reference=\"{7}\"{8}>\n<div class=\"controls\"><span>methods</span>",
+        escape(v.id), v.width, v.height, 400, 400, escape(src.dump()), escape(init.dump()), escape(v.reference),
+        exact ? fmt::format(" data-pixels=\"{}\"", escape(v.pixels)) : "");
     for (const auto& [label, url] : v.sources)
         s += fmt::format("<button data-method=\"{0}\">{0}</button>", escape(label));
     s += "<span>mode</span><button data-mode=\"side\">side by side</button><button data-mode=\"flip\">flip</button>"
          "<button data-action=\"flip\" title=\"next picked method (key f)\">next</button>"
-         "<button data-action=\"auto\">auto-flip</button><span>zoom</span>";
+         "<button data-action=\"auto\">auto-flip</button>"
+         "<button data-mode=\"wipe\" title=\"the first picked method left of the slider, the second right\">wipe"
+         "</button><input type=\"range\" min=\"0\" max=\"1000\" data-action=\"wipe\" aria-label=\"wipe position\">";
+    if (exact) {
+        s += fmt::format(
+            "<button data-mode=\"diff\" title=\"|method - {0}|, magnified\">difference</button>"
+            "<span>gain</span>",
+            escape(v.reference));
+        for (int g : {1, 4, 16, 64}) s += fmt::format("<button data-gain=\"{0}\">{0}x</button>", g);
+    }
+    s += "<span>zoom</span>";
     for (int z : {1, 2, 4, 8, 16}) s += fmt::format("<button data-zoom=\"{0}\">{0}x</button>", z);
-    s += "</div>\n<div class=\"panes\"></div>\n</section>\n";
+    s += "</div>\n";
+    if (exact)
+        s += fmt::format(
+            "<div class=\"legend\" hidden><span>|method - {}|, max over R, G, B, times the gain:</span><span>0</span>"
+            "<span class=\"ramp\"></span><span class=\"hi\"></span></div>\n",
+            escape(v.reference));
+    s += "<div class=\"panes\"></div>\n";
+    if (exact) s += "<div class=\"readout\" aria-live=\"polite\">(move the cursor over an image)</div>\n";
+    s += "</section>\n";
     return s;
 }
 
@@ -160,6 +180,26 @@ std::string docPage(std::string_view id, std::string_view text) {
         "<style>{1}</style></head><body><p><a href=\"../index.html\">back to the report</a></p>"
         "<pre class=\"doc\">{2}</pre></body></html>\n",
         escape(id), detail::kReportCss, escape(text));
+}
+
+std::string base64(std::string_view bytes) {
+    static constexpr char kDigits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    out.reserve((bytes.size() + 2) / 3 * 4);
+    for (std::size_t i = 0; i < bytes.size(); i += 3) {
+        const std::size_t n = std::min<std::size_t>(3, bytes.size() - i);
+        std::uint32_t v = 0;
+        for (std::size_t k = 0; k < 3; ++k) v = v << 8 | (k < n ? std::uint8_t(bytes[i + k]) : 0u);
+        for (std::size_t k = 0; k < 4; ++k) out += k <= n ? kDigits[(v >> (18 - 6 * k)) & 63] : '=';
+    }
+    return out;
+}
+
+std::string pixelScript(const std::string& id, const std::vector<std::pair<std::string, std::string>>& pngs) {
+    nlohmann::ordered_json urls = nlohmann::ordered_json::object();
+    for (const auto& [label, bytes] : pngs) urls[label] = "data:image/png;base64," + base64(bytes);
+    return fmt::format("window.ssfxPixels = window.ssfxPixels || {{}};\nwindow.ssfxPixels[{}] = {};\n",
+                       nlohmann::json(id).dump(), urls.dump());
 }
 
 }  // namespace ssfx::eval::html

@@ -21,4 +21,10 @@ std::string page(const Section& intro, const std::vector<Section>& sections, con
 //! A method doc as a page of its own (methods/ID.html).
 std::string docPage(std::string_view id, std::string_view text);
 
+//! A viewer's pixel script (Viewer::pixels): ssfxPixels[id] = {label: "data:image/png;base64,..."}
+//! for each (label, PNG file bytes).
+std::string pixelScript(const std::string& id, const std::vector<std::pair<std::string, std::string>>& pngs);
+//! RFC 4648 base64 (with padding).
+std::string base64(std::string_view bytes);
+
 }  // namespace ssfx::eval::html

@@ -40,6 +40,10 @@ struct Viewer {
     int width = 0, height = 0;
     std::vector<std::pair<std::string, std::string>> sources;
     std::vector<std::string> initial;  //!< labels picked at first
+    std::string reference = "truth";   //!< the label the difference mode and readout compare with
+    //! A script defining ssfxPixels[id] = {label: PNG data URL} (writePixelScript), for the
+    //! difference mode and the per-pixel readout; empty: the viewer has neither.
+    std::string pixels;
 };
 
 //! A term with its description and a link (the method list).
