@@ -192,6 +192,25 @@ const std::array<MethodInfo, 9> kMethods{{
 
 }  // namespace
 
+AaParams resolveParams(std::string_view id, const MethodSettings& s) {
+    const MethodInfo& m = methodById(id);
+    if (m.id == "noaa") {
+        rejectPreset("noaa", s);
+        rejectParams("noaa", s);
+        return std::monostate{};
+    }
+    if (m.id == "blur") return blurParams(s);
+    if (m.id == "fxaa3c") return fxaa3cParams(s);
+    if (m.id == "fxaa3d") return fxaa3dParams(s);
+    if (m.id == "ddaa1") return ddaa1Params(s);
+    if (m.id == "ddaa2" || m.id == "ddaa2p") return ddaa2Params(m.id, s);
+    if (m.id == "ssaax2") {
+        rejectPreset("ssaax2", s);
+        return applySettings("ssaax2", Ssaax2Params{}, kSsaax2Params, s);
+    }
+    return mitchellParams(s);  // ssaax4
+}
+
 std::span<const MethodInfo> methods() { return kMethods; }
 
 const MethodInfo* findMethod(std::string_view id) {

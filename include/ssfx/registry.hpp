@@ -9,9 +9,14 @@
 #include <string>
 #include <string_view>
 #include <utility>
+#include <variant>
 #include <vector>
 
+#include "ssfx/aa/blur.hpp"
+#include "ssfx/aa/ddaa.hpp"
+#include "ssfx/aa/fxaa.hpp"
 #include "ssfx/aa/presets.hpp"
+#include "ssfx/aa/resolve.hpp"
 #include "ssfx/core/image.hpp"
 #include "ssfx/core/method.hpp"
 #include "ssfx/core/parallel.hpp"
@@ -45,6 +50,13 @@ struct MethodInfo : MethodDesc {
     RunIntoFn runInto;  //!< the fast path into a caller's output
     RunFn reference;    //!< the scalar oracle (ignores Exec)
 };
+
+//! A method's parameters as its CPU function takes them (the params struct), resolved from
+//! settings exactly as run() resolves them: monostate for noaa, Ddaa2Params for ddaa2 and
+//! ddaa2p. The GPU passes turn these into their shader constants (gpu/aa.hpp).
+using AaParams = std::variant<std::monostate, aa::BlurParams, aa::Fxaa3cParams, aa::Fxaa3dParams, aa::Ddaa1Params,
+                              aa::Ddaa2Params, aa::Ssaax2Params, aa::MitchellParams>;
+AaParams resolveParams(std::string_view id, const MethodSettings& settings);
 
 std::span<const MethodInfo> methods();
 const MethodInfo* findMethod(std::string_view id);

@@ -9,11 +9,12 @@
 
 namespace ssfx::vkx {
 
-vk::raii::DescriptorSetLayout makeSetLayout(const Context& ctx, std::span<const BindingSpec> bindings) {
+vk::raii::DescriptorSetLayout makeSetLayout(const Context& ctx, std::span<const BindingSpec> bindings,
+                                            vk::DescriptorSetLayoutCreateFlags flags) {
     std::vector<vk::DescriptorSetLayoutBinding> list;
     for (std::size_t i = 0; i < bindings.size(); ++i)
         list.emplace_back(std::uint32_t(i), bindings[i].type, 1, bindings[i].stages);
-    return vk::raii::DescriptorSetLayout(ctx.device, vk::DescriptorSetLayoutCreateInfo({}, list));
+    return vk::raii::DescriptorSetLayout(ctx.device, vk::DescriptorSetLayoutCreateInfo(flags, list));
 }
 
 vk::raii::ShaderModule makeShaderModule(const Context& ctx, std::span<const std::uint32_t> spirv) {
@@ -53,9 +54,13 @@ void DescriptorSets::bind(std::size_t set, std::uint32_t binding, vk::ImageView 
 
 ComputePipeline::ComputePipeline(const Context& ctx, std::span<const std::uint32_t> spirv,
                                  std::vector<BindingSpec> bindings, std::uint32_t pushConstantBytes,
-                                 const vk::SpecializationInfo* specialization)
+                                 const vk::SpecializationInfo* specialization, bool pushDescriptors)
     : ctx_(&ctx), bindings_(std::move(bindings)), pushBytes_(pushConstantBytes) {
-    setLayout = makeSetLayout(ctx, bindings_);
+    if (pushDescriptors && !ctx.pushDescriptors)
+        throw Error(fmt::format("Vulkan device '{}' has no VK_KHR_push_descriptor", ctx.info.name));
+    setLayout = makeSetLayout(ctx, bindings_,
+                              pushDescriptors ? vk::DescriptorSetLayoutCreateFlagBits::ePushDescriptorKHR
+                                              : vk::DescriptorSetLayoutCreateFlags{});
     const vk::DescriptorSetLayout layouts[] = {*setLayout};
     std::vector<vk::PushConstantRange> push;
     if (pushConstantBytes) push.emplace_back(vk::ShaderStageFlagBits::eCompute, 0, pushConstantBytes);
@@ -70,13 +75,26 @@ void ComputePipeline::dispatch(const vk::raii::CommandBuffer& cmd, vk::Descripto
                                std::uint32_t groupsX, std::uint32_t groupsY, std::uint32_t groupsZ) const {
     cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *pipeline);
     cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *layout, 0, set, {});
-    if (pushBytes_) {
-        if (!push) throw Error("compute dispatch without its push constants");
-        cmd.pushConstants<std::uint8_t>(
-            *layout, vk::ShaderStageFlagBits::eCompute, 0,
-            vk::ArrayProxy<const std::uint8_t>(pushBytes_, static_cast<const std::uint8_t*>(push)));
-    }
+    pushConstants(cmd, push);
     cmd.dispatch(groupsX, groupsY, groupsZ);
+}
+
+void ComputePipeline::dispatchPushed(const vk::raii::CommandBuffer& cmd, std::span<const vk::WriteDescriptorSet> writes,
+                                     const void* push, std::uint32_t groupsX, std::uint32_t groupsY,
+                                     std::uint32_t groupsZ) const {
+    cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *pipeline);
+    cmd.pushDescriptorSetKHR(vk::PipelineBindPoint::eCompute, *layout, 0,
+                             vk::ArrayProxy<const vk::WriteDescriptorSet>(std::uint32_t(writes.size()), writes.data()));
+    pushConstants(cmd, push);
+    cmd.dispatch(groupsX, groupsY, groupsZ);
+}
+
+void ComputePipeline::pushConstants(const vk::raii::CommandBuffer& cmd, const void* push) const {
+    if (!pushBytes_) return;
+    if (!push) throw Error("compute dispatch without its push constants");
+    cmd.pushConstants<std::uint8_t>(
+        *layout, vk::ShaderStageFlagBits::eCompute, 0,
+        vk::ArrayProxy<const std::uint8_t>(pushBytes_, static_cast<const std::uint8_t*>(push)));
 }
 
 void computeBarrier(const vk::raii::CommandBuffer& cmd, vk::PipelineStageFlags dstStage, vk::AccessFlags dstAccess) {

@@ -225,7 +225,15 @@ Context::Context(const ContextOptions& options) : context(makeLoader()) {
                 .get<vk::PhysicalDeviceVulkan13Features>()
                 .maintenance4;
         vk::PhysicalDeviceFeatures2 features2(features, &features13);
-        vk::DeviceCreateInfo deviceInfo({}, queueInfo, {}, {}, nullptr);
+        // Push descriptors: the GPU effects record without descriptor pools (ssfx/gpu/aa.hpp).
+        std::vector<const char*> extensions;
+        for (const auto& e : physical.enumerateDeviceExtensionProperties())
+            if (std::strcmp(e.extensionName, VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME) == 0) pushDescriptors = true;
+        if (pushDescriptors) extensions.push_back(VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME);
+        const auto driver = physical.getProperties2<vk::PhysicalDeviceProperties2, vk::PhysicalDeviceDriverProperties>()
+                                .get<vk::PhysicalDeviceDriverProperties>();
+        ieeeDivSqrt = driver.driverID == vk::DriverId::eMesaLlvmpipe;
+        vk::DeviceCreateInfo deviceInfo({}, queueInfo, {}, extensions, nullptr);
         deviceInfo.pNext = &features2;
         device = vk::raii::Device(physical, deviceInfo);
         queue = vk::raii::Queue(device, queueFamily, 0);

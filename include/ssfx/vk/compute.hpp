@@ -17,7 +17,9 @@ struct BindingSpec {
     vk::ShaderStageFlags stages = vk::ShaderStageFlagBits::eCompute;
 };
 
-vk::raii::DescriptorSetLayout makeSetLayout(const Context& ctx, std::span<const BindingSpec> bindings);
+//! flags: ePushDescriptorKHR for a layout whose descriptors are pushed (ComputePipeline::push).
+vk::raii::DescriptorSetLayout makeSetLayout(const Context& ctx, std::span<const BindingSpec> bindings,
+                                            vk::DescriptorSetLayoutCreateFlags flags = {});
 
 //! A shader module from SPIR-V words: the `.inc` files that ssfx_add_shaders() (CMake)
 //! compiles at build time are included as the body of a `const std::uint32_t[]`.
@@ -49,8 +51,11 @@ private:
 //! A compute shader with one descriptor set (BindingSpec list) and push constants.
 class ComputePipeline {
 public:
+    //! pushDescriptors: the set's descriptors are pushed with dispatchPushed() (needs
+    //! Context::pushDescriptors) instead of bound from a DescriptorSets.
     ComputePipeline(const Context& ctx, std::span<const std::uint32_t> spirv, std::vector<BindingSpec> bindings,
-                    std::uint32_t pushConstantBytes = 0, const vk::SpecializationInfo* specialization = nullptr);
+                    std::uint32_t pushConstantBytes = 0, const vk::SpecializationInfo* specialization = nullptr,
+                    bool pushDescriptors = false);
 
     DescriptorSets makeSets(std::uint32_t count = 1) const {
         return DescriptorSets(*ctx_, setLayout, bindings_, count);
@@ -60,11 +65,19 @@ public:
     void dispatch(const vk::raii::CommandBuffer& cmd, vk::DescriptorSet set, const void* push, std::uint32_t groupsX,
                   std::uint32_t groupsY = 1, std::uint32_t groupsZ = 1) const;
 
+    //! Binds the pipeline, pushes the descriptors `writes` (their dstSet is ignored) and the
+    //! push constants, and dispatches (a pipeline made with pushDescriptors).
+    void dispatchPushed(const vk::raii::CommandBuffer& cmd, std::span<const vk::WriteDescriptorSet> writes,
+                        const void* push, std::uint32_t groupsX, std::uint32_t groupsY = 1,
+                        std::uint32_t groupsZ = 1) const;
+
     vk::raii::DescriptorSetLayout setLayout{nullptr};
     vk::raii::PipelineLayout layout{nullptr};
     vk::raii::Pipeline pipeline{nullptr};
 
 private:
+    void pushConstants(const vk::raii::CommandBuffer& cmd, const void* push) const;
+
     const Context* ctx_;
     std::vector<BindingSpec> bindings_;
     std::uint32_t pushBytes_ = 0;

@@ -49,6 +49,10 @@ public:
     double timestampPeriodNs = 0;  //!< 0 when the queue has no timestamps
     bool anisotropy = false;
     float maxAnisotropy = 1.0f;
+    bool pushDescriptors = false;  //!< VK_KHR_push_descriptor is enabled (the GPU effects need it)
+    //! The driver's division and square root are correctly rounded (lavapipe: LLVM's IEEE
+    //! operations), so the GPU effects' model mode need not correct them.
+    bool ieeeDivSqrt = false;
 
     //! Validation messages (warnings and errors) since creation; empty when validation is off.
     std::vector<std::string> validationMessages() const;

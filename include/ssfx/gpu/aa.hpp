@@ -1,0 +1,95 @@
+// The anti-aliasing methods as Vulkan compute passes (the GPU backend; docs/gpu.md).
+//
+// A pass is created once per method and device, and records its dispatches into the
+// caller's command buffer, the way FidelityFX and NRD passes are integrated:
+//
+//     auto ctx = vkx::Context::create();                 // or vkx::Context::borrow(...)
+//     gpu::AaPass pass(ctx, "ddaa2", settings);          // pipelines, tables, scratch
+//     pass.record(cmd, input, output);                   // in the caller's frame
+//
+// The contract of record():
+//  - input: a 2-D image view of format R8G8B8A8_UNORM or B8G8R8A8_UNORM (not sRGB: the
+//    methods filter the stored values, spec ppaa.md section 1) with SAMPLED usage, in
+//    layout SHADER_READ_ONLY_OPTIMAL or GENERAL, its writes made visible to compute-shader
+//    reads by the caller;
+//  - output: a 2-D image view of format R8G8B8A8_UNORM with STORAGE usage, in layout
+//    GENERAL, of the output size (the input's, divided by the method's input scale:
+//    2 for ssaax2 and ddaa2p, 4 for ssaax4); the pass writes every pixel; the caller's
+//    barrier after record() makes the compute-shader writes visible to what reads next;
+//  - the pass's own scratch image (ddaa2p) and the barriers between its dispatches are the
+//    pass's; descriptors are pushed (VK_KHR_push_descriptor, which the device must have
+//    enabled: vkx::Context enables it), so a recorded pass holds no per-call state and
+//    may be recorded any number of times, also while earlier recordings are in flight.
+//    Only ddaa2p's scratch image is shared between recordings: do not let two recordings
+//    of the same ddaa2p pass run at the same time (one pass per frame in flight).
+//
+// Two sampling modes (Sampling): `model` (the default) reproduces the CPU's GPU sampling
+// model in the shader, so the output bytes equal the CPU's on any device; `hardware` reads
+// with the device's texture unit (a linear sampler): faster, exact only to the device's
+// filtering precision (docs/gpu.md gives the measured agreement).
+#pragma once
+
+#include <memory>
+#include <string>
+#include <string_view>
+
+#include "ssfx/core/image.hpp"
+#include "ssfx/registry.hpp"
+#include "ssfx/vk/context.hpp"
+
+namespace ssfx::gpu {
+
+enum class Sampling {
+    Model,     //!< the CPU's GPU sampling model in the shader: the CPU's bytes
+    Hardware,  //!< the device's own bilinear filtering: the fast path
+};
+//! "model" or "hardware"; parseSampling throws ssfx::Error for anything else.
+std::string_view samplingName(Sampling s);
+Sampling parseSampling(std::string_view name);
+
+//! An image as record() takes it: the view, and what the pass checks about it.
+struct ImageRef {
+    vk::ImageView view;
+    vk::Format format = vk::Format::eUndefined;
+    vk::ImageUsageFlags usage;
+    std::uint32_t width = 0, height = 0;
+    vk::ImageLayout layout = vk::ImageLayout::eUndefined;  //!< the layout it will be in when the pass runs
+};
+
+//! One method's compute pass on one device.
+class AaPass {
+public:
+    //! `method`: an id of the aa registry (methods()); `settings` as for the CPU (preset,
+    //! -p overrides; filtering must be the default Filtering::Gpu, whose GPU form is
+    //! Sampling::Model). Throws ssfx::Error for an unknown method, a bad parameter, or a
+    //! setting the GPU passes do not support (texture=srgb).
+    AaPass(std::shared_ptr<vkx::Context> ctx, std::string_view method, const MethodSettings& settings = {},
+           Sampling sampling = Sampling::Model);
+    ~AaPass();
+    AaPass(const AaPass&) = delete;
+    AaPass& operator=(const AaPass&) = delete;
+
+    const MethodInfo& method() const;
+    Sampling sampling() const;
+
+    //! Records the pass into `cmd` (see the contract above). Throws ssfx::Error when an
+    //! image has the wrong format, usage or size, or exceeds the device's limits.
+    void record(const vk::raii::CommandBuffer& cmd, const ImageRef& input, const ImageRef& output);
+
+    //! Convenience: uploads `input`, runs the pass, waits and downloads the output (the CLI
+    //! and the tests use this). The output is input size / the method's input scale.
+    ImageRgba8 run(ImageView<const Rgba8> input);
+
+    //! GPU time of the last run() in milliseconds (timestamps around the dispatches), or
+    //! 0 when the queue has no timestamps.
+    double lastMilliseconds() const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+//! The methods that have a GPU pass (every aa method today), in registry order.
+bool hasGpuPass(std::string_view method);
+
+}  // namespace ssfx::gpu

@@ -1,0 +1,399 @@
+// The anti-aliasing methods as Vulkan compute passes (ssfx/gpu/aa.hpp; docs/gpu.md).
+#include "ssfx/gpu/aa.hpp"
+
+#include <fmt/format.h>
+
+#include <cstddef>
+#include <cstdlib>
+#include <cstring>
+#include <iterator>
+
+#include "src/aa/blur_kernel.hpp"
+#include "src/gpu/shaders/aa_constants.h"
+#include "ssfx/core/error.hpp"
+#include "ssfx/core/sample.hpp"
+#include "ssfx/vk/compute.hpp"
+#include "ssfx/vk/timer.hpp"
+
+namespace ssfx::gpu {
+
+namespace detail {
+
+// The shared header's promise: member i at byte 4 i, in C++ as in GLSL's std430.
+#define SSFX_AA_OFFSET(type, name) offsetof(AaConstants, name),
+#define SSFX_AA_SIZE(type, name) sizeof(type),
+constexpr std::size_t kOffsets[] = {SSFX_AA_CONSTANTS(SSFX_AA_OFFSET)};
+constexpr std::size_t kSizes[] = {SSFX_AA_CONSTANTS(SSFX_AA_SIZE)};
+constexpr bool fourByteMembersInOrder() {
+    for (std::size_t i = 0; i < std::size(kOffsets); ++i)
+        if (kOffsets[i] != 4 * i || kSizes[i] != 4) return false;
+    return true;
+}
+static_assert(fourByteMembersInOrder(), "AaConstants: every member a 4-byte scalar, in order (std430)");
+static_assert(sizeof(AaConstants) == 4 * std::size(kOffsets), "AaConstants: no padding");
+static_assert(sizeof(AaConstants) <= 128, "AaConstants: within the guaranteed push-constant size");
+
+namespace {
+
+template <class... F>
+struct Overloaded : F... {
+    using F::operator()...;
+};
+template <class... F>
+Overloaded(F...) -> Overloaded<F...>;
+
+void requireUnorm(TextureFormat t, std::string_view method) {
+    if (t != TextureFormat::Unorm)
+        throw Error(fmt::format("{}: texture=srgb is not available on the vulkan backend (use --backend cpu)", method));
+}
+
+void thresholds(AaConstants& c, float edgeThresholdMin, float edgeThreshold, float chromaWeight) {
+    c.edgeThresholdMin = edgeThresholdMin;
+    c.edgeThreshold = edgeThreshold;
+    c.chromaWeight = chromaWeight;
+}
+
+void ddaa1Constants(AaConstants& c, const aa::Ddaa1Params& p) {
+    thresholds(c, p.edgeThresholdMin, p.edgeThreshold, p.chromaWeight);
+    c.strength = p.strength;
+    c.maxDiffusion = p.maxDiffusion;
+    c.ridgeFactor = p.ridgeFactor;
+}
+
+}  // namespace
+
+// The one place where a method's CPU params become its shader constants.
+AaConstants aaConstants(std::string_view method, const AaParams& params, int width, int height, int outWidth,
+                        int outHeight, Sampling sampling) {
+    AaConstants c{};
+    c.width = width, c.height = height, c.outWidth = outWidth, c.outHeight = outHeight;
+    c.fw = float(width), c.fh = float(height);
+    c.invW = 1.0f / float(width), c.invH = 1.0f / float(height);  // as ssfx::Texture
+    c.sampling = sampling == Sampling::Hardware ? 1 : 0;
+    std::visit(Overloaded{
+                   [](const std::monostate&) {},
+                   [&](const aa::BlurParams& p) {
+                       requireUnorm(p.texture, method);
+                       const aa::detail::BlurWeights w = aa::detail::blurWeights(p);
+                       c.blurW1 = w.w1, c.blurW2 = w.w2, c.blurNorm = w.norm;
+                   },
+                   [&](const aa::Fxaa3cParams& p) {
+                       requireUnorm(p.texture, method);
+                       thresholds(c, p.edgeThresholdMin, p.edgeThreshold, p.chromaWeight);
+                       c.edgeSharpness = p.edgeSharpness;
+                       c.diagonalsAtCentres = p.diagonalOffset == 1.0f ? 1 : 0;
+                       c.diagonalU = p.diagonalOffset * c.invW;  // as fxaa3c.cpp: du, dv
+                       c.diagonalV = p.diagonalOffset * c.invH;
+                   },
+                   [&](const aa::Fxaa3dParams& p) {
+                       requireUnorm(p.texture, method);
+                       thresholds(c, p.edgeThresholdMin, p.edgeThreshold, p.chromaWeight);
+                       c.subpix = p.subpix;
+                       c.paperSearchQuirk = p.paperSearchQuirk ? 1 : 0;
+                   },
+                   [&](const aa::Ddaa1Params& p) {
+                       requireUnorm(p.texture, method);
+                       ddaa1Constants(c, p);
+                   },
+                   [&](const aa::Ddaa2Params& p) {
+                       requireUnorm(p.texture, method);
+                       ddaa1Constants(c, p);
+                       c.searchRounds = p.searchRounds;
+                   },
+                   [&](const aa::Ssaax2Params& p) { requireUnorm(p.texture, method); },
+                   [&](const aa::MitchellParams& p) { requireUnorm(p.texture, method); },
+               },
+               params);
+    return c;
+}
+
+}  // namespace detail
+
+namespace {
+
+using detail::AaConstants;
+
+const std::uint32_t kNoaa[] = {
+#include "shaders/noaa.comp.inc"
+};
+const std::uint32_t kBlur[] = {
+#include "shaders/blur.comp.inc"
+};
+const std::uint32_t kFxaa3c[] = {
+#include "shaders/fxaa3c.comp.inc"
+};
+const std::uint32_t kFxaa3d[] = {
+#include "shaders/fxaa3d.comp.inc"
+};
+const std::uint32_t kDdaa1[] = {
+#include "shaders/ddaa1.comp.inc"
+};
+const std::uint32_t kDdaa2[] = {
+#include "shaders/ddaa2.comp.inc"
+};
+const std::uint32_t kSsaax2[] = {
+#include "shaders/ssaax2.comp.inc"
+};
+const std::uint32_t kSsaax4[] = {
+#include "shaders/ssaax4.comp.inc"
+};
+
+struct Shader {
+    std::string_view id;
+    std::span<const std::uint32_t> spirv;
+};
+// ddaa2p is ddaa2's shader followed by ssaax2's (spec ppaa.md "ddaa2p").
+const Shader kShaders[] = {{"noaa", kNoaa},     {"blur", kBlur},     {"fxaa3c", kFxaa3c},
+                           {"fxaa3d", kFxaa3d}, {"ddaa1", kDdaa1},   {"ddaa2", kDdaa2},
+                           {"ssaax2", kSsaax2}, {"ssaax4", kSsaax4}, {"ddaa2p", kDdaa2}};
+
+std::span<const std::uint32_t> shaderFor(std::string_view id) {
+    for (const Shader& s : kShaders)
+        if (s.id == id) return s.spirv;
+    throw Error(fmt::format("{}: no GPU pass", id));
+}
+
+const std::vector<vkx::BindingSpec> kBindings{
+    {vk::DescriptorType::eCombinedImageSampler},  // SSFX_AA_BINDING_INPUT
+    {vk::DescriptorType::eStorageImage},          // SSFX_AA_BINDING_OUTPUT
+    {vk::DescriptorType::eStorageBuffer},         // SSFX_AA_BINDING_TABLES
+};
+static_assert(SSFX_AA_BINDING_INPUT == 0 && SSFX_AA_BINDING_OUTPUT == 1 && SSFX_AA_BINDING_TABLES == 2);
+
+constexpr vk::Format kOutputFormat = vk::Format::eR8G8B8A8Unorm;
+
+bool inputFormatOk(vk::Format f) { return f == vk::Format::eR8G8B8A8Unorm || f == vk::Format::eB8G8R8A8Unorm; }
+
+std::uint32_t groups(std::uint32_t n) { return vkx::groupCount(n, SSFX_AA_GROUP); }
+
+}  // namespace
+
+std::string_view samplingName(Sampling s) { return s == Sampling::Hardware ? "hardware" : "model"; }
+
+Sampling parseSampling(std::string_view name) {
+    if (name == "model") return Sampling::Model;
+    if (name == "hardware") return Sampling::Hardware;
+    throw Error(fmt::format("sampling '{}': expected model or hardware", name));
+}
+
+bool hasGpuPass(std::string_view method) {
+    for (const Shader& s : kShaders)
+        if (s.id == method) return true;
+    return false;
+}
+
+struct AaPass::Impl {
+    std::shared_ptr<vkx::Context> ctx;
+    const MethodInfo* method = nullptr;
+    AaParams params;
+    Sampling sampling = Sampling::Model;
+    vk::raii::Sampler sampler{nullptr};
+    vkx::Buffer tables;
+    std::unique_ptr<vkx::ComputePipeline> pipeline, resolve;  // resolve: ddaa2p's ssaax2
+    vkx::Image scratch;                                       // ddaa2p: ddaa2's 2x output
+    vk::raii::ImageView scratchView{nullptr};
+    std::unique_ptr<vkx::GpuTimer> timer;
+    double lastMs = 0;
+
+    void dispatch(const vkx::ComputePipeline& p, const vk::raii::CommandBuffer& cmd, vk::ImageView in,
+                  vk::ImageLayout inLayout, vk::ImageView out, const AaConstants& c) const {
+        const vk::DescriptorImageInfo inInfo(*sampler, in, inLayout);
+        const vk::DescriptorImageInfo outInfo(nullptr, out, vk::ImageLayout::eGeneral);
+        const vk::DescriptorBufferInfo tableInfo(*tables.buffer, 0, VK_WHOLE_SIZE);
+        const vk::WriteDescriptorSet writes[] = {
+            {{}, SSFX_AA_BINDING_INPUT, 0, vk::DescriptorType::eCombinedImageSampler, inInfo},
+            {{}, SSFX_AA_BINDING_OUTPUT, 0, vk::DescriptorType::eStorageImage, outInfo},
+            {{}, SSFX_AA_BINDING_TABLES, 0, vk::DescriptorType::eStorageBuffer, {}, tableInfo},
+        };
+        p.dispatchPushed(cmd, writes, &c, groups(std::uint32_t(c.outWidth)), groups(std::uint32_t(c.outHeight)));
+    }
+
+    void ensureScratch(std::uint32_t w, std::uint32_t h) {
+        if (*scratch.image && scratch.width == w && scratch.height == h) return;
+        scratch =
+            ctx->createImage(kOutputFormat, w, h, vk::ImageUsageFlagBits::eStorage | vk::ImageUsageFlagBits::eSampled,
+                             vk::ImageAspectFlagBits::eColor);
+        scratchView = vk::raii::ImageView(
+            ctx->device,
+            vk::ImageViewCreateInfo({}, *scratch.image, vk::ImageViewType::e2D, kOutputFormat, {},
+                                    vk::ImageSubresourceRange(vk::ImageAspectFlagBits::eColor, 0, 1, 0, 1)));
+    }
+};
+
+AaPass::AaPass(std::shared_ptr<vkx::Context> ctx, std::string_view method, const MethodSettings& settings,
+               Sampling sampling)
+    : impl_(std::make_unique<Impl>()) {
+    Impl& m = *impl_;
+    if (!ctx) throw Error("gpu::AaPass: no Vulkan context");
+    m.ctx = std::move(ctx);
+    m.method = &methodById(method);
+    if (!hasGpuPass(m.method->id)) throw Error(fmt::format("{}: no GPU pass", m.method->id));
+    if (settings.filtering != Filtering::Gpu)
+        throw Error(
+            fmt::format("{}: exact filtering is a CPU option; on the GPU use sampling=model (the GPU "
+                        "sampling model) or sampling=hardware",
+                        m.method->id));
+    m.params = resolveParams(m.method->id, settings);
+    m.sampling = sampling;
+    // Validate the params now (the constants' checks), for a size that always exists.
+    (void)detail::aaConstants(m.method->id, m.params, 8, 8, 8, 8, sampling);
+    vkx::Context& c = *m.ctx;
+    vkx::guarded("creating the GPU pass", [&] {
+        m.sampler = vk::raii::Sampler(
+            c.device,
+            vk::SamplerCreateInfo({}, vk::Filter::eLinear, vk::Filter::eLinear, vk::SamplerMipmapMode::eNearest,
+                                  vk::SamplerAddressMode::eClampToEdge, vk::SamplerAddressMode::eClampToEdge,
+                                  vk::SamplerAddressMode::eClampToEdge));
+        // The tables: the CPU's own floats, so the model's filtered values are the CPU's.
+        std::vector<float> t(kSixteenthLevels.begin(), kSixteenthLevels.end());
+        t.insert(t.end(), kUnorm8.begin(), kUnorm8.end());
+        aa::MitchellParams mp;
+        if (const auto* p = std::get_if<aa::MitchellParams>(&m.params)) mp = *p;
+        // Tap d of the x4 resolve, from output centre f = 2 (any pixel gives the same t = d + 0.5).
+        for (int d = -8; d <= 7; ++d) t.push_back(aa::mitchell((float(2 + d) + 0.5f - 2.0f) / 4.0f, mp.B, mp.C));
+        static_assert(SSFX_AA_SIXTEENTH_COUNT + SSFX_AA_UNORM_COUNT + SSFX_AA_MITCHELL4_COUNT == 4081 + 256 + 16);
+        m.tables = c.uploadBuffer(t.data(), t.size() * sizeof(float), vk::BufferUsageFlagBits::eStorageBuffer);
+        // Correct division and square root unless the driver's are IEEE (or forced, for tests).
+        const char* force = std::getenv("SSFX_GPU_CORRECT_DIVSQRT");
+        const vk::Bool32 correct = (force && std::string(force) == "1") || !c.ieeeDivSqrt ? VK_TRUE : VK_FALSE;
+        const vk::SpecializationMapEntry entry(0, 0, sizeof(vk::Bool32));
+        const vk::SpecializationInfo spec(1, &entry, sizeof(correct), &correct);
+        m.pipeline = std::make_unique<vkx::ComputePipeline>(c, shaderFor(m.method->id), kBindings,
+                                                            std::uint32_t(sizeof(AaConstants)), &spec, true);
+        if (m.method->id == "ddaa2p")
+            m.resolve = std::make_unique<vkx::ComputePipeline>(c, std::span<const std::uint32_t>(kSsaax2), kBindings,
+                                                               std::uint32_t(sizeof(AaConstants)), &spec, true);
+        m.timer = std::make_unique<vkx::GpuTimer>(c, 1);
+    });
+}
+
+AaPass::~AaPass() = default;
+
+const MethodInfo& AaPass::method() const { return *impl_->method; }
+Sampling AaPass::sampling() const { return impl_->sampling; }
+double AaPass::lastMilliseconds() const { return impl_->lastMs; }
+
+void AaPass::record(const vk::raii::CommandBuffer& cmd, const ImageRef& input, const ImageRef& output) {
+    Impl& m = *impl_;
+    const std::string_view id = m.method->id;
+    const std::uint32_t scale = std::uint32_t(m.method->inputScale);
+    if (!input.view || !output.view) throw Error(fmt::format("{}: record() without an input or output view", id));
+    if (!inputFormatOk(input.format))
+        throw Error(
+            fmt::format("{}: input format {} (expected R8G8B8A8_UNORM or B8G8R8A8_UNORM; sRGB views would "
+                        "decode the texels, which the methods filter as stored)",
+                        id, vk::to_string(input.format)));
+    if (!(input.usage & vk::ImageUsageFlagBits::eSampled))
+        throw Error(fmt::format("{}: the input image needs SAMPLED usage", id));
+    if (input.layout != vk::ImageLayout::eShaderReadOnlyOptimal && input.layout != vk::ImageLayout::eGeneral)
+        throw Error(fmt::format("{}: input layout {} (expected SHADER_READ_ONLY_OPTIMAL or GENERAL)", id,
+                                vk::to_string(input.layout)));
+    if (output.format != kOutputFormat)
+        throw Error(fmt::format("{}: output format {} (expected R8G8B8A8_UNORM)", id, vk::to_string(output.format)));
+    if (!(output.usage & vk::ImageUsageFlagBits::eStorage))
+        throw Error(fmt::format("{}: the output image needs STORAGE usage", id));
+    if (output.layout != vk::ImageLayout::eGeneral)
+        throw Error(fmt::format("{}: output layout {} (expected GENERAL)", id, vk::to_string(output.layout)));
+    if (input.width == 0 || input.height == 0) throw Error(fmt::format("{}: empty input image", id));
+    if (input.width % scale != 0 || input.height % scale != 0)
+        throw Error(fmt::format("{}: input size {}x{} is not divisible by {} (the method takes the {}x render)", id,
+                                input.width, input.height, scale, scale));
+    if (output.width != input.width / scale || output.height != input.height / scale)
+        throw Error(fmt::format("{}: output is {}x{}, expected {}x{}", id, output.width, output.height,
+                                input.width / scale, input.height / scale));
+    m.ctx->requireImageSize(input.width, input.height, fmt::format("{} input", id));
+    const int w = int(input.width), h = int(input.height);
+    vkx::guarded("recording the GPU pass", [&] {
+        if (id == "ddaa2p") {
+            // ddaa2 on the 2x input into the pass's scratch image, then ssaax2 from it.
+            m.ensureScratch(input.width, input.height);
+            const vk::ImageSubresourceRange range(vk::ImageAspectFlagBits::eColor, 0, 1, 0, 1);
+            const vk::ImageMemoryBarrier toGeneral(
+                vk::AccessFlagBits::eShaderRead, vk::AccessFlagBits::eShaderWrite, vk::ImageLayout::eUndefined,
+                vk::ImageLayout::eGeneral, VK_QUEUE_FAMILY_IGNORED, VK_QUEUE_FAMILY_IGNORED, *m.scratch.image, range);
+            // (Also orders this recording's writes after an earlier recording's reads.)
+            cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eComputeShader,
+                                {}, {}, {}, toGeneral);
+            m.dispatch(*m.pipeline, cmd, input.view, input.layout, *m.scratchView,
+                       detail::aaConstants("ddaa2", m.params, w, h, w, h, m.sampling));
+            const vk::ImageMemoryBarrier written(
+                vk::AccessFlagBits::eShaderWrite, vk::AccessFlagBits::eShaderRead, vk::ImageLayout::eGeneral,
+                vk::ImageLayout::eGeneral, VK_QUEUE_FAMILY_IGNORED, VK_QUEUE_FAMILY_IGNORED, *m.scratch.image, range);
+            cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eComputeShader,
+                                {}, {}, {}, written);
+            m.dispatch(*m.resolve, cmd, *m.scratchView, vk::ImageLayout::eGeneral, output.view,
+                       detail::aaConstants("ssaax2", aa::Ssaax2Params{}, w, h, w / 2, h / 2, m.sampling));
+            return;
+        }
+        m.dispatch(*m.pipeline, cmd, input.view, input.layout, output.view,
+                   detail::aaConstants(id, m.params, w, h, w / int(scale), h / int(scale), m.sampling));
+    });
+}
+
+ImageRgba8 AaPass::run(ImageView<const Rgba8> input) {
+    Impl& m = *impl_;
+    vkx::Context& c = *m.ctx;
+    const std::string_view id = m.method->id;
+    checkDimensions(input.width(), input.height(), fmt::format("{} input", id));
+    const std::uint32_t w = std::uint32_t(input.width()), h = std::uint32_t(input.height());
+    const std::uint32_t scale = std::uint32_t(m.method->inputScale);
+    if (w % scale != 0 || h % scale != 0)
+        throw Error(fmt::format("{}: input size {}x{} is not divisible by {} (the method takes the {}x render)", id, w,
+                                h, scale, scale));
+    c.requireImageSize(w, h, fmt::format("{} input", id));
+    const std::uint32_t ow = w / scale, oh = h / scale;
+    ImageRgba8 out{int(ow), int(oh)};
+    vkx::guarded("running the GPU pass", [&] {
+        const vk::DeviceSize inBytes = vk::DeviceSize(w) * h * 4, outBytes = vk::DeviceSize(ow) * oh * 4;
+        vkx::Buffer upload = c.createBuffer(inBytes, vk::BufferUsageFlagBits::eTransferSrc, true);
+        for (std::uint32_t y = 0; y < h; ++y)
+            std::memcpy(static_cast<std::uint8_t*>(upload.mapped) + std::size_t(y) * w * 4, input.row(int(y)),
+                        std::size_t(w) * 4);
+        vkx::Buffer download = c.createBuffer(outBytes, vk::BufferUsageFlagBits::eTransferDst, true);
+        const vk::ImageSubresourceRange range(vk::ImageAspectFlagBits::eColor, 0, 1, 0, 1);
+        const vk::ImageUsageFlags inUsage = vk::ImageUsageFlagBits::eSampled | vk::ImageUsageFlagBits::eTransferDst;
+        const vk::ImageUsageFlags resUsage = vk::ImageUsageFlagBits::eStorage | vk::ImageUsageFlagBits::eTransferSrc;
+        vkx::Image in = c.createImage(kOutputFormat, w, h, inUsage, vk::ImageAspectFlagBits::eColor);
+        vkx::Image res = c.createImage(kOutputFormat, ow, oh, resUsage, vk::ImageAspectFlagBits::eColor);
+        // 2-D views (createImage makes sampled images' views 2-D arrays).
+        auto view2d = [&](const vkx::Image& img) {
+            return vk::raii::ImageView(
+                c.device, vk::ImageViewCreateInfo({}, *img.image, vk::ImageViewType::e2D, kOutputFormat, {}, range));
+        };
+        const vk::raii::ImageView inView = view2d(in), resView = view2d(res);
+        using S = vk::PipelineStageFlagBits;
+        using A = vk::AccessFlagBits;
+        using L = vk::ImageLayout;
+        c.submit([&](const vk::raii::CommandBuffer& cmd) {
+            vkx::transition(cmd, in, L::eUndefined, L::eTransferDstOptimal, S::eTopOfPipe, {}, S::eTransfer,
+                            A::eTransferWrite);
+            const vk::BufferImageCopy inCopy(0, 0, 0, {vk::ImageAspectFlagBits::eColor, 0, 0, 1}, {0, 0, 0}, {w, h, 1});
+            cmd.copyBufferToImage(*upload.buffer, *in.image, L::eTransferDstOptimal, inCopy);
+            vkx::transition(cmd, in, L::eTransferDstOptimal, L::eShaderReadOnlyOptimal, S::eTransfer, A::eTransferWrite,
+                            S::eComputeShader, A::eShaderRead);
+            vkx::transition(cmd, res, L::eUndefined, L::eGeneral, S::eTopOfPipe, {}, S::eComputeShader,
+                            A::eShaderWrite);
+            m.timer->reset(cmd);
+            m.timer->begin(cmd, 0, S::eComputeShader);
+            record(cmd, ImageRef{*inView, kOutputFormat, inUsage, w, h, L::eShaderReadOnlyOptimal},
+                   ImageRef{*resView, kOutputFormat, resUsage, ow, oh, L::eGeneral});
+            m.timer->end(cmd, 0, S::eComputeShader);
+            vkx::transition(cmd, res, L::eGeneral, L::eTransferSrcOptimal, S::eComputeShader, A::eShaderWrite,
+                            S::eTransfer, A::eTransferRead);
+            const vk::BufferImageCopy outCopy(0, 0, 0, {vk::ImageAspectFlagBits::eColor, 0, 0, 1}, {0, 0, 0},
+                                              {ow, oh, 1});
+            cmd.copyImageToBuffer(*res.image, L::eTransferSrcOptimal, *download.buffer, outCopy);
+            const vk::MemoryBarrier toHost(A::eTransferWrite, A::eHostRead);
+            cmd.pipelineBarrier(S::eTransfer, S::eHost, {}, toHost, {}, {});
+        });
+        const auto ms = m.timer->milliseconds();
+        m.lastMs = ms.empty() ? 0.0 : ms[0];
+        for (std::uint32_t y = 0; y < oh; ++y)
+            std::memcpy(out.view().row(int(y)),
+                        static_cast<const std::uint8_t*>(download.mapped) + std::size_t(y) * ow * 4,
+                        std::size_t(ow) * 4);
+    });
+    return out;
+}
+
+}  // namespace ssfx::gpu

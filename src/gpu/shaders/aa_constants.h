@@ -1,0 +1,65 @@
+// The push constants of every anti-aliasing compute pass, compiled by both C++
+// (src/gpu/aa_pass.cpp, which fills them from the CPU params structs: gpu::aaConstants) and
+// GLSL (ppaa.glsl). Every member is a 4-byte scalar, so the std430 push-constant layout is
+// the C++ layout: member i at byte offset 4 i. The C++ side checks this with static_asserts
+// (SSFX_GPU_CHECK_LAYOUT); GLSL has no offsetof, so the member list is the one macro both use.
+#ifndef SSFX_GPU_AA_CONSTANTS_H
+#define SSFX_GPU_AA_CONSTANTS_H
+
+// X(type, name): the members in order.
+#define SSFX_AA_CONSTANTS(X)                                                               \
+    X(int, width) /* input size in pixels */                                               \
+    X(int, height)                                                                         \
+    X(int, outWidth) /* output size (the input's for same-size passes) */                  \
+    X(int, outHeight)                                                                      \
+    X(float, fw) /* float(width), float(height) */                                         \
+    X(float, fh)                                                                           \
+    X(float, invW) /* 1 / width, 1 / height rounded to float32 once (spec section 1) */    \
+    X(float, invH)                                                                         \
+    X(float, edgeThresholdMin) /* early exit (spec section 1) */                           \
+    X(float, edgeThreshold)                                                                \
+    X(float, chromaWeight) /* colour-aware contrast; 0 = the paper's luma */               \
+    X(float, blurW1)       /* blur: direct-neighbour and corner weights, 1 / weight sum */ \
+    X(float, blurW2)                                                                       \
+    X(float, blurNorm)                                                                     \
+    X(float, edgeSharpness)    /* fxaa3c */                                                \
+    X(int, diagonalsAtCentres) /* fxaa3c: diagonalOffset == 1 (reads at pixel centres) */  \
+    X(float, diagonalU)        /* fxaa3c: diagonalOffset / W, / H */                       \
+    X(float, diagonalV)                                                                    \
+    X(float, subpix) /* fxaa3d */                                                          \
+    X(int, paperSearchQuirk)                                                               \
+    X(float, strength) /* ddaa1, ddaa2 */                                                  \
+    X(float, maxDiffusion)                                                                 \
+    X(float, ridgeFactor)                                                                  \
+    X(int, searchRounds) /* ddaa2 */                                                       \
+    X(int, sampling)     /* 0: the GPU sampling model (exact); 1: the device's sampler */
+
+#define SSFX_AA_MEMBER(type, name) type name;
+
+#ifdef __cplusplus
+namespace ssfx::gpu::detail {
+struct AaConstants {
+    SSFX_AA_CONSTANTS(SSFX_AA_MEMBER)
+};
+}  // namespace ssfx::gpu::detail
+#else
+struct AaConstants {
+    SSFX_AA_CONSTANTS(SSFX_AA_MEMBER)
+};
+#endif
+
+// Binding numbers of descriptor set 0, shared by every pass.
+#define SSFX_AA_BINDING_INPUT 0   // combined image sampler: the input (linear, clamp to edge)
+#define SSFX_AA_BINDING_OUTPUT 1  // storage image rgba8: the output
+#define SSFX_AA_BINDING_TABLES 2  // storage buffer: the tables below
+
+// The tables buffer (floats): k / 4080 for k = 0..4080 (ssfx::kSixteenthLevels), v / 255 for
+// v = 0..255 (ssfx::kUnorm8), then the 16 Mitchell weights of the x4 resolve per axis.
+#define SSFX_AA_SIXTEENTH_COUNT 4081
+#define SSFX_AA_UNORM_COUNT 256
+#define SSFX_AA_MITCHELL4_COUNT 16
+
+// Work-group size of every pass: 8 x 8 pixels.
+#define SSFX_AA_GROUP 8
+
+#endif

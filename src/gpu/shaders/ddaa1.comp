@@ -1,0 +1,18 @@
+#version 450
+// ddaa1: directional diffusion without edge search (Klein, DDAA, sections 2.1-2.2; spec
+// ppaa.md "ddaa1"; the CPU's src/aa/ddaa1.cpp).
+#include "ppaa.glsl"
+#include "ddaa.glsl"
+
+void main() {
+    ivec2 p;
+    if (!outputPixel(p)) return;
+    const Luma3x3 n = neighbourhood(p.x, p.y);
+    float range;
+    if (belowEdgeThreshold(n, range)) {
+        storeInput(p);
+        return;
+    }
+    const Diffusion d = diffusion(n, edgeSides(n));
+    store(p, diffuse(p.x, p.y, d, 0.0, 0.0), alphaAt(p.x, p.y));
+}

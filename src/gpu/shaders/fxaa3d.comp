@@ -1,0 +1,97 @@
+#version 450
+// fxaa3d: FXAA 3.11 "desktop"/quality with a 12-iteration edge search (T. Lottes, NVIDIA
+// 2011), as in the DDAA paper's comparison (spec ppaa.md "fxaa3d"; the CPU's
+// src/aa/fxaa3d.cpp). paperSearchQuirk (default on): side 2 steps back one pixel after its
+// first read, as the paper's shader does.
+#include "ppaa.glsl"
+
+// Step after each unsuccessful read, in pixels: 1 for the first five, then skipping (the
+// skipping gives FXAA its stipple artifacts, DDAA paper Fig. 7; kept: it is the baseline).
+const float kSteps[12] = float[12](1.0, 1.0, 1.0, 1.0, 1.0, 1.5, 2.0, 2.0, 2.0, 2.0, 4.0, 8.0);
+
+float walkLuma(bool horizontal, float wu, float wv, float localAverage) {
+    const vec3 c = sampleUV(wu, wv);
+    precise float d = edgeLuma(c) - localAverage;
+    return d;
+}
+
+void main() {
+    ivec2 p;
+    if (!outputPixel(p)) return;
+    const int x = p.x, y = p.y;
+    const Luma3x3 n = neighbourhood(x, y);
+    float range;
+    if (belowEdgeThreshold(n, range)) {
+        storeInput(p);
+        return;
+    }
+    const EdgeSides s = edgeSides(n);
+    const bool pair1 = abs(s.g1) >= abs(s.g2);  // steeper side; ties go to side 1
+    const float lumaSteep = pair1 ? s.luma1 : s.luma2;
+    precise float gradientScaled = 0.25 * maxf(abs(s.g1), abs(s.g2));
+    precise float localAverage = (lumaSteep + n.C) * 0.5;
+    float lengthSign = s.horizontal ? pc.invH : pc.invW;
+    if (pair1) lengthSign = -lengthSign;
+
+    const float u = centreU(x), v = centreV(y);
+    // posB: half a pixel across, towards the steep side; off: one pixel along the edge.
+    precise float bu = u, bv = v;
+    if (s.horizontal)
+        bv += lengthSign * 0.5;
+    else
+        bu += lengthSign * 0.5;
+    const float offU = s.horizontal ? pc.invW : 0.0;
+    const float offV = s.horizontal ? 0.0 : pc.invH;
+
+    precise float nU = bu - offU * kSteps[0], nV = bv - offV * kSteps[0];
+    precise float pU = bu + offU * kSteps[0], pV = bv + offV * kSteps[0];
+    precise float endN = walkLuma(s.horizontal, nU, nV, localAverage);
+    precise float endP = walkLuma(s.horizontal, pU, pV, localAverage);
+    bool doneN = abs(endN) >= gradientScaled;
+    bool doneP = abs(endP) >= gradientScaled;
+    for (int i = 1; i < 12; ++i) {
+        if (!doneN) {
+            nU -= offU * kSteps[i];
+            nV -= offV * kSteps[i];
+        }
+        if (!doneP) {
+            if (i == 1 && pc.paperSearchQuirk != 0) {
+                pU -= offU * kSteps[i];
+                pV -= offV * kSteps[i];
+            } else {
+                pU += offU * kSteps[i];
+                pV += offV * kSteps[i];
+            }
+        }
+        if ((doneN && doneP) || i == 11) break;  // after the last step there is no read
+        if (!doneN) endN = walkLuma(s.horizontal, nU, nV, localAverage);
+        if (!doneP) endP = walkLuma(s.horizontal, pU, pV, localAverage);
+        doneN = doneN || abs(endN) >= gradientScaled;
+        doneP = doneP || abs(endP) >= gradientScaled;
+    }
+
+    precise float dstN = s.horizontal ? u - nU : v - nV;
+    precise float dstP = s.horizontal ? pU - u : pV - v;
+    precise float centreOff = n.C - localAverage;
+    const bool centreBelow = centreOff < 0.0;
+    const bool goodSpanN = (endN < 0.0) != centreBelow;
+    const bool goodSpanP = (endP < 0.0) != centreBelow;
+    const bool directionN = dstN < dstP;
+    precise float spanSum = dstN + dstP;
+    precise float pixelOffset = 0.5 - crDiv(minf(dstN, dstP), spanSum);
+    const bool goodSpan = directionN ? goodSpanN : goodSpanP;
+
+    // Sub-pixel aliasing term (FXAA 3.11 subpix, spec step 6).
+    precise float avg = (1.0 / 12.0) * (2.0 * ((n.S + n.N) + (n.W + n.E)) + (n.SW + n.NW) + (n.SE + n.NE));
+    precise float dev = abs(avg - n.C);
+    precise float sp = range > 0.0 ? minf(maxf(crDiv(dev, range), 0.0), 1.0) : 0.0;
+    sp = (-2.0 * sp + 3.0) * sp * sp;
+    precise float sub = sp * sp * pc.subpix;
+
+    const float offset = maxf(goodSpan ? pixelOffset : 0.0, sub);
+    precise float shift = offset * lengthSign;
+    precise float ru = u + shift;
+    precise float rv = v + shift;
+    const vec3 c = s.horizontal ? sampleUV(u, rv) : sampleUV(ru, v);
+    store(p, c, alphaAt(x, y));
+}
