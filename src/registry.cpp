@@ -161,7 +161,11 @@ MethodInfo entry(Text t, std::span<const ParamInfo> params, std::string_view kin
     m.id = t.id, m.family = "aa", m.summary = t.summary, m.citation = t.citation, m.inputs = t.inputs;
     m.params = params;
     if (presets) m.presets = kThresholdPresets;
+#ifdef SSFX_HAVE_GPU
+    m.backends = kCpuVulkanBackends;  // every aa method has a GPU pass (ssfx/gpu/aa.hpp)
+#else
     m.backends = kCpuBackend;
+#endif
     m.kind = kind, m.usesPresets = presets, m.inputScale = scale, m.run = run, m.runInto = into, m.reference = ref;
     return m;
 }

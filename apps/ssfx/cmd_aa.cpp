@@ -10,6 +10,7 @@
 #include <memory>
 #include <optional>
 
+#include "apps/ssfx/backend.hpp"
 #include "apps/ssfx/commands.hpp"
 #include "apps/ssfx/console.hpp"
 #include "ssfx/aa/presets.hpp"
@@ -71,6 +72,7 @@ struct AaOptions {
     std::vector<std::string> params;
     int threads = 0;
     bool listPresets = false;
+    BackendOptions backend;
 };
 
 void printPresets() {
@@ -134,7 +136,7 @@ Frames openFrames(const AaOptions& o, std::pair<int, int> rawSize) {
     return f;
 }
 
-void runFrames(const AaOptions& o, const MethodInfo& m, const MethodSettings& settings, const Exec& exec) {
+void runFrames(const AaOptions& o, const Applier& method, const Exec& exec) {
     const auto rawSize = o.raw.empty() ? std::pair<int, int>{0, 0} : parseSize(o.raw, "--raw", 16384);
     Frames in = openFrames(o, rawSize);
     // The output: numbered files, a folder (the input's file names), or a raw stream.
@@ -186,7 +188,7 @@ void runFrames(const AaOptions& o, const MethodInfo& m, const MethodSettings& se
             const auto slot = std::size_t(i % slots);
             if (!in.raw) inputs[slot] = io::readPng(in.files[std::size_t(i)]);
             try {
-                outputs[slot] = m.run(inputs[slot].view(), settings, exec);
+                outputs[slot] = method.apply(inputs[slot].view());
             } catch (const Error& e) {  // e.g. a resolve's size rule: say which frame
                 throw Error(fmt::format("{}: {}", name(i), e.what()));
             }
@@ -216,7 +218,7 @@ bool isSequence(const AaOptions& o) {
            io::FramePattern::isPattern(o.output) || isFolder(o.input) || !o.frames.empty();
 }
 
-void run(const AaOptions& o) {
+void run(AaOptions o) {
     if (o.listPresets) {
         printPresets();
         return;
@@ -231,11 +233,13 @@ void run(const AaOptions& o) {
         if (!settings.preset)
             throw Error(fmt::format("unknown preset '{}' (presets: low, medium, high, ultra, extreme)", o.preset));
     }
+    takeSamplingParam(o.params, o.backend);
     for (const auto& p : o.params) settings.params.push_back(parseParam(p, methodById(o.method).params, o.method));
     if (o.filtering == "exact") settings.filtering = Filtering::Exact;
     const Exec exec{o.threads};
+    const Applier method = makeApplier(o.backend, m, settings, exec);
     if (isSequence(o)) {
-        runFrames(o, m, settings, exec);
+        runFrames(o, method, exec);
         return;
     }
 
@@ -246,7 +250,7 @@ void run(const AaOptions& o) {
         const auto n = std::int64_t(anim.frames.size());
         for (std::size_t i = 0; i < anim.frames.size(); ++i) {
             try {
-                anim.frames[i].image = m.run(anim.frames[i].image.view(), settings, exec);
+                anim.frames[i].image = method.apply(anim.frames[i].image.view());
             } catch (const Error& e) {  // e.g. a resolve's size rule: say which file and frame
                 throw Error(fmt::format("{} (frame {}): {}", o.input, i, e.what()));
             }
@@ -257,7 +261,7 @@ void run(const AaOptions& o) {
         const ImageRgba8 in = io::decodePng(bytes, o.input);
         ImageRgba8 out;
         try {
-            out = m.run(in.view(), settings, exec);
+            out = method.apply(in.view());
         } catch (const Error& e) {
             throw Error(fmt::format("{}: {}", o.input, e.what()));
         }
@@ -293,6 +297,7 @@ void addAaCommand(CLI::App& app) {
     cmd->add_option("--threads", opts->threads, "Worker threads (0 = all; the output bytes do not depend on it)")
         ->check(CLI::Range(0, 1024));
     cmd->add_flag("--list-presets", opts->listPresets, "Print the presets with their thresholds and exit");
+    addBackendOptions(cmd, opts->backend);
     cmd->footer(
         "Sequences: frames run in parallel, a few per thread in memory at a time, and are written in order;\n"
         "a numbered output keeps the input's frame numbers (raw or folder input: 0, 1, ...).\n"
@@ -300,7 +305,10 @@ void addAaCommand(CLI::App& app) {
         "  ssfx aa -m ddaa2 in/ -o out/\n"
         "  ffmpeg -i in.mkv -f rawvideo -pix_fmt rgba - | ssfx aa --raw 1920x1080 -m ddaa2 - -o - |\n"
         "    ffmpeg -f rawvideo -pix_fmt rgba -s 1920x1080 -i - -c:v ffv1 out.mkv\n"
-        "A raw stream cut short is an error naming the frame; the frames before it are written whole.");
+        "A raw stream cut short is an error naming the frame; the frames before it are written whole.\n"
+        "GPU: --backend vulkan runs the method as a Vulkan compute pass (docs/gpu.md); with the default\n"
+        "-p sampling=model the output bytes are the CPU's, -p sampling=hardware uses the device's filtering.\n"
+        "  ssfx aa -m ddaa2 --backend vulkan in.png -o out.png");
     cmd->callback([opts] { run(*opts); });
 }
 

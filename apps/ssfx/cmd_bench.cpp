@@ -4,6 +4,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+
+#include "apps/ssfx/backend.hpp"
 #include "apps/ssfx/commands.hpp"
 #include "apps/ssfx/console.hpp"
 #include "ssfx/aa/resolve.hpp"
@@ -22,10 +25,38 @@ struct BenchOptions {
     std::string image, json;
     std::vector<std::string> methods;
     int reps = 40, warmup = 3, threads = 0, width = 1920;  // synthetic image: width x (width * 9 / 16)
+    std::vector<std::string> params;                       // -p sampling=... (vulkan)
+    BackendOptions backend;
 };
 
-void run(const BenchOptions& o) {
+// The GPU protocol: the same interleaved rounds, each repetition one submit of one method,
+// its time from the GPU timestamps around the pass's dispatches.
+std::vector<eval::TimingResult> timeOnBackend(std::vector<std::string>& ids,
+                                              const std::function<ImageRgba8(int)>& input, const BenchOptions& o,
+                                              const Exec& exec, std::string* device,
+                                              const std::function<void(int, int)>& rounds) {
+    if (std::find(ids.begin(), ids.end(), "blur") == ids.end()) ids.insert(ids.begin(), "blur");
+    std::vector<ImageRgba8> inputs(5);
+    std::vector<eval::TimedMethod> timed;
+    std::vector<Applier> appliers;
+    appliers.reserve(ids.size());
+    for (const auto& id : ids) {
+        const MethodInfo& m = methodById(id);
+        if (inputs[std::size_t(m.inputScale)].width() == 0) inputs[std::size_t(m.inputScale)] = input(m.inputScale);
+        appliers.push_back(makeApplier(o.backend, m, {}, exec));
+        *device = appliers.back().device;
+        const Applier* a = &appliers.back();
+        const ImageRgba8* in = &inputs[std::size_t(m.inputScale)];
+        timed.push_back({id, [a, in] { (void)a->apply(in->view()); }, [a] { return a->lastGpuMs(); }});
+    }
+    return eval::timeInterleaved(timed, o.reps, o.warmup, "blur", rounds);
+}
+
+void run(BenchOptions o) {
     const Exec exec{o.threads};
+    takeSamplingParam(o.params, o.backend);
+    if (!o.params.empty()) throw Error(fmt::format("bench: -p takes sampling=model|hardware only ('{}')", o.params[0]));
+    const bool gpu = o.backend.backend == "vulkan";
     // Inputs at scale 1, 2 and 4 (the resolves take the supersampled render).
     const std::string source = o.image.empty() ? "synthetic" : o.image;
     ImageRgba8 base;
@@ -40,18 +71,22 @@ void run(const BenchOptions& o) {
     for (const auto& id : ids) methodById(id);  // every id checked before any work
     const ImageRgba8 first = input(1);
     ProgressLine line("bench");
-    const auto results = eval::timeMethodsOn(
-        ids, [&](int scale) { return scale == 1 ? first : input(scale); }, o.reps, o.warmup, exec,
-        [&](int r, int n) {
-            line.report({"interleaved rounds", r, n, "rounds"});
-        });
+    const auto scaled = [&](int scale) { return scale == 1 ? first : input(scale); };
+    const auto rounds = [&](int r, int n) { line.report({"interleaved rounds", r, n, "rounds"}); };
+    std::string device;
+    const auto results = gpu ? timeOnBackend(ids, scaled, o, exec, &device, rounds)
+                             : eval::timeMethodsOn(ids, scaled, o.reps, o.warmup, exec, rounds);
     line.end();
     const eval::MachineInfo mi = eval::machineInfo(resolvedThreads(exec));
     std::string table =
         fmt::format("image: {} ({}x{}); {} repetitions, methods interleaved, fastest and slowest quarter dropped\n",
                     source, first.width(), first.height(), o.reps);
-    table += fmt::format("machine: {}, {} threads used of {}, SIMD target {}\n\n", mi.cpu, mi.threads,
-                         mi.hardwareThreads, mi.simdTarget);
+    if (gpu)
+        table += fmt::format("backend: vulkan on {}, sampling={}; times from GPU timestamps around each pass\n\n",
+                             device, o.backend.sampling.empty() ? "model" : o.backend.sampling);
+    else
+        table += fmt::format("machine: {}, {} threads used of {}, SIMD target {}\n\n", mi.cpu, mi.threads,
+                             mi.hardwareThreads, mi.simdTarget);
     table += fmt::format("{:<8} {:>10} {:>12} {:>14}\n", "method", "median ms", "trimmed ms", "% of blur");
     for (const auto& r : results)
         table += fmt::format("{:<8} {:>10.3f} {:>12.3f} {:>14.0f}\n", r.id, r.medianMs, r.trimmedMeanMs, r.relative);
@@ -63,6 +98,9 @@ void run(const BenchOptions& o) {
                         {"hardware_threads", mi.hardwareThreads},
                         {"threads", mi.threads},
                         {"simd_target", mi.simdTarget}};
+        j["backend"] = o.backend.backend;
+        j["device"] = gpu ? device : mi.cpu;
+        if (gpu) j["sampling"] = o.backend.sampling.empty() ? "model" : o.backend.sampling;
         j["image"] = {{"path", source}, {"width", first.width()}, {"height", first.height()}};
         j["protocol"] = {{"repetitions", o.reps},
                          {"warmup", o.warmup},
@@ -92,6 +130,11 @@ void addBenchCommand(CLI::App& app) {
     cmd->add_option("--threads", opts->threads, "Worker threads (0 = all)")->check(CLI::Range(0, 1024));
     cmd->add_option("--size", opts->width, "Width of the synthetic image (height = width * 9 / 16; default 1920)")
         ->check(CLI::Range(16, 16384));
+    cmd->add_option("-p,--param", opts->params, "With --backend vulkan: sampling=model (default) or sampling=hardware");
+    addBackendOptions(cmd, opts->backend);
+    cmd->footer(
+        "CPU: wall-clock time of each method call. --backend vulkan: GPU timestamps around each pass's\n"
+        "dispatches, one submit per method per round (upload and download are not timed).");
     cmd->callback([opts] { run(*opts); });
 }
 

@@ -30,7 +30,7 @@ std::vector<TimingResult> timeMethodsOn(std::vector<std::string>& ids,
         if (inputs[slot].empty()) inputs[slot] = input(m->inputScale);
         const ImageRgba8& in = inputs[slot];
         ImageRgba8& out = outputs.emplace_back(inputs[0].width(), inputs[0].height());
-        timed.push_back({id, [m, &in, &out, exec] { m->runInto(in.view(), out.view(), settings, exec); }});
+        timed.push_back({id, [m, &in, &out, exec] { m->runInto(in.view(), out.view(), settings, exec); }, {}});
     }
     return timeInterleaved(timed, repetitions, warmup, "blur", rounds);
 }

@@ -36,7 +36,9 @@ std::vector<TimingResult> timeInterleaved(const std::vector<TimedMethod>& method
             methods[i].run();
             const auto t1 = Clock::now();
             if (round >= warmup)
-                results[i].samplesMs.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
+                results[i].samplesMs.push_back(methods[i].measuredMs
+                                                   ? methods[i].measuredMs()
+                                                   : std::chrono::duration<double, std::milli>(t1 - t0).count());
         }
         if (progress) progress(round + 1, warmup + repetitions);
     }

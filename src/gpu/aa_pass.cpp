@@ -4,7 +4,6 @@
 #include <fmt/format.h>
 
 #include <cstddef>
-#include <cstdlib>
 #include <cstring>
 #include <iterator>
 
@@ -253,16 +252,11 @@ AaPass::AaPass(std::shared_ptr<vkx::Context> ctx, std::string_view method, const
         for (int d = -8; d <= 7; ++d) t.push_back(aa::mitchell((float(2 + d) + 0.5f - 2.0f) / 4.0f, mp.B, mp.C));
         static_assert(SSFX_AA_SIXTEENTH_COUNT + SSFX_AA_UNORM_COUNT + SSFX_AA_MITCHELL4_COUNT == 4081 + 256 + 16);
         m.tables = c.uploadBuffer(t.data(), t.size() * sizeof(float), vk::BufferUsageFlagBits::eStorageBuffer);
-        // Correct division and square root unless the driver's are IEEE (or forced, for tests).
-        const char* force = std::getenv("SSFX_GPU_CORRECT_DIVSQRT");
-        const vk::Bool32 correct = (force && std::string(force) == "1") || !c.ieeeDivSqrt ? VK_TRUE : VK_FALSE;
-        const vk::SpecializationMapEntry entry(0, 0, sizeof(vk::Bool32));
-        const vk::SpecializationInfo spec(1, &entry, sizeof(correct), &correct);
         m.pipeline = std::make_unique<vkx::ComputePipeline>(c, shaderFor(m.method->id), kBindings,
-                                                            std::uint32_t(sizeof(AaConstants)), &spec, true);
+                                                            std::uint32_t(sizeof(AaConstants)), nullptr, true);
         if (m.method->id == "ddaa2p")
             m.resolve = std::make_unique<vkx::ComputePipeline>(c, std::span<const std::uint32_t>(kSsaax2), kBindings,
-                                                               std::uint32_t(sizeof(AaConstants)), &spec, true);
+                                                               std::uint32_t(sizeof(AaConstants)), nullptr, true);
         m.timer = std::make_unique<vkx::GpuTimer>(c, 1);
     });
 }

@@ -230,9 +230,6 @@ Context::Context(const ContextOptions& options) : context(makeLoader()) {
         for (const auto& e : physical.enumerateDeviceExtensionProperties())
             if (std::strcmp(e.extensionName, VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME) == 0) pushDescriptors = true;
         if (pushDescriptors) extensions.push_back(VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME);
-        const auto driver = physical.getProperties2<vk::PhysicalDeviceProperties2, vk::PhysicalDeviceDriverProperties>()
-                                .get<vk::PhysicalDeviceDriverProperties>();
-        ieeeDivSqrt = driver.driverID == vk::DriverId::eMesaLlvmpipe;
         vk::DeviceCreateInfo deviceInfo({}, queueInfo, {}, extensions, nullptr);
         deviceInfo.pNext = &features2;
         device = vk::raii::Device(physical, deviceInfo);
@@ -240,6 +237,47 @@ Context::Context(const ContextOptions& options) : context(makeLoader()) {
         pool = vk::raii::CommandPool(
             device, vk::CommandPoolCreateInfo(vk::CommandPoolCreateFlagBits::eResetCommandBuffer, queueFamily));
     });
+}
+
+std::shared_ptr<Context> Context::borrow(const External& e) {
+    if (!e.instance || !e.physical || !e.device || !e.queue)
+        throw Error("vkx::Context::borrow: the instance, physical device, device and queue must all be given");
+    return std::shared_ptr<Context>(new Context(e, BorrowTag{}));
+}
+
+Context::Context(const External& e, BorrowTag) : context(makeLoader()) {
+    guarded("borrowing the caller's device", [&] {
+        borrowed = true;
+        instance = vk::raii::Instance(context, e.instance);
+        physical = vk::raii::PhysicalDevice(instance, e.physical);
+        device = vk::raii::Device(physical, e.device);
+        queue = vk::raii::Queue(device, e.queue);
+        queueFamily = e.queueFamily;
+        pushDescriptors = e.pushDescriptors;
+        const auto props = physical.getProperties();
+        info.name = props.deviceName.data();
+        info.type = typeName(props.deviceType);
+        info.api = fmt::format("{}.{}.{}", VK_API_VERSION_MAJOR(props.apiVersion),
+                               VK_API_VERSION_MINOR(props.apiVersion), VK_API_VERSION_PATCH(props.apiVersion));
+        info.compute = true;
+        info.maxImageDimension2D = int(props.limits.maxImageDimension2D);
+        const auto families = physical.getQueueFamilyProperties();
+        if (queueFamily >= families.size() || !(families[queueFamily].queueFlags & vk::QueueFlagBits::eCompute))
+            throw Error(fmt::format("vkx::Context::borrow: queue family {} has no compute", queueFamily));
+        timestampPeriodNs = families[queueFamily].timestampValidBits > 0 ? props.limits.timestampPeriod : 0.0;
+        pool = vk::raii::CommandPool(
+            device, vk::CommandPoolCreateInfo(vk::CommandPoolCreateFlagBits::eResetCommandBuffer, queueFamily));
+    });
+}
+
+Context::~Context() {
+    if (!borrowed) return;  // owned: the members destroy everything, device last
+    // Ours go first, while the device's dispatcher still exists; the caller's are released.
+    pool.clear();
+    (void)queue.release();
+    (void)device.release();
+    (void)physical.release();
+    (void)instance.release();
 }
 
 std::vector<std::string> Context::validationMessages() const {

@@ -295,6 +295,34 @@ if "$SSFX" --help 2>/dev/null | grep -qE '^ +render '; then
   check render_size 2 $VK "$SSFX" render cornell --size 0x10 --out "$OUT/x"
   check render_huge 2 $VK "$SSFX" render cornell --size 16384x16384 --guard 64 --out "$OUT/x"
   check render_format 2 $VK "$SSFX" render cornell --depth-format d8 --out "$OUT/x"
+  # The GPU backend (#16): the vulkan output equals the cpu's byte for byte (model sampling);
+  # hardware sampling runs; bench reports backend and device; no device is exit 2.
+  if "$SSFX" aa --help 2>/dev/null | grep -q -- '--backend'; then
+    check aa_vulkan 0 $VK "$SSFX" aa -m ddaa2 --backend vulkan "$OUT/scene/scene.png" -o "$OUT/ddaa2_vk.png" --preset high
+    cmp -s "$OUT/ddaa2.png" "$OUT/ddaa2_vk.png" || { echo "FAIL aa_vulkan: not the cpu's bytes"; fail=1; }
+    check aa_vulkan_hw 0 $VK "$SSFX" aa -m ddaa2 --backend vulkan -p sampling=hardware "$OUT/scene/scene.png" -o "$OUT/ddaa2_hw.png"
+    check aa_vulkan_resolve 0 $VK "$SSFX" aa -m ssaax4 --backend vulkan "$OUT/scene/scenex4.png" -o "$OUT/ssaax4_vk.png"
+    cmp -s "$OUT/ssaax4.png" "$OUT/ssaax4_vk.png" || { echo "FAIL aa_vulkan_resolve: not the cpu's bytes"; fail=1; }
+    check aa_vulkan_seq 0 $VK "$SSFX" aa -m ddaa2 --backend vulkan "$OUT/seq/in" -o "$OUT/seq/vk"
+    for f in "$OUT"/seq/dir/*.png; do
+      cmp -s "$f" "$OUT/seq/vk/$(basename "$f")" || { echo "FAIL aa_vulkan_seq: $(basename "$f") differs"; fail=1; }
+    done
+    check aa_sampling_cpu 2 "$SSFX" aa -m ddaa2 -p sampling=hardware "$OUT/scene/scene.png" -o "$OUT/x.png"
+    contains aa_sampling_cpu "$OUT/aa_sampling_cpu.err" "vulkan backend"
+    check aa_vulkan_srgb 2 $VK "$SSFX" aa -m ddaa2 --backend vulkan -p texture=srgb "$OUT/scene/scene.png" -o "$OUT/x.png"
+    contains aa_vulkan_srgb "$OUT/aa_vulkan_srgb.err" "texture=srgb"
+    check aa_vulkan_nodevice 2 $VK "$SSFX" aa -m ddaa2 --backend vulkan --device no-such-gpu "$OUT/scene/scene.png" -o "$OUT/x.png"
+    contains aa_vulkan_nodevice "$OUT/aa_vulkan_nodevice.err" "no Vulkan device 'no-such-gpu'"
+    check aa_vulkan_noicd 2 env VK_ICD_FILENAMES=/nonexistent.json $VK "$SSFX" aa -m ddaa2 --backend vulkan "$OUT/scene/scene.png" -o "$OUT/x.png"
+    contains aa_vulkan_noicd "$OUT/aa_vulkan_noicd.err" "Vulkan"
+    [ ! -e "$OUT/x.png" ] || { echo "FAIL aa_vulkan: a failed run left x.png"; fail=1; }
+    check bench_vulkan 0 $VK "$SSFX" bench --backend vulkan --size 64 --reps 4 --warmup 0 --methods blur,ddaa2 --json "$OUT/bench_vk.json"
+    contains bench_vulkan "$OUT/bench_vk.json" '"backend": "vulkan"'
+    contains bench_vulkan "$OUT/bench_vk.json" '"device"'
+    contains bench_vulkan "$OUT/bench_vk.json" '"ddaa2"'
+    check methods_vulkan 0 "$SSFX" methods
+    contains methods_vulkan "$OUT/methods_vulkan.out" "cpu,vulkan"
+  fi
   check render_device 2 $VK "$SSFX" render cornell --device no-such-gpu --out "$OUT/x"
   contains render_device "$OUT/render_device.err" "no Vulkan device"
   check render_far 2 $VK "$SSFX" render cornell --far 0.01 --out "$OUT/x"

@@ -14,13 +14,25 @@ TEST(Timing, MedianAndTrimmedMeanByHand) {
 
 TEST(Timing, InterleavedRunsEveryMethodAndNormalisesToTheBaseline) {
     int a = 0, b = 0;
-    const auto r = eval::timeInterleaved({{"blur", [&] { ++a; }}, {"x", [&] { ++b; }}}, 8, 2, "blur");
+    const auto r = eval::timeInterleaved({{"blur", [&] { ++a; }, {}}, {"x", [&] { ++b; }, {}}}, 8, 2, "blur");
     EXPECT_EQ(a, 10);
     EXPECT_EQ(b, 10);
     ASSERT_EQ(r.size(), 2u);
     EXPECT_EQ(r[0].samplesMs.size(), 8u);
     EXPECT_DOUBLE_EQ(r[0].relative, 100.0);
-    EXPECT_THROW(eval::timeInterleaved({{"x", [] {}}}, 4, 0, "blur"), Error);
+    EXPECT_THROW(eval::timeInterleaved({{"x", [] {}, {}}}, 4, 0, "blur"), Error);
+}
+
+TEST(Timing, MeasuredTimesReplaceTheWallClock) {
+    // A GPU pass reports its timestamps: those are the samples, in run order.
+    int calls = 0;
+    double next = 0;
+    const auto r = eval::timeInterleaved(
+        {{"blur", [] {}, [] { return 2.0; }}, {"x", [&] { ++calls; }, [&] { return next += 1.0; }}}, 4, 1, "blur");
+    EXPECT_EQ(calls, 5);
+    // (measuredMs is asked only after the timed rounds, not the warm-up's)
+    EXPECT_EQ(r[1].samplesMs, (std::vector<double>{1.0, 2.0, 3.0, 4.0}));
+    EXPECT_DOUBLE_EQ(r[1].relative, eval::trimmedMean(r[1].samplesMs) / 2.0 * 100.0);  // over blur's 2
 }
 
 TEST(Synthetic, ScalesAreTheSameDrawing) {

@@ -14,8 +14,10 @@
 
 namespace ssfx {
 
-//! The backends a method can run on ("cpu" today; the GPU backend adds "vulkan").
+//! The backends a method can run on: "cpu", and "vulkan" for the aa methods when ssfx is built
+//! with its GPU backend (SSFX_BUILD_GPU; ssfx/gpu/aa.hpp).
 inline constexpr std::array<std::string_view, 1> kCpuBackend{"cpu"};
+inline constexpr std::array<std::string_view, 2> kCpuVulkanBackends{"cpu", "vulkan"};
 
 struct MethodDesc {
     std::string_view id;        //!< stable public name (CLI, files, reports, spec)

@@ -13,6 +13,9 @@ namespace ssfx::eval {
 struct TimedMethod {
     std::string id;
     std::function<void()> run;  //!< one complete application of the method
+    //! When set, a repetition's time is what this returns after run() (e.g. the GPU
+    //! timestamps of the pass), instead of run()'s wall-clock time.
+    std::function<double()> measuredMs;
 };
 
 struct TimingResult {

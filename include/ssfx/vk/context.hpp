@@ -33,6 +33,22 @@ public:
     //! ssfx::Error naming the problem: no loader, no driver, no such device, no validation layer.
     explicit Context(const ContextOptions& options = {});
     static std::shared_ptr<Context> create(const ContextOptions& options = {});
+
+    //! A caller's Vulkan objects, which a borrowed Context uses without owning them.
+    struct External {
+        VkInstance instance = VK_NULL_HANDLE;
+        VkPhysicalDevice physical = VK_NULL_HANDLE;
+        VkDevice device = VK_NULL_HANDLE;  //!< created with VK_KHR_push_descriptor for the GPU effects
+        VkQueue queue = VK_NULL_HANDLE;    //!< a queue with compute of family queueFamily
+        std::uint32_t queueFamily = 0;
+        bool pushDescriptors = false;  //!< the device has VK_KHR_push_descriptor enabled
+    };
+    //! Wraps the caller's instance, device and queue (how an engine shares its device with
+    //! ssfx): the Context creates its own command pool and uses the caller's queue from the
+    //! caller's thread; it destroys none of the caller's objects. The caller keeps them alive
+    //! until every Context and pass made from them is gone. Throws ssfx::Error for null handles.
+    static std::shared_ptr<Context> borrow(const External& external);
+    ~Context();
     Context(const Context&) = delete;
     Context& operator=(const Context&) = delete;
 
@@ -50,9 +66,7 @@ public:
     bool anisotropy = false;
     float maxAnisotropy = 1.0f;
     bool pushDescriptors = false;  //!< VK_KHR_push_descriptor is enabled (the GPU effects need it)
-    //! The driver's division and square root are correctly rounded (lavapipe: LLVM's IEEE
-    //! operations), so the GPU effects' model mode need not correct them.
-    bool ieeeDivSqrt = false;
+    bool borrowed = false;         //!< instance, device and queue are the caller's (borrow())
 
     //! Validation messages (warnings and errors) since creation; empty when validation is off.
     std::vector<std::string> validationMessages() const;
@@ -75,6 +89,8 @@ public:
     void requireImageSize(std::uint32_t width, std::uint32_t height, const std::string& what) const;
 
 private:
+    struct BorrowTag {};
+    Context(const External& external, BorrowTag);
     std::uint32_t memoryType(std::uint32_t bits, vk::MemoryPropertyFlags wanted,
                              vk::MemoryPropertyFlags preferred = {}) const;
 };

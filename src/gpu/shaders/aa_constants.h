@@ -59,7 +59,7 @@ struct AaConstants {
 #define SSFX_AA_UNORM_COUNT 256
 #define SSFX_AA_MITCHELL4_COUNT 16
 
-// Work-group size of every pass: 8 x 8 pixels.
-#define SSFX_AA_GROUP 8
+// Work-group size of every pass: 16 x 16 pixels (its tile: 18 x 18 texels, ppaa.glsl).
+#define SSFX_AA_GROUP 16
 
 #endif

@@ -2,9 +2,12 @@
 // blur: 3x3 truncated Gaussian (DDAA paper section 3.1; spec ppaa.md "blur"; the CPU's
 // src/aa/blur_kernel.hpp). Weights from gpu::aaConstants (the CPU's blurWeights). Texel
 // reads only, so both sampling modes give the CPU's bytes.
+#define SSFX_TILE
+#define SSFX_TILE_NO_LUMA  // blur reads colours only
 #include "ppaa.glsl"
 
 void main() {
+    loadTile();
     ivec2 p;
     if (!outputPixel(p)) return;
     const int x = p.x, y = p.y;

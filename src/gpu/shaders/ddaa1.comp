@@ -1,10 +1,12 @@
 #version 450
 // ddaa1: directional diffusion without edge search (Klein, DDAA, sections 2.1-2.2; spec
 // ppaa.md "ddaa1"; the CPU's src/aa/ddaa1.cpp).
+#define SSFX_TILE
 #include "ppaa.glsl"
 #include "ddaa.glsl"
 
 void main() {
+    loadTile();
     ivec2 p;
     if (!outputPixel(p)) return;
     const Luma3x3 n = neighbourhood(p.x, p.y);

@@ -3,6 +3,7 @@
 // 2.3-2.5; spec ppaa.md "ddaa2"; the CPU's src/aa/ddaa2.cpp). The search walks half a pixel
 // towards the steeper side, one pixel per step, 3 reads per round from one coordinate plus
 // integer texel offsets ("batched sampling", section 2.5).
+#define SSFX_TILE
 #include "ppaa.glsl"
 #include "ddaa.glsl"
 
@@ -100,6 +101,7 @@ float edgeSearchOffset(int x, int y, Luma3x3 n, EdgeSides s) {
 }
 
 void main() {
+    loadTile();
     ivec2 p;
     if (!outputPixel(p)) return;
     const Luma3x3 n = neighbourhood(p.x, p.y);

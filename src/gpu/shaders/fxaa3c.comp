@@ -2,6 +2,7 @@
 // fxaa3c: FXAA 3.11 "console" (T. Lottes, NVIDIA 2011): direction from the four diagonal
 // lumas, two short and two long taps along it, no edge search (spec ppaa.md "fxaa3c"; the
 // CPU's src/aa/fxaa3c.cpp). Diagonals at +-diagonalOffset pixels (the DDAA paper: 1).
+#define SSFX_TILE
 #include "ppaa.glsl"
 
 float diagonal(int x, int y, float u, float v, int sx, int sy) {
@@ -15,6 +16,7 @@ float diagonal(int x, int y, float u, float v, int sx, int sy) {
 float clampTwo(float q) { return isnan(q) ? -2.0 : clamp(q, -2.0, 2.0); }
 
 void main() {
+    loadTile();
     ivec2 p;
     if (!outputPixel(p)) return;
     const int x = p.x, y = p.y;

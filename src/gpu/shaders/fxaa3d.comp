@@ -3,6 +3,7 @@
 // 2011), as in the DDAA paper's comparison (spec ppaa.md "fxaa3d"; the CPU's
 // src/aa/fxaa3d.cpp). paperSearchQuirk (default on): side 2 steps back one pixel after its
 // first read, as the paper's shader does.
+#define SSFX_TILE
 #include "ppaa.glsl"
 
 // Step after each unsuccessful read, in pixels: 1 for the first five, then skipping (the
@@ -16,6 +17,7 @@ float walkLuma(bool horizontal, float wu, float wv, float localAverage) {
 }
 
 void main() {
+    loadTile();
     ivec2 p;
     if (!outputPixel(p)) return;
     const int x = p.x, y = p.y;

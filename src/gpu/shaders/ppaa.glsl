@@ -16,9 +16,6 @@
 
 layout(local_size_x = SSFX_AA_GROUP, local_size_y = SSFX_AA_GROUP) in;
 
-// False on devices whose division and square root are known to be correctly rounded
-// (lavapipe: LLVM's IEEE fdiv and sqrt); crDiv and crSqrt then return the device's result.
-layout(constant_id = 0) const bool kCorrectDivSqrt = true;
 
 layout(set = 0, binding = SSFX_AA_BINDING_INPUT) uniform sampler2D src;
 layout(set = 0, binding = SSFX_AA_BINDING_OUTPUT, rgba8) uniform writeonly image2D dst;
@@ -63,10 +60,12 @@ float divResidual(float a, float b, float q) {
     return abs(r);
 }
 
-// a / b correctly rounded (IEEE), from the device's quotient (Vulkan allows 2.5 ulp).
+// a / b correctly rounded (IEEE), from the device's quotient (Vulkan allows 2.5 ulp, and
+// compilers may turn it into a multiplication by the reciprocal): moves to a neighbouring
+// float while that one has the smaller exact residual |a - q b|.
 float crDiv(float a, float b) {
     precise float q = a / b;
-    if (!kCorrectDivSqrt || isinf(q) || isnan(q) || q == 0.0) return q;
+    if (isinf(q) || isnan(q) || q == 0.0) return q;
     for (int i = 0; i < 3; ++i) {
         const float r = divResidual(a, b, q);
         const float up = nextFloat(q, 1.0), down = nextFloat(q, -1.0);
@@ -85,10 +84,11 @@ float sqrtResidual(float x, float s) {
     return abs(r);
 }
 
-// sqrt(x) correctly rounded, from the device's (Vulkan: "inherited from 1 / inversesqrt").
+// sqrt(x) correctly rounded, from the device's (Vulkan: "inherited from 1 / inversesqrt"),
+// in the same way.
 float crSqrt(float x) {
     precise float s = sqrt(x);
-    if (!kCorrectDivSqrt || !(x > 0.0) || isinf(x)) return s;
+    if (!(x > 0.0) || isinf(x)) return s;
     for (int i = 0; i < 2; ++i) {
         const float r = sqrtResidual(x, s);
         const float up = nextFloat(s, 1.0), down = nextFloat(s, -1.0);
@@ -117,14 +117,20 @@ uint toUnorm8(float v) {
 
 // ---- the texture ---------------------------------------------------------------------------
 
+// k / 4080 and v / 255 rounded to float32, from the CPU's own tables. (Not a division in the
+// shader: even lavapipe turns a division by a constant into a multiplication by its
+// reciprocal, which is one rounding too many.)
+float sixteenthLevel(uint k) { return tables.sixteenth[k]; }
+float unormLevel(uint v) { return tables.unorm8[v]; }
+
 // The 8-bit texel (x, y), clamped to the image (clamp-to-edge addressing).
 uvec3 texel8(int x, int y) {
     const vec4 t = texelFetch(src, ivec2(clamp(x, 0, pc.width - 1), clamp(y, 0, pc.height - 1)), 0);
     return uvec3(round(t.rgb * 255.0));
 }
-vec3 texelValue(int x, int y) {
+vec3 fetchValue(int x, int y) {
     const uvec3 t = texel8(x, y);
-    return vec3(tables.unorm8[t.r], tables.unorm8[t.g], tables.unorm8[t.b]);
+    return vec3(unormLevel(t.r), unormLevel(t.g), unormLevel(t.b));
 }
 
 // Texture coordinate of pixel x's centre: (x + 0.5) / W in float32.
@@ -164,7 +170,7 @@ vec3 sampleModel(AxisPos ax, AxisPos ay, int ox, int oy) {
     const uint w01 = uint((256 - ax.w) * ay.w), w11 = uint(ax.w * ay.w);
     const uvec3 sum = w00 * t00 + w10 * t10 + w01 * t01 + w11 * t11;
     const uvec3 k = (sum + 2048u) >> 12u;
-    return vec3(tables.sixteenth[k.r], tables.sixteenth[k.g], tables.sixteenth[k.b]);
+    return vec3(sixteenthLevel(k.r), sixteenthLevel(k.g), sixteenthLevel(k.b));
 }
 
 // A bilinear read at texture coordinate (u, v) plus an integer texel offset: the model, or
@@ -195,8 +201,43 @@ float edgeLuma(vec3 c) {
     precise float e = l + pc.chromaWeight * (hi - lo);
     return e;
 }
-// Luma of pixel (x, y), clamped: the CPU's luma plane.
-float lumaAt(int x, int y) { return edgeLuma(texelValue(x, y)); }
+// ---- the work group's tile: the texels of its pixels and a one-pixel border, decoded, with
+// their luma (the CPU's luma plane), in workgroup memory. Shaders that read the 3x3
+// neighbourhood define SSFX_TILE and call loadTile() first, in uniform control flow.
+#ifdef SSFX_TILE
+const int kTile = SSFX_AA_GROUP + 2;
+shared vec3 tileRgb[kTile * kTile];
+#ifndef SSFX_TILE_NO_LUMA
+shared float tileLuma[kTile * kTile];
+#endif
+ivec2 tileOrigin() { return ivec2(gl_WorkGroupID.xy) * SSFX_AA_GROUP - 1; }
+void loadTile() {
+    const ivec2 origin = tileOrigin();
+    for (int i = int(gl_LocalInvocationIndex); i < kTile * kTile; i += SSFX_AA_GROUP * SSFX_AA_GROUP) {
+        const vec3 c = fetchValue(origin.x + i % kTile, origin.y + i / kTile);
+        tileRgb[i] = c;
+#ifndef SSFX_TILE_NO_LUMA
+        tileLuma[i] = edgeLuma(c);
+#endif
+    }
+    barrier();
+}
+// Texel (x, y) of the group's pixels or their border, clamped to the image like a fetch
+// (the tile's border texels were fetched clamped).
+int tileIndex(int x, int y) {
+    const ivec2 q = ivec2(x, y) - tileOrigin();
+    return q.y * kTile + q.x;
+}
+vec3 texelValue(int x, int y) { return tileRgb[tileIndex(x, y)]; }
+#ifndef SSFX_TILE_NO_LUMA
+float lumaAt(int x, int y) { return tileLuma[tileIndex(x, y)]; }
+#else
+float lumaAt(int x, int y) { return edgeLuma(texelValue(x, y)); }  // (unused: no luma)
+#endif
+#else
+vec3 texelValue(int x, int y) { return fetchValue(x, y); }
+float lumaAt(int x, int y) { return edgeLuma(fetchValue(x, y)); }
+#endif
 
 // The output pixel: the colour quantised exactly (model) or by the device (hardware), alpha
 // from `alpha` (an 8-bit value).

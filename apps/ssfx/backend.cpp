@@ -1,0 +1,73 @@
+// --backend cpu|vulkan (apps/ssfx/backend.hpp).
+#include "apps/ssfx/backend.hpp"
+
+#include <fmt/format.h>
+
+#include <memory>
+#include <mutex>
+
+#include "ssfx/core/error.hpp"
+#ifdef SSFX_HAVE_GPU
+#include "ssfx/gpu/aa.hpp"
+#endif
+
+namespace ssfx::cli {
+
+void addBackendOptions(CLI::App* cmd, BackendOptions& o) {
+    cmd->add_option("--backend", o.backend,
+                    "cpu (default) or vulkan: the methods as Vulkan compute passes (-p sampling=model, the default, "
+                    "gives the CPU's bytes; -p sampling=hardware uses the device's texture filtering)")
+        ->check(CLI::IsMember({"cpu", "vulkan"}));
+    cmd->add_option("--device", o.device,
+                    "With --backend vulkan: a device index or part of its name ('ssfx devices' lists them; default: "
+                    "a GPU, else lavapipe)");
+}
+
+void takeSamplingParam(std::vector<std::string>& params, BackendOptions& o) {
+    std::vector<std::string> rest;
+    for (const auto& p : params) {
+        if (p.rfind("sampling=", 0) == 0) {
+            o.sampling = p.substr(9);
+            if (o.backend != "vulkan")
+                throw Error("-p sampling=... is a parameter of the vulkan backend (on the cpu: --filtering gpu|exact)");
+            if (o.sampling != "model" && o.sampling != "hardware")
+                throw Error(fmt::format("sampling '{}': expected model or hardware", o.sampling));
+        } else {
+            rest.push_back(p);
+        }
+    }
+    params = std::move(rest);
+}
+
+Applier makeApplier(const BackendOptions& o, const MethodInfo& m, const MethodSettings& settings, const Exec& exec) {
+    if (o.backend != "vulkan") {
+        if (!o.device.empty()) throw Error("--device goes with --backend vulkan");
+        const MethodInfo* method = &m;
+        return {[method, settings, exec](ImageView<const Rgba8> in) { return method->run(in, settings, exec); },
+                [] { return -1.0; }, "cpu", ""};
+    }
+#ifdef SSFX_HAVE_GPU
+    vkx::ContextOptions co;
+    co.device = o.device;
+    auto ctx = vkx::Context::create(co);
+    const gpu::Sampling sampling = o.sampling.empty() ? gpu::Sampling::Model : gpu::parseSampling(o.sampling);
+    auto pass = std::make_shared<gpu::AaPass>(ctx, m.id, settings, sampling);
+    auto lock = std::make_shared<std::mutex>();
+    const std::string device = ctx->info.name;
+    return {[pass, lock](ImageView<const Rgba8> in) {
+                std::lock_guard guard(*lock);
+                return pass->run(in);
+            },
+            [pass, lock] {
+                std::lock_guard guard(*lock);
+                return pass->lastMilliseconds();
+            },
+            fmt::format("vulkan: {}, sampling={}", device, gpu::samplingName(sampling)), device};
+#else
+    (void)settings;
+    (void)exec;
+    throw Error("this ssfx was built without the GPU backend (SSFX_BUILD_GPU=OFF): use --backend cpu");
+#endif
+}
+
+}  // namespace ssfx::cli

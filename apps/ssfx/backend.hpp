@@ -1,0 +1,42 @@
+// --backend cpu|vulkan and --device for the commands that run anti-aliasing methods (aa,
+// bench): one place that turns them into a function applying a method to an image.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "ssfx/core/image.hpp"
+#include "ssfx/core/parallel.hpp"
+#include "ssfx/registry.hpp"
+
+namespace ssfx::cli {
+
+struct BackendOptions {
+    std::string backend = "cpu";
+    std::string device;    //!< vulkan: an index or part of a name
+    std::string sampling;  //!< vulkan: model (default) or hardware, from -p sampling=...
+};
+
+//! Adds --backend and --device to `cmd`.
+void addBackendOptions(CLI::App* cmd, BackendOptions& o);
+
+//! Takes -p sampling=model|hardware out of `params` into o.sampling (an error with the cpu
+//! backend, where the sampling model is --filtering).
+void takeSamplingParam(std::vector<std::string>& params, BackendOptions& o);
+
+//! A method applied to whole images on the chosen backend; `name` says where it ran
+//! ("cpu", or "vulkan: DEVICE, sampling=MODE"). Safe to call from several threads (the GPU
+//! runs one image at a time). Throws ssfx::Error: no Vulkan device (naming what was looked
+//! for), a setting the GPU passes lack, a build without the GPU backend.
+struct Applier {
+    std::function<ImageRgba8(ImageView<const Rgba8>)> apply;
+    //! GPU milliseconds of the last apply() (timestamps), or a negative value on the cpu backend.
+    std::function<double()> lastGpuMs;
+    std::string name, device;
+};
+Applier makeApplier(const BackendOptions& o, const MethodInfo& m, const MethodSettings& settings, const Exec& exec);
+
+}  // namespace ssfx::cli
