@@ -4,9 +4,10 @@
 # warnings as errors) as comma-separated words in <binary dir>/generated/<target>/shaders/
 # <file>.inc, which the target's sources include as the body of a `const std::uint32_t[]`
 # (see ssfx/vk/compute.hpp: makeShaderModule). glslc writes a depfile, so a change to an
-# #include'd file rebuilds the shaders that include it.
+# #include'd file rebuilds the shaders that include it. SPIRV_DIR <dir>: also write each as a
+# binary <dir>/<file>.spv (installed for integrators).
 function(ssfx_add_shaders)
-  cmake_parse_arguments(ARG "" "TARGET;SOURCE_DIR" "SHADERS" ${ARGN})
+  cmake_parse_arguments(ARG "" "TARGET;SOURCE_DIR;SPIRV_DIR" "SHADERS" ${ARGN})
   if(NOT ARG_TARGET OR NOT ARG_SOURCE_DIR OR NOT ARG_SHADERS)
     message(FATAL_ERROR "ssfx_add_shaders: TARGET, SOURCE_DIR and SHADERS are required")
   endif()
@@ -23,6 +24,16 @@ function(ssfx_add_shaders)
       COMMENT "glslc ${shader}"
       VERBATIM)
     list(APPEND incs ${inc})
+    if(ARG_SPIRV_DIR)  # also the binary module, for integrators (installed under share/ssfx/shaders)
+      set(spv ${ARG_SPIRV_DIR}/${shader}.spv)
+      add_custom_command(OUTPUT ${spv}
+        COMMAND ${CMAKE_COMMAND} -E make_directory ${ARG_SPIRV_DIR}
+        COMMAND Vulkan::glslc --target-env=vulkan1.3 -O -Werror -I ${ARG_SOURCE_DIR} -o ${spv} ${ARG_SOURCE_DIR}/${shader}
+        DEPENDS ${inc}
+        COMMENT "glslc ${shader} (SPIR-V file)"
+        VERBATIM)
+      list(APPEND incs ${spv})
+    endif()
   endforeach()
   target_sources(${ARG_TARGET} PRIVATE ${incs})
   target_include_directories(${ARG_TARGET} PRIVATE ${out})

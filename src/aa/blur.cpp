@@ -20,8 +20,6 @@ namespace detail {
 HWY_EXPORT(BlurRows);
 }  // namespace detail
 
-namespace detail {
-
 BlurWeights blurWeights(const BlurParams& p) {
     validateParams(kBlurParams, &p, "blur");
     BlurWeights w;
@@ -32,11 +30,9 @@ BlurWeights blurWeights(const BlurParams& p) {
     return w;
 }
 
-}  // namespace detail
-
 ImageRgba8 blurReference(ImageView<const Rgba8> in, const BlurParams& params) {
     detail::checkInput("blur", in);
-    const detail::BlurWeights w = detail::blurWeights(params);
+    const BlurWeights w = blurWeights(params);
     ImageRgba8 out(in.width(), in.height());
     for (int y = 0; y < in.height(); ++y)
         for (int x = 0; x < in.width(); ++x) out(x, y) = detail::blurPixel(in, x, y, w, params.texture);
@@ -46,7 +42,7 @@ ImageRgba8 blurReference(ImageView<const Rgba8> in, const BlurParams& params) {
 void blur(ImageView<const Rgba8> in, ImageView<Rgba8> out, const BlurParams& params, const Exec& exec) {
     detail::checkInput("blur", in);
     detail::checkOutput("blur", in, out);
-    const detail::BlurWeights w = detail::blurWeights(params);
+    const BlurWeights w = blurWeights(params);
     if (params.texture != TextureFormat::Unorm) {  // sRGB textures: the scalar kernel, on all threads
         parallelRows(in.height(), exec, [&](int y0, int y1) {
             for (int y = y0; y < y1; ++y)

@@ -7,13 +7,7 @@
 
 namespace ssfx::aa::detail {
 
-struct BlurWeights {
-    float w1;    //!< direct neighbours: exp(-1 / (2 sigma^2))
-    float w2;    //!< corners: w1^2
-    float norm;  //!< 1 / (1 + 4 w1 + 4 w2)
-};
-
-BlurWeights blurWeights(const BlurParams& p);
+// (BlurWeights and blurWeights() are public: ssfx/aa/blur.hpp.)
 
 //! Sum order: centre, then the direct neighbours W, E, S, N, then the corners.
 inline float blurChannel(float c, float w, float e, float s, float n, float sw, float se, float nw, float ne,

@@ -7,7 +7,6 @@
 #include <cstring>
 #include <iterator>
 
-#include "src/aa/blur_kernel.hpp"
 #include "src/gpu/shaders/aa_constants.h"
 #include "ssfx/core/error.hpp"
 #include "ssfx/core/sample.hpp"
@@ -73,7 +72,7 @@ AaConstants aaConstants(std::string_view method, const AaParams& params, int wid
                    [](const std::monostate&) {},
                    [&](const aa::BlurParams& p) {
                        requireUnorm(p.texture, method);
-                       const aa::detail::BlurWeights w = aa::detail::blurWeights(p);
+                       const aa::BlurWeights w = aa::blurWeights(p);  // the CPU's weights
                        c.blurW1 = w.w1, c.blurW2 = w.w2, c.blurNorm = w.norm;
                    },
                    [&](const aa::Fxaa3cParams& p) {

@@ -21,6 +21,7 @@ declare -A allowed=(
   [vk]="core vk"
   [render]="core io ao scene vk render"
   [deferred]="core io ao scene deferred"
+  [gpu]="core aa vk gpu"
   [eval]="core io aa ao scene vk render deferred eval"
 )
 # module -> third-party headers it must not include (a regex on the include)
@@ -33,6 +34,7 @@ declare -A forbidden=(
   [vk]="cairo|assimp|embree|glm/|stb/"
   [render]="cairo|assimp|embree"
   [deferred]="cairo|vulkan|assimp|embree"
+  [gpu]="cairo|assimp|embree|glm/|stb/"
   [eval]="vulkan/"
 )
 checked=0
@@ -81,6 +83,7 @@ declare -A nolink=(
   [ssfx_deferred]="vulkan|ssfx_render|ssfx_eval|cairo"
   [ssfx_vk]="cairo|assimp|embree|ssfx_scene|ssfx_render|ssfx_eval|ssfx_deferred"
   [ssfx_render]="cairo|ssfx_eval|ssfx_deferred"
+  [ssfx_gpu]="cairo|assimp|embree|ssfx_scene|ssfx_render|ssfx_eval|ssfx_deferred"
 )
 while IFS= read -r line; do
   target=${line%%:*}

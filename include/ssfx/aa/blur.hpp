@@ -24,6 +24,17 @@ inline constexpr std::array kBlurParams{
     choice<&BlurParams::texture>("texture", kTextureFormatNames, kTextureDoc),
 };
 
+//! The blur's weights from its params (spec ppaa.md "blur"): 1 at the centre, w1 at the
+//! direct neighbours, w2 = w1^2 at the corners, and norm = 1 / (1 + 4 w1 + 4 w2) (the
+//! spec normalises by multiplying with the reciprocal). The CPU kernel and the GPU pass
+//! (ssfx/gpu/aa.hpp) both take them from here. Throws ssfx::Error for invalid params.
+struct BlurWeights {
+    float w1;    //!< direct neighbours: exp(-1 / (2 sigma^2))
+    float w2;    //!< corners: w1^2
+    float norm;  //!< 1 / (1 + 4 w1 + 4 w2)
+};
+BlurWeights blurWeights(const BlurParams& params);
+
 //! Blurs RGB; alpha is copied from the centre pixel. Clamp-to-edge at the borders.
 ImageRgba8 blur(ImageView<const Rgba8> in, const BlurParams& params = {}, const Exec& exec = {});
 //! Writes into `out` (same size as `in`, must not alias it).

@@ -60,19 +60,36 @@ float divResidual(float a, float b, float q) {
     return abs(r);
 }
 
+// The smaller of the gaps between q and its two neighbouring floats (q finite, non-zero).
+float minGap(float q) {
+    precise float up = nextFloat(q, 1.0) - q;
+    precise float down = q - nextFloat(q, -1.0);
+    return min(abs(up), abs(down));
+}
+
 // a / b correctly rounded (IEEE), from the device's quotient (Vulkan allows 2.5 ulp, and
-// compilers may turn it into a multiplication by the reciprocal): moves to a neighbouring
-// float while that one has the smaller exact residual |a - q b|.
+// compilers may turn it into a multiplication by the reciprocal). Usual case, one exact
+// product: q is the correctly rounded quotient when |a - q b| < |b| gap / 2 (gap: the
+// smaller distance to q's neighbours; tested against 0.49, a little under half). Otherwise
+// it moves to a neighbour while that one has the smaller exact residual.
 float crDiv(float a, float b) {
     precise float q = a / b;
     if (isinf(q) || isnan(q) || q == 0.0) return q;
+    float r = divResidual(a, b, q);
+    precise float bound = 0.49 * abs(b) * minGap(q);
+    if (r < bound) return q;
     for (int i = 0; i < 3; ++i) {
-        const float r = divResidual(a, b, q);
         const float up = nextFloat(q, 1.0), down = nextFloat(q, -1.0);
         const float ru = divResidual(a, b, up), rd = divResidual(a, b, down);
-        if (ru < r && ru <= rd) q = up;
-        else if (rd < r) q = down;
-        else break;
+        if (ru < r && ru <= rd) {
+            q = up;
+            r = ru;
+        } else if (rd < r) {
+            q = down;
+            r = rd;
+        } else {
+            break;
+        }
     }
     return q;
 }
@@ -85,17 +102,26 @@ float sqrtResidual(float x, float s) {
 }
 
 // sqrt(x) correctly rounded, from the device's (Vulkan: "inherited from 1 / inversesqrt"),
-// in the same way.
+// in the same way. Usual case: s is correctly rounded when |x - s^2| < s gap, as
+// (s +- gap / 2)^2 = s^2 +- s gap + gap^2 / 4 (tested against 0.98 s gap).
 float crSqrt(float x) {
     precise float s = sqrt(x);
     if (!(x > 0.0) || isinf(x)) return s;
+    float r = sqrtResidual(x, s);
+    precise float bound = 0.98 * s * minGap(s);
+    if (r < bound) return s;
     for (int i = 0; i < 2; ++i) {
-        const float r = sqrtResidual(x, s);
         const float up = nextFloat(s, 1.0), down = nextFloat(s, -1.0);
         const float ru = sqrtResidual(x, up), rd = sqrtResidual(x, down);
-        if (ru < r && ru <= rd) s = up;
-        else if (rd < r) s = down;
-        else break;
+        if (ru < r && ru <= rd) {
+            s = up;
+            r = ru;
+        } else if (rd < r) {
+            s = down;
+            r = rd;
+        } else {
+            break;
+        }
     }
     return s;
 }
