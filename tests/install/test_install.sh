@@ -11,6 +11,12 @@ cmake -S "$SRC" -B "$OUT/consumer" -DCMAKE_PREFIX_PATH="$OUT/prefix" >/dev/null
 cmake --build "$OUT/consumer" >/dev/null
 "$OUT/consumer/consumer"
 if [ -x "$OUT/consumer/consumer_render" ]; then "$OUT/consumer/consumer_render"; fi
+if [ -x "$OUT/consumer/consumer_gpu" ]; then
+  ASAN_OPTIONS=detect_leaks=0 "$OUT/consumer/consumer_gpu"
+  for f in ppaa.glsl aa_constants.h ddaa2.comp ddaa2.comp.spv ssaax4.comp.spv; do
+    test -s "$OUT/prefix/share/ssfx/shaders/$f" || { echo "install: share/ssfx/shaders/$f missing"; exit 1; }
+  done
+fi
 PKG_CONFIG_PATH="$OUT/prefix/lib/pkgconfig" c++ -std=c++20 "$SRC/consumer.cpp" -o "$OUT/consumer_pc" \
   $(PKG_CONFIG_PATH="$OUT/prefix/lib/pkgconfig" pkg-config --cflags --libs --static ssfx)
 "$OUT/consumer_pc"
