@@ -26,38 +26,10 @@ float searchDelta(bool horizontal, float cu, float cv, float move, int k, float 
     return delta;
 }
 
-// One side of the search: the distance to the end of the edge (maxDistance + 1 when not
-// found) and the delta there (or at the last read).
-void searchSide(int sign, float first, bool horizontal, float cu, float cv, float invAlong, float gradientScaled,
-                float localAverage, out float distance, out float delta) {
-    // Round 0: the free position 1, then reads at texel offsets 2 and 3 from c.
-    delta = first;
-    if (abs(delta) >= gradientScaled) {
-        distance = 1.0;
-        return;
-    }
-    for (int k = 2; k <= kBatch; ++k) {
-        delta = searchDelta(horizontal, cu, cv, 0.0, sign * k, localAverage);
-        if (abs(delta) >= gradientScaled) {
-            distance = float(k);
-            return;
-        }
-    }
-    // Later rounds: c moved offset + 2 pixels, texel offsets -1, 0, +1, nearest first.
-    for (int r = 1; r < pc.searchRounds; ++r) {
-        const int offset = kBatch * r;
-        precise float move = float(sign) * (float(offset + 2) * invAlong);
-        for (int k = -1; k <= 1; ++k) {
-            delta = searchDelta(horizontal, cu, cv, move, sign * k, localAverage);
-            if (abs(delta) >= gradientScaled) {
-                distance = float(offset + 2 + k);
-                return;
-            }
-        }
-    }
-    distance = float(kBatch * pc.searchRounds + 1);
-}
-
+// The position (pixels from c along the edge) of read k (0, 1, 2) of round r, and its
+// coordinate move and texel offset: round 0 reads positions 2 and 3 (position 1 is free),
+// round r > 0 moves c by 3 r + 2 pixels and reads offsets -1, 0, +1 around it.
+int roundPosition(int r, int k) { return r == 0 ? k + 2 : kBatch * r + 2 + (k - 1); }
 // Offset across the edge, in pixels, signed towards the steep side.
 float edgeSearchOffset(int x, int y, Luma3x3 n, EdgeSides s) {
     const bool steep2 = abs(s.g2) > abs(s.g1);  // ties go to side 1
@@ -84,11 +56,36 @@ float edgeSearchOffset(int x, int y, Luma3x3 n, EdgeSides s) {
         cu += float(across) * 0.5 * pc.invW;
     const float invAlong = s.horizontal ? pc.invW : pc.invH;
 
-    float d1, delta1, d2, delta2;
-    precise float f1 = first1 - localAverage;
-    precise float f2 = first2 - localAverage;
-    searchSide(-1, f1, s.horizontal, cu, cv, invAlong, gradientScaled, localAverage, d1, delta1);
-    searchSide(+1, f2, s.horizontal, cu, cv, invAlong, gradientScaled, localAverage, d2, delta2);
+    // Both sides in step, round by round (a side whose end is found stops reading): the
+    // reads of each side, and so its result, are the CPU's; in step, the invocations of a
+    // SIMD lane group wait for the slower side once per round instead of once per side.
+    precise float delta1 = first1 - localAverage;
+    precise float delta2 = first2 - localAverage;
+    bool done1 = abs(delta1) >= gradientScaled, done2 = abs(delta2) >= gradientScaled;
+    float d1 = 1.0, d2 = 1.0;
+    for (int r = 0; r < pc.searchRounds && !(done1 && done2); ++r) {
+        precise float move = r == 0 ? 0.0 : float(kBatch * r + 2) * invAlong;
+        for (int k = r == 0 ? 1 : 0; k < kBatch; ++k) {
+            const int offset = r == 0 ? k + 1 : k - 1;  // texel offset from the round's coordinate
+            if (!done1) {
+                delta1 = searchDelta(s.horizontal, cu, cv, -move, -offset, localAverage);
+                if (abs(delta1) >= gradientScaled) {
+                    done1 = true;
+                    d1 = float(roundPosition(r, r == 0 ? k - 1 : k));
+                }
+            }
+            if (!done2) {
+                delta2 = searchDelta(s.horizontal, cu, cv, move, offset, localAverage);
+                if (abs(delta2) >= gradientScaled) {
+                    done2 = true;
+                    d2 = float(roundPosition(r, r == 0 ? k - 1 : k));
+                }
+            }
+        }
+    }
+    const float notFound = float(kBatch * pc.searchRounds + 1);
+    if (!done1) d1 = notFound;
+    if (!done2) d2 = notFound;
 
     precise float sum = d1 + d2;
     precise float pixelOffset = 0.5 - crDiv(minf(d1, d2), sum);
