@@ -49,7 +49,13 @@ Applier makeApplier(const BackendOptions& o, const MethodInfo& m, const MethodSe
 #ifdef SSFX_HAVE_GPU
     vkx::ContextOptions co;
     co.device = o.device;
-    auto ctx = vkx::Context::create(co);
+    std::shared_ptr<vkx::Context> ctx;
+    try {
+        ctx = vkx::Context::create(co);
+    } catch (const Error& e) {
+        throw Error(fmt::format("--backend vulkan looked for a Vulkan 1.3 device with a compute queue{}: {}",
+                                o.device.empty() ? "" : fmt::format(" matching '{}'", o.device), e.what()));
+    }
     const gpu::Sampling sampling = o.sampling.empty() ? gpu::Sampling::Model : gpu::parseSampling(o.sampling);
     auto pass = std::make_shared<gpu::AaPass>(ctx, m.id, settings, sampling);
     auto lock = std::make_shared<std::mutex>();

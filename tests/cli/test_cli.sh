@@ -314,7 +314,7 @@ if "$SSFX" --help 2>/dev/null | grep -qE '^ +render '; then
     check aa_vulkan_nodevice 2 $VK "$SSFX" aa -m ddaa2 --backend vulkan --device no-such-gpu "$OUT/scene/scene.png" -o "$OUT/x.png"
     contains aa_vulkan_nodevice "$OUT/aa_vulkan_nodevice.err" "no Vulkan device 'no-such-gpu'"
     check aa_vulkan_noicd 2 env VK_ICD_FILENAMES=/nonexistent.json $VK "$SSFX" aa -m ddaa2 --backend vulkan "$OUT/scene/scene.png" -o "$OUT/x.png"
-    contains aa_vulkan_noicd "$OUT/aa_vulkan_noicd.err" "Vulkan"
+    contains aa_vulkan_noicd "$OUT/aa_vulkan_noicd.err" "looked for a Vulkan 1.3 device with a compute queue"
     [ ! -e "$OUT/x.png" ] || { echo "FAIL aa_vulkan: a failed run left x.png"; fail=1; }
     check bench_vulkan 0 $VK "$SSFX" bench --backend vulkan --size 64 --reps 4 --warmup 0 --methods blur,ddaa2 --json "$OUT/bench_vk.json"
     contains bench_vulkan "$OUT/bench_vk.json" '"backend": "vulkan"'

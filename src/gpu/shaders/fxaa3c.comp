@@ -5,8 +5,9 @@
 #define SSFX_TILE
 #include "ppaa.glsl"
 
-float diagonal(int x, int y, float u, float v, int sx, int sy) {
+float diagonal(int x, int y, int sx, int sy) {
     if (pc.diagonalsAtCentres != 0) return lumaAt(x + sx, y + sy);  // at pixel centres: the pixels
+    const float u = centreU(x), v = centreV(y);
     precise float du = u + float(sx) * pc.diagonalU;
     precise float dv = v + float(sy) * pc.diagonalV;
     return edgeLuma(sampleUV(du, dv));
@@ -20,10 +21,9 @@ void main() {
     ivec2 p;
     if (!outputPixel(p)) return;
     const int x = p.x, y = p.y;
-    const float u = centreU(x), v = centreV(y);
-    const float lumaNW = diagonal(x, y, u, v, -1, -1), lumaSW = diagonal(x, y, u, v, -1, +1);
-    const float lumaSE = diagonal(x, y, u, v, +1, +1);
-    precise float lumaNE = diagonal(x, y, u, v, +1, -1) + 1.0 / 384.0;  // FXAA: keeps dir from being 0
+    const float lumaNW = diagonal(x, y, -1, -1), lumaSW = diagonal(x, y, -1, +1);
+    const float lumaSE = diagonal(x, y, +1, +1);
+    precise float lumaNE = diagonal(x, y, +1, -1) + 1.0 / 384.0;  // FXAA: keeps dir from being 0
     const float lumaM = lumaAt(x, y);
     const float lumaMax = maxf(maxf(lumaNE, lumaSE), maxf(lumaNW, lumaSW));
     const float lumaMin = minf(minf(lumaNE, lumaSE), minf(lumaNW, lumaSW));
@@ -44,6 +44,7 @@ void main() {
         storeInput(p);
         return;
     }
+    const float u = centreU(x), v = centreV(y);  // (after the early exit: most pixels never need them)
     const float d1x = crDiv(dirX, len), d1y = crDiv(dirY, len);
     const float hs = 0.5;  // first pair of taps at +-0.5 px along the edge
     precise float n1u = u - d1x * hs * pc.invW;
