@@ -263,32 +263,21 @@ TEST(GpuAa, RecordsIntoTheCallersCommandBufferOnTheCallersDevice) {
         std::memcpy(result.data(), readback.mapped, readback.size);
         EXPECT_EQ(compare(result, expected).pixels, 0);
         // A wrong image for the contract: a clear error, nothing recorded.
+        const gpu::ImageRef goodIn{*inView, vk::Format::eR8G8B8A8Unorm, inUsage, w, h, L::eShaderReadOnlyOptimal};
+        const gpu::ImageRef goodOut{*outView, vk::Format::eR8G8B8A8Unorm, outUsage, w, h, L::eGeneral};
         engine->submit([&](const vk::raii::CommandBuffer& cmd) {
-            EXPECT_NE(test::errorOf([&] {
-                          pass.record(cmd,
-                                      {*inView, vk::Format::eR8G8B8A8Srgb, inUsage, w, h, L::eShaderReadOnlyOptimal},
-                                      {*outView, vk::Format::eR8G8B8A8Unorm, outUsage, w, h, L::eGeneral});
-                      }).find("sRGB views"),
-                      std::string::npos);
-            EXPECT_NE(test::errorOf([&] {
-                          pass.record(
-                              cmd,
-                              {*inView, vk::Format::eR8G8B8A8Unorm, U::eTransferDst, w, h, L::eShaderReadOnlyOptimal},
-                              {*outView, vk::Format::eR8G8B8A8Unorm, outUsage, w, h, L::eGeneral});
-                      }).find("SAMPLED"),
-                      std::string::npos);
-            EXPECT_NE(test::errorOf([&] {
-                          pass.record(cmd,
-                                      {*inView, vk::Format::eR8G8B8A8Unorm, inUsage, w, h, L::eShaderReadOnlyOptimal},
-                                      {*outView, vk::Format::eR8G8B8A8Unorm, outUsage, w, h, L::eTransferSrcOptimal});
-                      }).find("output layout"),
-                      std::string::npos);
-            EXPECT_NE(test::errorOf([&] {
-                          pass.record(cmd,
-                                      {*inView, vk::Format::eR8G8B8A8Unorm, inUsage, w, h, L::eShaderReadOnlyOptimal},
-                                      {*outView, vk::Format::eR8G8B8A8Unorm, outUsage, w - 1, h, L::eGeneral});
-                      }).find("expected 37x23"),
-                      std::string::npos);
+            auto errorOf = [&](const gpu::ImageRef& input, const gpu::ImageRef& output) {
+                return test::errorOf([&] { pass.record(cmd, input, output); });
+            };
+            gpu::ImageRef srgb = goodIn, unsampled = goodIn, transferLayout = goodOut, narrow = goodOut;
+            srgb.format = vk::Format::eR8G8B8A8Srgb;
+            unsampled.usage = U::eTransferDst;
+            transferLayout.layout = L::eTransferSrcOptimal;
+            narrow.width = w - 1;
+            EXPECT_NE(errorOf(srgb, goodOut).find("sRGB views"), std::string::npos);
+            EXPECT_NE(errorOf(unsampled, goodOut).find("SAMPLED"), std::string::npos);
+            EXPECT_NE(errorOf(goodIn, transferLayout).find("output layout"), std::string::npos);
+            EXPECT_NE(errorOf(goodIn, narrow).find("expected 37x23"), std::string::npos);
         });
     }
     // ssfx's borrowed context and pass are gone; the engine's device still works.

@@ -51,11 +51,12 @@ float nextFloat(float q, float dir) {
     return uintBitsToFloat((q > 0.0) == (dir > 0.0) ? bits + 1u : bits - 1u);
 }
 
-// |a - q b|, to compare candidate quotients (exact up to the last subtraction's rounding,
-// far below the difference between neighbouring candidates).
-float divResidual(float a, float b, float q) {
+// |a - q b| (division a / b) or |a - q q| (square root of a; b unused), to compare
+// candidate results: exact up to the last subtraction's rounding, far below the difference
+// between neighbouring candidates.
+float residual(bool root, float a, float b, float q) {
     float p, e;
-    twoProduct(q, b, p, e);
+    twoProduct(q, root ? q : b, p, e);
     precise float r = (a - p) - e;
     return abs(r);
 }
@@ -67,20 +68,13 @@ float minGap(float q) {
     return min(abs(up), abs(down));
 }
 
-// a / b correctly rounded (IEEE), from the device's quotient (Vulkan allows 2.5 ulp, and
-// compilers may turn it into a multiplication by the reciprocal). Usual case, one exact
-// product: q is the correctly rounded quotient when |a - q b| < |b| gap / 2 (gap: the
-// smaller distance to q's neighbours; tested against 0.49, a little under half). Otherwise
-// it moves to a neighbour while that one has the smaller exact residual.
-float crDiv(float a, float b) {
-    precise float q = a / b;
-    if (isinf(q) || isnan(q) || q == 0.0) return q;
-    float r = divResidual(a, b, q);
-    precise float bound = 0.49 * abs(b) * minGap(q);
-    if (r < bound) return q;
-    for (int i = 0; i < 3; ++i) {
+// The device's result q of a / b or sqrt(a), correctly rounded: kept when its residual r
+// shows it is (the usual case: one exact product), else moved to a neighbour while that
+// one has the smaller residual, at most `steps` times.
+float correctlyRounded(bool root, float a, float b, float q, float r, int steps) {
+    for (int i = 0; i < steps; ++i) {
         const float up = nextFloat(q, 1.0), down = nextFloat(q, -1.0);
-        const float ru = divResidual(a, b, up), rd = divResidual(a, b, down);
+        const float ru = residual(root, a, b, up), rd = residual(root, a, b, down);
         if (ru < r && ru <= rd) {
             q = up;
             r = ru;
@@ -94,36 +88,27 @@ float crDiv(float a, float b) {
     return q;
 }
 
-float sqrtResidual(float x, float s) {
-    float p, e;
-    twoProduct(s, s, p, e);
-    precise float r = (x - p) - e;
-    return abs(r);
+// a / b correctly rounded (IEEE), from the device's quotient (Vulkan allows 2.5 ulp, and
+// compilers may turn it into a multiplication by the reciprocal). q is the correctly
+// rounded quotient when |a - q b| < |b| gap / 2 (gap: the smaller distance to q's
+// neighbours; tested against 0.49, a little under half).
+float crDiv(float a, float b) {
+    precise float q = a / b;
+    if (isinf(q) || isnan(q) || q == 0.0) return q;
+    const float r = residual(false, a, b, q);
+    precise float bound = 0.49 * abs(b) * minGap(q);
+    return r < bound ? q : correctlyRounded(false, a, b, q, r, 3);
 }
 
-// sqrt(x) correctly rounded, from the device's (Vulkan: "inherited from 1 / inversesqrt"),
-// in the same way. Usual case: s is correctly rounded when |x - s^2| < s gap, as
-// (s +- gap / 2)^2 = s^2 +- s gap + gap^2 / 4 (tested against 0.98 s gap).
+// sqrt(x) correctly rounded, from the device's (Vulkan: "inherited from 1 / inversesqrt").
+// s is correctly rounded when |x - s^2| < s gap, as (s +- gap / 2)^2 = s^2 +- s gap +
+// gap^2 / 4 (tested against 0.98 s gap).
 float crSqrt(float x) {
     precise float s = sqrt(x);
     if (!(x > 0.0) || isinf(x)) return s;
-    float r = sqrtResidual(x, s);
+    const float r = residual(true, x, 0.0, s);
     precise float bound = 0.98 * s * minGap(s);
-    if (r < bound) return s;
-    for (int i = 0; i < 2; ++i) {
-        const float up = nextFloat(s, 1.0), down = nextFloat(s, -1.0);
-        const float ru = sqrtResidual(x, up), rd = sqrtResidual(x, down);
-        if (ru < r && ru <= rd) {
-            s = up;
-            r = ru;
-        } else if (rd < r) {
-            s = down;
-            r = rd;
-        } else {
-            break;
-        }
-    }
-    return s;
+    return r < bound ? s : correctlyRounded(true, x, 0.0, s, r, 2);
 }
 
 // ssfx::toUnorm8: v in [0, 1] (NaN: 0) to round-half-up(v * 255), with the product exact:
