@@ -1,0 +1,35 @@
+#version 450
+// The exact float helpers (src/gpu/shaders/exact.glsl) on the device, for
+// GpuShaders.ExactHelpersMatchIeee: per input pair (a, b), the device's own a / b and
+// sqrt(a), crDiv(a, b), crSqrt(a), toUnorm8(a), and the corrections from deliberately wrong
+// starting values (a / b 2 ulp up and 2 ulp down, sqrt(a) 1 ulp up and down), which
+// exercise the correction loop on a device whose own results are already exact.
+#extension GL_GOOGLE_include_directive : require
+#include "../../../src/gpu/shaders/exact.glsl"
+
+layout(local_size_x = 64) in;
+layout(set = 0, binding = 0, std430) readonly buffer In { vec2 pairs[]; };
+layout(set = 0, binding = 1, std430) writeonly buffer Out { uint results[]; };  // 9 per pair
+layout(push_constant) uniform Push { uint count; };
+
+void main() {
+    const uint i = gl_GlobalInvocationID.x;
+    if (i >= count) return;
+    const float a = pairs[i].x, b = pairs[i].y;
+    precise float q = a / b;
+    precise float s = sqrt(a);
+    const uint o = 9 * i;
+    results[o] = floatBitsToUint(q);
+    results[o + 1] = floatBitsToUint(s);
+    results[o + 2] = floatBitsToUint(crDiv(a, b));
+    results[o + 3] = floatBitsToUint(crSqrt(a));
+    results[o + 4] = toUnorm8(a);
+    const bool finite = !isinf(q) && !isnan(q) && q != 0.0 && s > 0.0 && !isinf(s);
+    const float qUp = finite ? nextFloat(nextFloat(q, 1.0), 1.0) : q;
+    const float qDown = finite ? nextFloat(nextFloat(q, -1.0), -1.0) : q;
+    const float sUp = finite ? nextFloat(s, 1.0) : s, sDown = finite ? nextFloat(s, -1.0) : s;
+    results[o + 5] = floatBitsToUint(crDivFrom(a, b, qUp));
+    results[o + 6] = floatBitsToUint(crDivFrom(a, b, qDown));
+    results[o + 7] = floatBitsToUint(crSqrtFrom(a, sUp));
+    results[o + 8] = floatBitsToUint(crSqrtFrom(a, sDown));
+}

@@ -1,0 +1,106 @@
+// The model sampling mode's exact float helpers (src/gpu/shaders/exact.glsl) on the device:
+// crDiv and crSqrt must return the correctly rounded (IEEE) result, bit for bit as the CPU
+// computes it, whatever the device's own division and square root return; toUnorm8 must be
+// ssfx::toUnorm8. The inputs cover the values the passes divide and take roots of (texture
+// coordinates, lumas, edge-search distances) and a wide random spread; the test also says
+// how often the device's own result was not the correctly rounded one (on lavapipe a
+// division by a constant is a multiplication by its reciprocal). Starting values 1-2 ulp
+// off exercise the correction loop itself, which an exact device never needs.
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cmath>
+#include <cstring>
+#include <random>
+
+#include "ssfx/core/color.hpp"
+#include "ssfx/core/error.hpp"
+#include "ssfx/vk/compute.hpp"
+#include "ssfx/vk/context.hpp"
+
+namespace ssfx {
+namespace {
+
+const std::uint32_t kExact[] = {
+#include "shaders/exact.comp.inc"
+};
+
+TEST(GpuShaders, ExactHelpersMatchIeee) {
+    vkx::ContextOptions o;
+    o.validation = true;
+    std::shared_ptr<vkx::Context> ctx;
+    try {
+        ctx = vkx::Context::create(o);
+    } catch (const Error& e) {
+        GTEST_SKIP() << "no Vulkan device: " << e.what();
+    }
+    // (a, b): pixel centres over image sizes, luma-like values, distances, random magnitudes.
+    std::vector<float> pairs;
+    auto add = [&](float a, float b) { pairs.insert(pairs.end(), {a, b}); };
+    for (int n : {1, 3, 7, 37, 600, 1080, 1920, 4097, 16384})
+        for (int x = 0; x < std::min(n, 2000); ++x) add(float(x) + 0.5f, float(n));
+    for (int k = 0; k <= 4080; ++k) add(float(k), 4080.0f);
+    for (int v = 0; v <= 255; ++v) add(float(v), 255.0f);
+    for (int d1 = 1; d1 <= 16; ++d1)
+        for (int d2 = 1; d2 <= 16; ++d2) add(float(std::min(d1, d2)), float(d1 + d2));
+    std::mt19937 rng(20261202);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    std::uniform_int_distribution<int> expo(-20, 20);
+    for (int i = 0; i < 200000; ++i) add(std::ldexp(unit(rng), expo(rng)), std::ldexp(0.5f + unit(rng), expo(rng)));
+    for (int i = 0; i < 20000; ++i) add(unit(rng), 1.0f);  // the bytes of values in [0, 1]
+    const auto count = std::uint32_t(pairs.size() / 2);
+
+    vkx::Buffer in =
+        ctx->uploadBuffer(pairs.data(), pairs.size() * sizeof(float), vk::BufferUsageFlagBits::eStorageBuffer);
+    const vk::DeviceSize outBytes = vk::DeviceSize(count) * 9 * 4;
+    vkx::Buffer out = ctx->createBuffer(outBytes, vk::BufferUsageFlagBits::eStorageBuffer, true);
+    vkx::ComputePipeline pipe(*ctx, kExact,
+                              {{vk::DescriptorType::eStorageBuffer}, {vk::DescriptorType::eStorageBuffer}},
+                              sizeof(std::uint32_t));
+    vkx::DescriptorSets sets = pipe.makeSets();
+    sets.bind(0, 0, in);
+    sets.bind(0, 1, out);
+    ctx->submit([&](const vk::raii::CommandBuffer& cmd) {
+        pipe.dispatch(cmd, sets[0], &count, vkx::groupCount(count, 64));
+        const vk::MemoryBarrier toHost(vk::AccessFlagBits::eShaderWrite, vk::AccessFlagBits::eHostRead);
+        cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eHost, {}, toHost, {},
+                            {});
+    });
+    const auto* r = static_cast<const std::uint32_t*>(out.mapped);
+    std::int64_t rawDivOff = 0, rawSqrtOff = 0, divWrong = 0, sqrtWrong = 0, byteWrong = 0, fromWrong = 0;
+    for (std::uint32_t i = 0; i < count; ++i) {
+        const float a = pairs[2 * i], b = pairs[2 * i + 1];
+        const std::uint32_t q = std::bit_cast<std::uint32_t>(a / b), s = std::bit_cast<std::uint32_t>(std::sqrt(a));
+        rawDivOff += r[9 * i] != q;
+        rawSqrtOff += r[9 * i + 1] != s;
+        if (r[9 * i + 2] != q && divWrong++ < 5)
+            ADD_FAILURE() << "crDiv(" << a << ", " << b << ") = " << std::bit_cast<float>(r[9 * i + 2]) << ", IEEE "
+                          << a / b;
+        if (r[9 * i + 3] != s && sqrtWrong++ < 5)
+            ADD_FAILURE() << "crSqrt(" << a << ") = " << std::bit_cast<float>(r[9 * i + 3]) << ", IEEE "
+                          << std::sqrt(a);
+        for (int k = 5; k <= 6; ++k)
+            if (r[9 * i + k] != q && fromWrong++ < 5)
+                ADD_FAILURE() << "crDivFrom(" << a << ", " << b
+                              << ", 2 ulp off) = " << std::bit_cast<float>(r[9 * i + k]);
+        for (int k = 7; k <= 8; ++k)
+            if (r[9 * i + k] != s && fromWrong++ < 5)
+                ADD_FAILURE() << "crSqrtFrom(" << a << ", 1 ulp off) = " << std::bit_cast<float>(r[9 * i + k]);
+        if (r[9 * i + 4] != toUnorm8(a) && byteWrong++ < 5)
+            ADD_FAILURE() << "toUnorm8(" << a << ") = " << r[9 * i + 4] << ", CPU " << int(toUnorm8(a));
+    }
+    std::printf(
+        "%u pairs on %s: the device's own a / b was not the IEEE result in %lld, its sqrt in %lld; "
+        "crDiv, crSqrt and toUnorm8 wrong in %lld, %lld, %lld\n",
+        count, ctx->info.name.c_str(), (long long)rawDivOff, (long long)rawSqrtOff, (long long)divWrong,
+        (long long)sqrtWrong, (long long)byteWrong);
+    EXPECT_EQ(divWrong, 0);
+    EXPECT_EQ(sqrtWrong, 0);
+    EXPECT_EQ(byteWrong, 0);
+    EXPECT_EQ(fromWrong, 0) << "the correction from wrong starting values";
+    const auto messages = ctx->validationMessages();
+    EXPECT_TRUE(messages.empty()) << messages.front();
+}
+
+}  // namespace
+}  // namespace ssfx
