@@ -173,28 +173,35 @@ TEST(GpuAa, HardwareSamplingAgreesWithinTheDevicePrecision) {
         const int within = int(std::floor(1.0 + (m.id == "ssaax2" ? 1.159 : 1.0) * e));
         gpu::AaPass pass(context(), m.id, {}, gpu::Sampling::Hardware);
         const char* suffix = m.inputScale == 4 ? "x4" : m.inputScale == 2 ? "x2" : "";
-        const ImageRgba8 in =
-            dir ? io::readPng(fmt::format("{}/lines{}.png", *dir, suffix)) : inputFor(kCases[0], m.inputScale, 11);
-        const ImageRgba8 cpu = m.run(in.view(), {}, Exec{}), gpu = pass.run(in.view());
-        std::int64_t identical = 0, close = 0;
-        int largest = 0;
-        for (int y = 0; y < cpu.height(); ++y)
-            for (int x = 0; x < cpu.width(); ++x) {
-                const Rgba8 p = cpu(x, y), q = gpu(x, y);
-                const int d = std::max({std::abs(p.r - q.r), std::abs(p.g - q.g), std::abs(p.b - q.b)});
-                identical += d == 0;
-                close += d <= within;
-                largest = std::max(largest, d);
-            }
-        const double n = double(cpu.pixelCount());
-        std::printf(
-            "hardware %-7s: %.3f %% identical, %.3f %% within %d levels, largest difference %d (%d-bit "
-            "sub-texel precision)\n",
-            std::string(m.id).c_str(), 100.0 * double(identical) / n, 100.0 * double(close) / n, within, largest, bits);
-        if (weighsOnly)
-            EXPECT_LE(largest, within) << m.id;
+        std::vector<std::pair<std::string, ImageRgba8>> inputs;
+        if (dir)
+            for (const char* name : {"lines", "circles"})
+                inputs.emplace_back(name, io::readPng(fmt::format("{}/{}{}.png", *dir, name, suffix)));
         else
-            EXPECT_GE(double(close) / n, 0.99) << m.id;
+            inputs.emplace_back("random", inputFor(kCases[0], m.inputScale, 11));
+        for (const auto& [name, in] : inputs) {
+            const ImageRgba8 cpu = m.run(in.view(), {}, Exec{}), gpu = pass.run(in.view());
+            std::int64_t identical = 0, close = 0;
+            int largest = 0;
+            for (int y = 0; y < cpu.height(); ++y)
+                for (int x = 0; x < cpu.width(); ++x) {
+                    const Rgba8 p = cpu(x, y), q = gpu(x, y);
+                    const int d = std::max({std::abs(p.r - q.r), std::abs(p.g - q.g), std::abs(p.b - q.b)});
+                    identical += d == 0;
+                    close += d <= within;
+                    largest = std::max(largest, d);
+                }
+            const double n = double(cpu.pixelCount());
+            std::printf(
+                "hardware %-7s %-8s: %.3f %% identical, %.3f %% within %d levels, largest difference %d "
+                "(%d-bit sub-texel precision)\n",
+                std::string(m.id).c_str(), name.c_str(), 100.0 * double(identical) / n, 100.0 * double(close) / n,
+                within, largest, bits);
+            if (weighsOnly)
+                EXPECT_LE(largest, within) << m.id << " on " << name;
+            else
+                EXPECT_GE(double(close) / n, 0.99) << m.id << " on " << name;
+        }
     }
     expectNoValidationMessages();
 }
