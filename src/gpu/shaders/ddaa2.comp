@@ -10,27 +10,17 @@
 const int kBatch = 3;  // samples per round: EDGE_STEP_LIST = [3, 3, 3, 3, 3]
 
 // The luma of the search read at c moved `move` (texture units) along the edge, plus texel
-// offset k along it, minus localAverage; `across`: c's coordinate across the edge, split.
-float searchDelta(bool horizontal, float cu, float cv, AxisPos across, float move, int k, float localAverage) {
+// offset k along it, minus localAverage.
+float searchDelta(bool horizontal, float cu, float cv, float move, int k, float localAverage) {
     vec3 c;
     if (pc.sampling != 0) {
         c = horizontal ? sampleAt(cu + move, cv, k, 0) : sampleAt(cu, cv + move, 0, k);
+    } else if (horizontal) {
+        precise float along = cu + move;
+        c = sampleModel(axisU(along), axisV(cv), k, 0);
     } else {
-        precise float coord = (horizontal ? cu : cv) + move;
-        const AxisPos along = horizontal ? axisU(coord) : axisV(coord);
-        if (along.w == 0 || along.w == 256) {
-            // On a texel along the edge (every read, for every realistic size: the CPU proves
-            // it per size, searchReadsArePairReads): the model's sum has only the two texels
-            // across, in the same integers, so fetch just those two.
-            const int ia = along.index + k + (along.w == 256 ? 1 : 0);
-            const ivec2 p0 = horizontal ? ivec2(ia, across.index) : ivec2(across.index, ia);
-            const ivec2 p1 = horizontal ? ivec2(ia, across.index + 1) : ivec2(across.index + 1, ia);
-            const uvec3 sum = 256u * (uint(256 - across.w) * texel8(p0.x, p0.y) + uint(across.w) * texel8(p1.x, p1.y));
-            const uvec3 q = (sum + 2048u) >> 12u;
-            c = vec3(sixteenthLevel(q.r), sixteenthLevel(q.g), sixteenthLevel(q.b));
-        } else {
-            c = horizontal ? sampleModel(along, across, k, 0) : sampleModel(across, along, 0, k);
-        }
+        precise float along = cv + move;
+        c = sampleModel(axisU(cu), axisV(along), 0, k);
     }
     precise float delta = edgeLuma(c) - localAverage;
     return delta;
@@ -65,7 +55,6 @@ float edgeSearchOffset(int x, int y, Luma3x3 n, EdgeSides s) {
     else
         cu += float(across) * 0.5 * pc.invW;
     const float invAlong = s.horizontal ? pc.invW : pc.invH;
-    const AxisPos acrossPos = s.horizontal ? axisV(cv) : axisU(cu);  // the same for every read
 
     // Both sides in step, round by round (a side whose end is found stops reading): the
     // reads of each side, and so its result, are the CPU's; in step, the invocations of a
@@ -79,14 +68,14 @@ float edgeSearchOffset(int x, int y, Luma3x3 n, EdgeSides s) {
         for (int k = r == 0 ? 1 : 0; k < kBatch; ++k) {
             const int offset = r == 0 ? k + 1 : k - 1;  // texel offset from the round's coordinate
             if (!done1) {
-                delta1 = searchDelta(s.horizontal, cu, cv, acrossPos, -move, -offset, localAverage);
+                delta1 = searchDelta(s.horizontal, cu, cv, -move, -offset, localAverage);
                 if (abs(delta1) >= gradientScaled) {
                     done1 = true;
                     d1 = float(roundPosition(r, r == 0 ? k - 1 : k));
                 }
             }
             if (!done2) {
-                delta2 = searchDelta(s.horizontal, cu, cv, acrossPos, move, offset, localAverage);
+                delta2 = searchDelta(s.horizontal, cu, cv, move, offset, localAverage);
                 if (abs(delta2) >= gradientScaled) {
                     done2 = true;
                     d2 = float(roundPosition(r, r == 0 ? k - 1 : k));
