@@ -195,6 +195,16 @@ Block beatsNoaaBlock(const QualityTable& t) {
     return b;
 }
 
+// "`lines` 71361 of 360000 pixels (19.8 %), ...": the edge masks' sizes, for the texts.
+std::string edgeMaskSizes(const QualityTable& t, bool percent) {
+    std::string sizes;
+    for (std::size_t i = 0; i < t.images.size(); ++i) {
+        sizes += fmt::format("{}`{}` {} of {} pixels", i ? ", " : "", t.images[i], t.edgePixels[i], t.pixels[i]);
+        if (percent) sizes += fmt::format(" ({:.1f} %)", 100.0 * double(t.edgePixels[i]) / double(t.pixels[i]));
+    }
+    return sizes;
+}
+
 Section truthSection(const Run& r, const QualityTable& quality) {
     const Protocol p = Protocol::Truth;
     Section s;
@@ -205,11 +215,7 @@ Section truthSection(const Run& r, const QualityTable& quality) {
         "and SSIM (8x8 windows) at 1x, and the per-pixel error e = max(|dR|, |dG|, |dB|) in 8-bit levels: its "
         "largest value and its 99th percentile. Edge scores count only the pixels where the truth differs from the "
         "aliased input (docs/evaluation.md).";
-    std::string sizes;
-    for (std::size_t i = 0; i < quality.images.size(); ++i)
-        sizes +=
-            fmt::format("{}`{}` {} of {} pixels ({:.1f} %)", i ? ", " : "", quality.images[i], quality.edgePixels[i],
-                        quality.pixels[i], 100.0 * double(quality.edgePixels[i]) / double(quality.pixels[i]));
+    const std::string sizes = edgeMaskSizes(quality, true);
     Block psnr = metricBlock(r, quality, p, Region::All, Metric::Psnr, "PSNR (dB)", "", "truth_psnr.png",
                              "PSNR per image and method against the truth (higher is better)");
     Block ssim = metricBlock(r, quality, p, Region::All, Metric::Ssim, "SSIM", "", "truth_ssim.png",
@@ -250,10 +256,7 @@ Block truthRowsBlock(const QualityTable& given, const QualityTable& ours) {
                 for (std::size_t m = 0; m < t->methods.size(); ++m)
                     vals.back().push_back(t->value(Protocol::Truth, region, Metric::Psnr, i, m));
             }
-    std::string sizes;
-    for (std::size_t i = 0; i < given.images.size(); ++i)
-        sizes +=
-            fmt::format("{}`{}` {} of {} pixels", i ? ", " : "", given.images[i], given.edgePixels[i], given.pixels[i]);
+    const std::string sizes = edgeMaskSizes(given, false);
     Block b;
     b.heading = "The author's images against the truth";
     b.text =
