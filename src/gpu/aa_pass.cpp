@@ -9,7 +9,6 @@
 
 #include "src/gpu/shaders/aa_constants.h"
 #include "ssfx/core/error.hpp"
-#include "ssfx/core/sample.hpp"
 #include "ssfx/vk/compute.hpp"
 #include "ssfx/vk/timer.hpp"
 
@@ -30,6 +29,12 @@ constexpr bool fourByteMembersInOrder() {
 static_assert(fourByteMembersInOrder(), "AaConstants: every member a 4-byte scalar, in order (std430)");
 static_assert(sizeof(AaConstants) == 4 * std::size(kOffsets), "AaConstants: no padding");
 static_assert(sizeof(AaConstants) <= 128, "AaConstants: within the guaranteed push-constant size");
+
+// The specialization constants: constant_id i at byte 4 i.
+#define SSFX_AA_SPEC_ENTRY(id, name) vk::SpecializationMapEntry(id, offsetof(AaSpecialization, name), 4),
+const vk::SpecializationMapEntry kSpecEntries[] = {SSFX_AA_SPECIALIZATION(SSFX_AA_SPEC_ENTRY)};
+#undef SSFX_AA_SPEC_ENTRY
+static_assert(sizeof(AaSpecialization) == 4 * std::size(kSpecEntries), "AaSpecialization: no padding");
 
 namespace {
 
@@ -62,12 +67,11 @@ void ddaa1Constants(AaConstants& c, const aa::Ddaa1Params& p) {
 
 // The one place where a method's CPU params become its shader constants.
 AaConstants aaConstants(std::string_view method, const AaParams& params, int width, int height, int outWidth,
-                        int outHeight, Sampling sampling) {
+                        int outHeight) {
     AaConstants c{};
     c.width = width, c.height = height, c.outWidth = outWidth, c.outHeight = outHeight;
     c.fw = float(width), c.fh = float(height);
     c.invW = 1.0f / float(width), c.invH = 1.0f / float(height);  // as ssfx::Texture
-    c.sampling = sampling == Sampling::Hardware ? 1 : 0;
     std::visit(Overloaded{
                    [](const std::monostate&) {},
                    [&](const aa::BlurParams& p) {
@@ -79,7 +83,6 @@ AaConstants aaConstants(std::string_view method, const AaParams& params, int wid
                        requireUnorm(p.texture, method);
                        thresholds(c, p.edgeThresholdMin, p.edgeThreshold, p.chromaWeight);
                        c.edgeSharpness = p.edgeSharpness;
-                       c.diagonalsAtCentres = p.diagonalOffset == 1.0f ? 1 : 0;
                        c.diagonalU = p.diagonalOffset * c.invW;  // as fxaa3c.cpp: du, dv
                        c.diagonalV = p.diagonalOffset * c.invH;
                    },
@@ -103,6 +106,20 @@ AaConstants aaConstants(std::string_view method, const AaParams& params, int wid
                },
                params);
     return c;
+}
+
+// The choices that select shader code, from the same params (and the sampling mode).
+AaSpecialization aaSpecialization(std::string_view method, const AaParams& params, Sampling sampling) {
+    const AaConstants c = aaConstants(method, params, 8, 8, 8, 8);  // (its checks, and chromaWeight)
+    AaSpecialization s{};
+    s.sampling = sampling == Sampling::Hardware ? 1 : 0;
+    s.chroma = c.chromaWeight != 0.0f ? 1 : 0;
+    if (const auto* p = std::get_if<aa::Fxaa3cParams>(&params)) s.diagonalsAtCentres = p->diagonalOffset == 1.0f;
+    return s;
+}
+
+vk::SpecializationInfo specializationInfo(const AaSpecialization& s) {
+    return vk::SpecializationInfo(std::uint32_t(std::size(kSpecEntries)), kSpecEntries, sizeof(s), &s);
 }
 
 }  // namespace detail
@@ -233,8 +250,8 @@ AaPass::AaPass(std::shared_ptr<vkx::Context> ctx, std::string_view method, const
                         m.method->id));
     m.params = resolveParams(m.method->id, settings);
     m.sampling = sampling;
-    // Validate the params now (the constants' checks), for a size that always exists.
-    (void)detail::aaConstants(m.method->id, m.params, 8, 8, 8, 8, sampling);
+    // Validates the params now (the constants' checks).
+    const detail::AaSpecialization spec = detail::aaSpecialization(m.method->id, m.params, sampling);
     vkx::Context& c = *m.ctx;
     vkx::guarded("creating the GPU pass", [&] {
         m.sampler = vk::raii::Sampler(
@@ -242,20 +259,24 @@ AaPass::AaPass(std::shared_ptr<vkx::Context> ctx, std::string_view method, const
             vk::SamplerCreateInfo({}, vk::Filter::eLinear, vk::Filter::eLinear, vk::SamplerMipmapMode::eNearest,
                                   vk::SamplerAddressMode::eClampToEdge, vk::SamplerAddressMode::eClampToEdge,
                                   vk::SamplerAddressMode::eClampToEdge));
-        // The tables: the CPU's own floats, so the model's filtered values are the CPU's.
-        std::vector<float> t(kSixteenthLevels.begin(), kSixteenthLevels.end());
-        t.insert(t.end(), kUnorm8.begin(), kUnorm8.end());
+        // The tables: the x4 resolve's weights, the CPU's own floats.
+        std::vector<float> t;
         aa::MitchellParams mp;
         if (const auto* p = std::get_if<aa::MitchellParams>(&m.params)) mp = *p;
         // Tap d of the x4 resolve, from output centre f = 2 (any pixel gives the same t = d + 0.5).
         for (int d = -8; d <= 7; ++d) t.push_back(aa::mitchell((float(2 + d) + 0.5f - 2.0f) / 4.0f, mp.B, mp.C));
-        static_assert(SSFX_AA_SIXTEENTH_COUNT + SSFX_AA_UNORM_COUNT + SSFX_AA_MITCHELL4_COUNT == 4081 + 256 + 16);
+        static_assert(SSFX_AA_MITCHELL4_COUNT == 16);
         m.tables = c.uploadBuffer(t.data(), t.size() * sizeof(float), vk::BufferUsageFlagBits::eStorageBuffer);
+        const vk::SpecializationInfo specInfo = detail::specializationInfo(spec);
         m.pipeline = std::make_unique<vkx::ComputePipeline>(c, shaderFor(m.method->id), kBindings,
-                                                            std::uint32_t(sizeof(AaConstants)), nullptr, true);
-        if (m.method->id == "ddaa2p")
+                                                            std::uint32_t(sizeof(AaConstants)), &specInfo, true);
+        if (m.method->id == "ddaa2p") {
+            const detail::AaSpecialization resolveSpec =
+                detail::aaSpecialization("ssaax2", aa::Ssaax2Params{}, sampling);
+            const vk::SpecializationInfo resolveInfo = detail::specializationInfo(resolveSpec);
             m.resolve = std::make_unique<vkx::ComputePipeline>(c, std::span<const std::uint32_t>(kSsaax2), kBindings,
-                                                               std::uint32_t(sizeof(AaConstants)), nullptr, true);
+                                                               std::uint32_t(sizeof(AaConstants)), &resolveInfo, true);
+        }
         m.timer = std::make_unique<vkx::GpuTimer>(c, 1);
     });
 }
@@ -308,18 +329,18 @@ void AaPass::record(const vk::raii::CommandBuffer& cmd, const ImageRef& input, c
             cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eComputeShader,
                                 {}, {}, {}, toGeneral);
             m.dispatch(*m.pipeline, cmd, input.view, input.layout, *m.scratchView,
-                       detail::aaConstants("ddaa2", m.params, w, h, w, h, m.sampling));
+                       detail::aaConstants("ddaa2", m.params, w, h, w, h));
             const vk::ImageMemoryBarrier written(
                 vk::AccessFlagBits::eShaderWrite, vk::AccessFlagBits::eShaderRead, vk::ImageLayout::eGeneral,
                 vk::ImageLayout::eGeneral, VK_QUEUE_FAMILY_IGNORED, VK_QUEUE_FAMILY_IGNORED, *m.scratch.image, range);
             cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eComputeShader,
                                 {}, {}, {}, written);
             m.dispatch(*m.resolve, cmd, *m.scratchView, vk::ImageLayout::eGeneral, output.view,
-                       detail::aaConstants("ssaax2", aa::Ssaax2Params{}, w, h, w / 2, h / 2, m.sampling));
+                       detail::aaConstants("ssaax2", aa::Ssaax2Params{}, w, h, w / 2, h / 2));
             return;
         }
         m.dispatch(*m.pipeline, cmd, input.view, input.layout, output.view,
-                   detail::aaConstants(id, m.params, w, h, w / int(scale), h / int(scale), m.sampling));
+                   detail::aaConstants(id, m.params, w, h, w / int(scale), h / int(scale)));
     });
 }
 

@@ -5,7 +5,8 @@
 // coordinates, lumas, edge-search distances) and a wide random spread; the test also says
 // how often the device's own result was not the correctly rounded one (on lavapipe a
 // division by a constant is a multiplication by its reciprocal). Starting values 1-2 ulp
-// off exercise the correction loop itself, which an exact device never needs.
+// off exercise the correction loop itself, which an exact device never needs. levelOver4080
+// (the model's k / 4080 and v / 255 in integer arithmetic) must give ssfx::kSixteenthLevels.
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -15,6 +16,7 @@
 
 #include "ssfx/core/color.hpp"
 #include "ssfx/core/error.hpp"
+#include "ssfx/core/sample.hpp"
 #include "ssfx/vk/compute.hpp"
 #include "ssfx/vk/context.hpp"
 
@@ -54,12 +56,16 @@ TEST(GpuShaders, ExactHelpersMatchIeee) {
         ctx->uploadBuffer(pairs.data(), pairs.size() * sizeof(float), vk::BufferUsageFlagBits::eStorageBuffer);
     const vk::DeviceSize outBytes = vk::DeviceSize(count) * 9 * 4;
     vkx::Buffer out = ctx->createBuffer(outBytes, vk::BufferUsageFlagBits::eStorageBuffer, true);
+    vkx::Buffer levels = ctx->createBuffer(4081 * 4, vk::BufferUsageFlagBits::eStorageBuffer, true);
     vkx::ComputePipeline pipe(*ctx, kExact,
-                              {{vk::DescriptorType::eStorageBuffer}, {vk::DescriptorType::eStorageBuffer}},
+                              {{vk::DescriptorType::eStorageBuffer},
+                               {vk::DescriptorType::eStorageBuffer},
+                               {vk::DescriptorType::eStorageBuffer}},
                               sizeof(std::uint32_t));
     vkx::DescriptorSets sets = pipe.makeSets();
     sets.bind(0, 0, in);
     sets.bind(0, 1, out);
+    sets.bind(0, 2, levels);
     ctx->submit([&](const vk::raii::CommandBuffer& cmd) {
         pipe.dispatch(cmd, sets[0], &count, vkx::groupCount(count, 64));
         const vk::MemoryBarrier toHost(vk::AccessFlagBits::eShaderWrite, vk::AccessFlagBits::eHostRead);
@@ -98,6 +104,13 @@ TEST(GpuShaders, ExactHelpersMatchIeee) {
     EXPECT_EQ(sqrtWrong, 0);
     EXPECT_EQ(byteWrong, 0);
     EXPECT_EQ(fromWrong, 0) << "the correction from wrong starting values";
+    const auto* lv = static_cast<const std::uint32_t*>(levels.mapped);
+    int levelsWrong = 0;
+    for (int k = 0; k <= 4080; ++k)
+        if (lv[k] != std::bit_cast<std::uint32_t>(kSixteenthLevels[std::size_t(k)]) && levelsWrong++ < 5)
+            ADD_FAILURE() << "levelOver4080(" << k << ") = " << std::bit_cast<float>(lv[k]) << ", CPU "
+                          << kSixteenthLevels[std::size_t(k)];
+    EXPECT_EQ(levelsWrong, 0);
     const auto messages = ctx->validationMessages();
     EXPECT_TRUE(messages.empty()) << messages.front();
 }

@@ -22,30 +22,47 @@
     X(float, blurW1)       /* blur: direct-neighbour and corner weights, 1 / weight sum */ \
     X(float, blurW2)                                                                       \
     X(float, blurNorm)                                                                     \
-    X(float, edgeSharpness)    /* fxaa3c */                                                \
-    X(int, diagonalsAtCentres) /* fxaa3c: diagonalOffset == 1 (reads at pixel centres) */  \
-    X(float, diagonalU)        /* fxaa3c: diagonalOffset / W, / H */                       \
+    X(float, edgeSharpness) /* fxaa3c */                                                   \
+    X(float, diagonalU)     /* fxaa3c: diagonalOffset / W, / H */                          \
     X(float, diagonalV)                                                                    \
     X(float, subpix) /* fxaa3d */                                                          \
     X(int, paperSearchQuirk)                                                               \
     X(float, strength) /* ddaa1, ddaa2 */                                                  \
     X(float, maxDiffusion)                                                                 \
     X(float, ridgeFactor)                                                                  \
-    X(int, searchRounds) /* ddaa2 */                                                       \
-    X(int, sampling)     /* 0: the GPU sampling model (exact); 1: the device's sampler */
+    X(int, searchRounds) /* ddaa2 */
+
+// The specialization constants, fixed when a pass's pipeline is made: X(constant_id, name),
+// each a 32-bit int. The choices that select code live here, not in the push constants:
+// the device compiles only the branch taken, where a branch on a push constant costs both
+// sides on drivers that run shaders as masked SIMD code (lavapipe runs every side of every
+// branch). GLSL sees them as spec_<name>.
+#define SSFX_AA_SPECIALIZATION(X)                                                             \
+    X(0, sampling)           /* 0: the GPU sampling model (exact); 1: the device's sampler */ \
+    X(1, chroma)             /* 1: chromaWeight != 0 (edgeLuma adds the chroma term) */       \
+    X(2, diagonalsAtCentres) /* fxaa3c: diagonalOffset == 1 (reads at pixel centres) */
 
 #define SSFX_AA_MEMBER(type, name) type name;
 
 #ifdef __cplusplus
+#include <cstdint>
 namespace ssfx::gpu::detail {
 struct AaConstants {
     SSFX_AA_CONSTANTS(SSFX_AA_MEMBER)
 };
+#define SSFX_AA_SPEC_MEMBER(id, name) std::int32_t name;
+struct AaSpecialization {
+    SSFX_AA_SPECIALIZATION(SSFX_AA_SPEC_MEMBER)
+};
+#undef SSFX_AA_SPEC_MEMBER
 }  // namespace ssfx::gpu::detail
 #else
 struct AaConstants {
     SSFX_AA_CONSTANTS(SSFX_AA_MEMBER)
 };
+#define SSFX_AA_SPEC_DECL(id, name) layout(constant_id = id) const int spec_##name = 0;
+SSFX_AA_SPECIALIZATION(SSFX_AA_SPEC_DECL)
+#undef SSFX_AA_SPEC_DECL
 #endif
 
 // Binding numbers of descriptor set 0, shared by every pass.
@@ -53,10 +70,9 @@ struct AaConstants {
 #define SSFX_AA_BINDING_OUTPUT 1  // storage image rgba8: the output
 #define SSFX_AA_BINDING_TABLES 2  // storage buffer: the tables below
 
-// The tables buffer (floats): k / 4080 for k = 0..4080 (ssfx::kSixteenthLevels), v / 255 for
-// v = 0..255 (ssfx::kUnorm8), then the 16 Mitchell weights of the x4 resolve per axis.
-#define SSFX_AA_SIXTEENTH_COUNT 4081
-#define SSFX_AA_UNORM_COUNT 256
+// The tables buffer (floats): the 16 Mitchell weights of the x4 resolve per axis (read at
+// indices that are the same for every invocation; the model's levels k / 4080 are computed,
+// exact.glsl's levelOver4080, as a per-pixel table lookup is slow on SIMD CPU drivers).
 #define SSFX_AA_MITCHELL4_COUNT 16
 
 // Work-group size of every pass: 16 x 16 pixels (its tile: 18 x 18 texels, ppaa.glsl).

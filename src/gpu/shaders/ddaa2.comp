@@ -13,7 +13,7 @@ const int kBatch = 3;  // samples per round: EDGE_STEP_LIST = [3, 3, 3, 3, 3]
 // offset k along it, minus localAverage.
 float searchDelta(bool horizontal, float cu, float cv, float move, int k, float localAverage) {
     vec3 c;
-    if (pc.sampling != 0) {
+    if (spec_sampling != 0) {
         c = horizontal ? sampleAt(cu + move, cv, k, 0) : sampleAt(cu, cv + move, 0, k);
     } else if (horizontal) {
         precise float along = cu + move;

@@ -107,3 +107,27 @@ uint toUnorm8(float v) {
     return (s == 32 ? 0u : q >> uint(s)) + ((q >> uint(s - 1)) & 1u);
 }
 
+
+// k / 4080 correctly rounded to float32 for k = 0..4080 (ssfx::kSixteenthLevels; v / 255 is
+// level(16 v)), in integer arithmetic only: no table (on lavapipe a lookup at a per-pixel
+// index is a loop over the SIMD lanes), no division, no rounding by the device.
+// Since 2^28 = 255 * 0x101010 + 16, floor(k' 2^32 / 4080) = k' 0x101010 + floor(16 k' / 255);
+// k' = k 2^sh is normalised to k' >= 2^10, so that floor has 31 or 32 bits. Its low bit is
+// made sticky when the division leaves a remainder; it is then rounded half to even to 24
+// bits, and the float of that significand times a power of two is exact. (Checked against
+// the CPU's table for every k by GpuShaders.ExactHelpersMatchIeee.)
+float levelOver4080(uint k) {
+    if (k == 0u) return 0.0;
+    if (k >= 4080u) return 1.0;
+    const int sh = max(0, 10 - findMSB(k));
+    const uint kp = k << uint(sh);
+    const uint n = 16u * kp;
+    const uint q = (n * 0x8081u) >> 23u;  // floor(n / 255), exact for n < 65535
+    const uint m = (kp * 0x101010u + q) | (n != 255u * q ? 1u : 0u);
+    const int d = findMSB(m) - 23;  // 7 or 8 bits to drop
+    const uint low = m & ((1u << uint(d)) - 1u), tie = 1u << uint(d - 1);
+    const uint mant = (m >> uint(d)) + (low > tie || (low == tie && ((m >> uint(d)) & 1u) != 0u) ? 1u : 0u);
+    // mant <= 2^24 converts exactly; 2^(d - 32 - sh) lies in [2^-35, 2^-24]: an exact product.
+    precise float r = float(mant) * uintBitsToFloat(uint(127 + d - 32 - sh) << 23u);
+    return r;
+}

@@ -6,7 +6,7 @@
 #include "ppaa.glsl"
 
 float diagonal(int x, int y, int sx, int sy) {
-    if (pc.diagonalsAtCentres != 0) return lumaAt(x + sx, y + sy);  // at pixel centres: the pixels
+    if (spec_diagonalsAtCentres != 0) return lumaAt(x + sx, y + sy);  // at pixel centres: the pixels
     const float u = centreU(x), v = centreV(y);
     precise float du = u + float(sx) * pc.diagonalU;
     precise float dv = v + float(sy) * pc.diagonalV;

@@ -20,8 +20,6 @@ layout(local_size_x = SSFX_AA_GROUP, local_size_y = SSFX_AA_GROUP) in;
 layout(set = 0, binding = SSFX_AA_BINDING_INPUT) uniform sampler2D src;
 layout(set = 0, binding = SSFX_AA_BINDING_OUTPUT, rgba8) uniform writeonly image2D dst;
 layout(set = 0, binding = SSFX_AA_BINDING_TABLES, std430) readonly buffer Tables {
-    float sixteenth[SSFX_AA_SIXTEENTH_COUNT];
-    float unorm8[SSFX_AA_UNORM_COUNT];
     float mitchell4[SSFX_AA_MITCHELL4_COUNT];
 } tables;
 layout(push_constant, std430) uniform Push {
@@ -32,11 +30,9 @@ layout(push_constant, std430) uniform Push {
 
 // ---- the texture ---------------------------------------------------------------------------
 
-// k / 4080 and v / 255 rounded to float32, from the CPU's own tables. (Not a division in the
-// shader: even lavapipe turns a division by a constant into a multiplication by its
-// reciprocal, which is one rounding too many.)
-float sixteenthLevel(uint k) { return tables.sixteenth[k]; }
-float unormLevel(uint v) { return tables.unorm8[v]; }
+// k / 4080 and v / 255 rounded to float32, as the CPU's tables (exact.glsl's levelOver4080).
+float sixteenthLevel(uint k) { return levelOver4080(k); }
+float unormLevel(uint v) { return levelOver4080(16u * v); }
 
 // The 8-bit texel (x, y), clamped to the image (clamp-to-edge addressing).
 uvec3 texel8(int x, int y) {
@@ -91,7 +87,7 @@ vec3 sampleModel(AxisPos ax, AxisPos ay, int ox, int oy) {
 // A bilinear read at texture coordinate (u, v) plus an integer texel offset: the model, or
 // the device's sampler (the offset added in texture units: not exact, the fast path).
 vec3 sampleAt(float u, float v, int ox, int oy) {
-    if (pc.sampling != 0) {
+    if (spec_sampling != 0) {
         precise float su = u + float(ox) * pc.invW;
         precise float sv = v + float(oy) * pc.invH;
         return textureLod(src, vec2(su, sv), 0.0).rgb;
@@ -110,7 +106,7 @@ float luma(vec3 c) {
 // ssfx::edgeLuma: luma plus chromaWeight times max - min of R, G, B.
 float edgeLuma(vec3 c) {
     const float l = luma(c);
-    if (pc.chromaWeight == 0.0) return l;
+    if (spec_chroma == 0) return l;
     const float hi = c.r > c.g ? (c.r > c.b ? c.r : c.b) : (c.g > c.b ? c.g : c.b);
     const float lo = c.r < c.g ? (c.r < c.b ? c.r : c.b) : (c.g < c.b ? c.g : c.b);
     precise float e = l + pc.chromaWeight * (hi - lo);
@@ -157,7 +153,7 @@ float lumaAt(int x, int y) { return edgeLuma(fetchValue(x, y)); }
 // The output pixel: the colour quantised exactly (model) or by the device (hardware), alpha
 // from `alpha` (an 8-bit value).
 void store(ivec2 p, vec3 c, uint alpha) {
-    if (pc.sampling != 0) {
+    if (spec_sampling != 0) {
         imageStore(dst, p, vec4(clamp(c, 0.0, 1.0), float(alpha) / 255.0));
         return;
     }

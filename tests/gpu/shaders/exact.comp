@@ -3,17 +3,20 @@
 // GpuShaders.ExactHelpersMatchIeee: per input pair (a, b), the device's own a / b and
 // sqrt(a), crDiv(a, b), crSqrt(a), toUnorm8(a), and the corrections from deliberately wrong
 // starting values (a / b 2 ulp up and 2 ulp down, sqrt(a) 1 ulp up and down), which
-// exercise the correction loop on a device whose own results are already exact.
+// exercise the correction loop on a device whose own results are already exact; and
+// levelOver4080(k) for k = 0..4080 (invocation k).
 #extension GL_GOOGLE_include_directive : require
 #include "../../../src/gpu/shaders/exact.glsl"
 
 layout(local_size_x = 64) in;
 layout(set = 0, binding = 0, std430) readonly buffer In { vec2 pairs[]; };
 layout(set = 0, binding = 1, std430) writeonly buffer Out { uint results[]; };  // 9 per pair
+layout(set = 0, binding = 2, std430) writeonly buffer Levels { uint levels[4081]; };
 layout(push_constant) uniform Push { uint count; };
 
 void main() {
     const uint i = gl_GlobalInvocationID.x;
+    if (i <= 4080u) levels[i] = floatBitsToUint(levelOver4080(i));
     if (i >= count) return;
     const float a = pairs[i].x, b = pairs[i].y;
     precise float q = a / b;
