@@ -223,6 +223,43 @@ struct AaPass::Impl {
         p.dispatchPushed(cmd, writes, &c, groups(std::uint32_t(c.outWidth)), groups(std::uint32_t(c.outHeight)));
     }
 
+    // run()'s images and staging buffers, kept while the size stays the same (a sequence of
+    // frames, a benchmark): new device memory for every call would be written for the first
+    // time inside the pass, and first writes to fresh pages cost more than the pass itself
+    // on a CPU device.
+    struct RunImages {
+        static constexpr vk::ImageUsageFlags kInUsage =
+            vk::ImageUsageFlagBits::eSampled | vk::ImageUsageFlagBits::eTransferDst;
+        static constexpr vk::ImageUsageFlags kResUsage =
+            vk::ImageUsageFlagBits::eStorage | vk::ImageUsageFlagBits::eTransferSrc;
+        std::uint32_t w = 0, h = 0, ow = 0, oh = 0;
+        vkx::Buffer upload, download;
+        vkx::Image in, res;
+        vk::raii::ImageView inView{nullptr}, resView{nullptr};
+    };
+    std::unique_ptr<RunImages> run;
+
+    RunImages& runImages(std::uint32_t w, std::uint32_t h, std::uint32_t ow, std::uint32_t oh) {
+        if (run && run->w == w && run->h == h && run->ow == ow && run->oh == oh) return *run;
+        run.reset();
+        auto r = std::make_unique<RunImages>();
+        r->w = w, r->h = h, r->ow = ow, r->oh = oh;
+        r->upload = ctx->createBuffer(vk::DeviceSize(w) * h * 4, vk::BufferUsageFlagBits::eTransferSrc, true);
+        r->download = ctx->createBuffer(vk::DeviceSize(ow) * oh * 4, vk::BufferUsageFlagBits::eTransferDst, true);
+        r->in = ctx->createImage(kOutputFormat, w, h, RunImages::kInUsage, vk::ImageAspectFlagBits::eColor);
+        r->res = ctx->createImage(kOutputFormat, ow, oh, RunImages::kResUsage, vk::ImageAspectFlagBits::eColor);
+        // 2-D views (createImage makes sampled images' views 2-D arrays).
+        const vk::ImageSubresourceRange range(vk::ImageAspectFlagBits::eColor, 0, 1, 0, 1);
+        auto view2d = [&](const vkx::Image& img) {
+            return vk::raii::ImageView(
+                ctx->device, vk::ImageViewCreateInfo({}, *img.image, vk::ImageViewType::e2D, kOutputFormat, {}, range));
+        };
+        r->inView = view2d(r->in);
+        r->resView = view2d(r->res);
+        run = std::move(r);
+        return *run;
+    }
+
     void ensureScratch(std::uint32_t w, std::uint32_t h) {
         if (*scratch.image && scratch.width == w && scratch.height == h) return;
         scratch =
@@ -358,34 +395,29 @@ ImageRgba8 AaPass::run(ImageView<const Rgba8> input) {
     const std::uint32_t ow = w / scale, oh = h / scale;
     ImageRgba8 out{int(ow), int(oh)};
     vkx::guarded("running the GPU pass", [&] {
-        const vk::DeviceSize inBytes = vk::DeviceSize(w) * h * 4, outBytes = vk::DeviceSize(ow) * oh * 4;
-        vkx::Buffer upload = c.createBuffer(inBytes, vk::BufferUsageFlagBits::eTransferSrc, true);
+        Impl::RunImages& r = m.runImages(w, h, ow, oh);
         for (std::uint32_t y = 0; y < h; ++y)
-            std::memcpy(static_cast<std::uint8_t*>(upload.mapped) + std::size_t(y) * w * 4, input.row(int(y)),
+            std::memcpy(static_cast<std::uint8_t*>(r.upload.mapped) + std::size_t(y) * w * 4, input.row(int(y)),
                         std::size_t(w) * 4);
-        vkx::Buffer download = c.createBuffer(outBytes, vk::BufferUsageFlagBits::eTransferDst, true);
-        const vk::ImageSubresourceRange range(vk::ImageAspectFlagBits::eColor, 0, 1, 0, 1);
-        const vk::ImageUsageFlags inUsage = vk::ImageUsageFlagBits::eSampled | vk::ImageUsageFlagBits::eTransferDst;
-        const vk::ImageUsageFlags resUsage = vk::ImageUsageFlagBits::eStorage | vk::ImageUsageFlagBits::eTransferSrc;
-        vkx::Image in = c.createImage(kOutputFormat, w, h, inUsage, vk::ImageAspectFlagBits::eColor);
-        vkx::Image res = c.createImage(kOutputFormat, ow, oh, resUsage, vk::ImageAspectFlagBits::eColor);
-        // 2-D views (createImage makes sampled images' views 2-D arrays).
-        auto view2d = [&](const vkx::Image& img) {
-            return vk::raii::ImageView(
-                c.device, vk::ImageViewCreateInfo({}, *img.image, vk::ImageViewType::e2D, kOutputFormat, {}, range));
-        };
-        const vk::raii::ImageView inView = view2d(in), resView = view2d(res);
+        const vkx::Image& in = r.in;
+        const vkx::Image& res = r.res;
+        const vkx::Buffer& upload = r.upload;
+        const vkx::Buffer& download = r.download;
+        const vk::raii::ImageView& inView = r.inView;
+        const vk::raii::ImageView& resView = r.resView;
+        const vk::ImageUsageFlags inUsage = Impl::RunImages::kInUsage, resUsage = Impl::RunImages::kResUsage;
         using S = vk::PipelineStageFlagBits;
         using A = vk::AccessFlagBits;
         using L = vk::ImageLayout;
         c.submit([&](const vk::raii::CommandBuffer& cmd) {
-            vkx::transition(cmd, in, L::eUndefined, L::eTransferDstOptimal, S::eTopOfPipe, {}, S::eTransfer,
+            // (All commands before: a previous call's reads of the kept images.)
+            vkx::transition(cmd, in, L::eUndefined, L::eTransferDstOptimal, S::eAllCommands, {}, S::eTransfer,
                             A::eTransferWrite);
             const vk::BufferImageCopy inCopy(0, 0, 0, {vk::ImageAspectFlagBits::eColor, 0, 0, 1}, {0, 0, 0}, {w, h, 1});
             cmd.copyBufferToImage(*upload.buffer, *in.image, L::eTransferDstOptimal, inCopy);
             vkx::transition(cmd, in, L::eTransferDstOptimal, L::eShaderReadOnlyOptimal, S::eTransfer, A::eTransferWrite,
                             S::eComputeShader, A::eShaderRead);
-            vkx::transition(cmd, res, L::eUndefined, L::eGeneral, S::eTopOfPipe, {}, S::eComputeShader,
+            vkx::transition(cmd, res, L::eUndefined, L::eGeneral, S::eAllCommands, {}, S::eComputeShader,
                             A::eShaderWrite);
             m.timer->reset(cmd);
             m.timer->begin(cmd, 0, S::eComputeShader);

@@ -1,13 +1,12 @@
 #version 450
 // blur: 3x3 truncated Gaussian (DDAA paper section 3.1; spec ppaa.md "blur"; the CPU's
 // src/aa/blur_kernel.hpp). Weights from gpu::aaConstants (the CPU's blurWeights). Texel
-// reads only, so both sampling modes give the CPU's bytes.
-#define SSFX_TILE
-#define SSFX_TILE_NO_LUMA  // blur reads colours only
+// reads only, so both sampling modes give the CPU's bytes. Each tap is fetched and decoded
+// where it is used: no workgroup tile (its loads cost more than the fetches on lavapipe, and
+// blur has no luma to share).
 #include "ppaa.glsl"
 
 void main() {
-    loadTile();
     ivec2 p;
     if (!outputPixel(p)) return;
     const int x = p.x, y = p.y;

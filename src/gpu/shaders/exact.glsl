@@ -24,14 +24,14 @@ float nextFloat(float q, float dir) {
     return uintBitsToFloat((q > 0.0) == (dir > 0.0) ? bits + 1u : bits - 1u);
 }
 
-// |a - q b| (division a / b) or |a - q q| (square root of a; b unused), to compare
-// candidate results: exact up to the last subtraction's rounding, far below the difference
-// between neighbouring candidates.
-float residual(bool root, float a, float b, float q) {
+// a - q b (division a / b) or a - q q (square root of a; b unused), to compare candidate
+// results: exact up to the last subtraction's rounding, far below the difference between
+// neighbouring candidates.
+float signedResidual(bool root, float a, float b, float q) {
     float p, e;
     twoProduct(q, root ? q : b, p, e);
     precise float r = (a - p) - e;
-    return abs(r);
+    return r;
 }
 
 // The smaller of the gaps between q and its two neighbouring floats (q finite, non-zero).
@@ -41,24 +41,29 @@ float minGap(float q) {
     return min(abs(up), abs(down));
 }
 
-// The device's result q of a / b or sqrt(a), correctly rounded: kept when its residual r
-// shows it is (the usual case: one exact product), else moved to a neighbour while that
-// one has the smaller residual, at most `steps` times.
-float correctlyRounded(bool root, float a, float b, float q, float r, int steps) {
-    for (int i = 0; i < steps; ++i) {
-        const float up = nextFloat(q, 1.0), down = nextFloat(q, -1.0);
-        const float ru = residual(root, a, b, up), rd = residual(root, a, b, down);
-        if (ru < r && ru <= rd) {
-            q = up;
-            r = ru;
-        } else if (rd < r) {
-            q = down;
-            r = rd;
-        } else {
+// The device's result q of a / b or sqrt(a), correctly rounded. Pass 0 checks q: it is the
+// correctly rounded result when its residual is under boundFactor * scale * gap (the usual
+// case: one exact product). A lane that fails walks on, one neighbour per pass in the
+// direction the residual's sign gives, while the residual shrinks, at most `steps` ulp. One
+// residual per pass: drivers that run shaders as masked SIMD code (lavapipe) run a loop's
+// first pass for every lane, so the check is all an exact device pays.
+float correctlyRounded(bool root, float a, float b, float q, float boundFactor, int steps) {
+    float best = q, bestR = 0.0, dir = 0.0;
+    for (int i = 0; i <= steps; ++i) {
+        const float sr = signedResidual(root, a, b, q);
+        const float r = abs(sr);
+        if (i == 0) {
+            precise float bound = boundFactor * (root ? q : abs(b)) * minGap(q);
+            if (r < bound) break;
+            dir = (sr > 0.0) == (root || b > 0.0) ? 1.0 : -1.0;  // towards the exact result
+        } else if (!(r < bestR)) {
             break;
         }
+        best = q;
+        bestR = r;
+        q = nextFloat(q, dir);
     }
-    return q;
+    return best;
 }
 
 // a / b correctly rounded (IEEE), from an approximation q of it (within a few ulp). q is the
@@ -66,9 +71,7 @@ float correctlyRounded(bool root, float a, float b, float q, float r, int steps)
 // neighbours; tested against 0.49, a little under half).
 float crDivFrom(float a, float b, float q) {
     if (isinf(q) || isnan(q) || q == 0.0) return q;
-    const float r = residual(false, a, b, q);
-    precise float bound = 0.49 * abs(b) * minGap(q);
-    return r < bound ? q : correctlyRounded(false, a, b, q, r, 3);
+    return correctlyRounded(false, a, b, q, 0.49, 3);
 }
 // From the device's quotient: Vulkan allows 2.5 ulp, and compilers may turn a division into
 // a multiplication by the reciprocal.
@@ -82,9 +85,7 @@ float crDiv(float a, float b) {
 // 0.98 s gap).
 float crSqrtFrom(float x, float s) {
     if (!(x > 0.0) || isinf(x)) return s;
-    const float r = residual(true, x, 0.0, s);
-    precise float bound = 0.98 * s * minGap(s);
-    return r < bound ? s : correctlyRounded(true, x, 0.0, s, r, 2);
+    return correctlyRounded(true, x, 0.0, s, 0.98, 2);
 }
 // From the device's square root (Vulkan: "inherited from 1 / inversesqrt").
 float crSqrt(float x) {
@@ -109,25 +110,16 @@ uint toUnorm8(float v) {
 
 
 // k / 4080 correctly rounded to float32 for k = 0..4080 (ssfx::kSixteenthLevels; v / 255 is
-// level(16 v)), in integer arithmetic only: no table (on lavapipe a lookup at a per-pixel
-// index is a loop over the SIMD lanes), no division, no rounding by the device.
-// Since 2^28 = 255 * 0x101010 + 16, floor(k' 2^32 / 4080) = k' 0x101010 + floor(16 k' / 255);
-// k' = k 2^sh is normalised to k' >= 2^10, so that floor has 31 or 32 bits. Its low bit is
-// made sticky when the division leaves a remainder; it is then rounded half to even to 24
-// bits, and the float of that significand times a power of two is exact. (Checked against
-// the CPU's table for every k by GpuShaders.ExactHelpersMatchIeee.)
+// level(16 v)): no table (on lavapipe a lookup at a per-pixel index is a loop over the SIMD
+// lanes) and no division. 4080 = 2^20 (1 - 2^-16) / 257, so k / 4080 = w (1 + 2^-16 + 2^-32
+// + ...) with w = 257 k 2^-20, exact in float32 (257 k < 2^24). w + (w 2^-16 + w 2^-32) has
+// two roundings, both far below half an ulp of the result, and k / 4080 is never near a
+// rounding boundary (its bits past the 24th repeat an 8-bit pattern), so the sum rounds to
+// the correctly rounded quotient: checked for every k against the CPU's table by
+// GpuShaders.ExactHelpersMatchIeee (and offline with IEEE float32 arithmetic).
 float levelOver4080(uint k) {
-    if (k == 0u) return 0.0;
-    if (k >= 4080u) return 1.0;
-    const int sh = max(0, 10 - findMSB(k));
-    const uint kp = k << uint(sh);
-    const uint n = 16u * kp;
-    const uint q = (n * 0x8081u) >> 23u;  // floor(n / 255), exact for n < 65535
-    const uint m = (kp * 0x101010u + q) | (n != 255u * q ? 1u : 0u);
-    const int d = findMSB(m) - 23;  // 7 or 8 bits to drop
-    const uint low = m & ((1u << uint(d)) - 1u), tie = 1u << uint(d - 1);
-    const uint mant = (m >> uint(d)) + (low > tie || (low == tie && ((m >> uint(d)) & 1u) != 0u) ? 1u : 0u);
-    // mant <= 2^24 converts exactly; 2^(d - 32 - sh) lies in [2^-35, 2^-24]: an exact product.
-    precise float r = float(mant) * uintBitsToFloat(uint(127 + d - 32 - sh) << 23u);
+    precise float w = float(k * 257u) * (1.0 / 1048576.0);
+    precise float tail = w * (1.0 / 65536.0) + w * (1.0 / 4294967296.0);
+    precise float r = w + tail;
     return r;
 }

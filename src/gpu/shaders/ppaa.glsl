@@ -112,41 +112,30 @@ float edgeLuma(vec3 c) {
     precise float e = l + pc.chromaWeight * (hi - lo);
     return e;
 }
-// ---- the work group's tile: the texels of its pixels and a one-pixel border, decoded, with
-// their luma (the CPU's luma plane), in workgroup memory. Shaders that read the 3x3
-// neighbourhood define SSFX_TILE and call loadTile() first, in uniform control flow.
+// ---- the work group's tile: the luma of its pixels and a one-pixel border (the CPU's luma
+// plane), in workgroup memory, so that each texel's luma is computed once, not nine times.
+// Shaders that read the 3x3 luma neighbourhood define SSFX_TILE and call loadTile() first,
+// in uniform control flow. Colours are fetched where they are used: on lavapipe a
+// workgroup-memory load at a per-pixel address is a loop over the SIMD lanes, dearer than a
+// texel fetch and its exact decode.
+vec3 texelValue(int x, int y) { return fetchValue(x, y); }
 #ifdef SSFX_TILE
 const int kTile = SSFX_AA_GROUP + 2;
-shared vec3 tileRgb[kTile * kTile];
-#ifndef SSFX_TILE_NO_LUMA
 shared float tileLuma[kTile * kTile];
-#endif
 ivec2 tileOrigin() { return ivec2(gl_WorkGroupID.xy) * SSFX_AA_GROUP - 1; }
 void loadTile() {
     const ivec2 origin = tileOrigin();
-    for (int i = int(gl_LocalInvocationIndex); i < kTile * kTile; i += SSFX_AA_GROUP * SSFX_AA_GROUP) {
-        const vec3 c = fetchValue(origin.x + i % kTile, origin.y + i / kTile);
-        tileRgb[i] = c;
-#ifndef SSFX_TILE_NO_LUMA
-        tileLuma[i] = edgeLuma(c);
-#endif
-    }
+    for (int i = int(gl_LocalInvocationIndex); i < kTile * kTile; i += SSFX_AA_GROUP * SSFX_AA_GROUP)
+        tileLuma[i] = edgeLuma(fetchValue(origin.x + i % kTile, origin.y + i / kTile));
     barrier();
 }
-// Texel (x, y) of the group's pixels or their border, clamped to the image like a fetch
-// (the tile's border texels were fetched clamped).
-int tileIndex(int x, int y) {
+// The luma of texel (x, y) of the group's pixels or their border, clamped to the image like
+// a fetch (the tile's border texels were fetched clamped).
+float lumaAt(int x, int y) {
     const ivec2 q = ivec2(x, y) - tileOrigin();
-    return q.y * kTile + q.x;
+    return tileLuma[q.y * kTile + q.x];
 }
-vec3 texelValue(int x, int y) { return tileRgb[tileIndex(x, y)]; }
-#ifndef SSFX_TILE_NO_LUMA
-float lumaAt(int x, int y) { return tileLuma[tileIndex(x, y)]; }
 #else
-float lumaAt(int x, int y) { return edgeLuma(texelValue(x, y)); }  // (unused: no luma)
-#endif
-#else
-vec3 texelValue(int x, int y) { return fetchValue(x, y); }
 float lumaAt(int x, int y) { return edgeLuma(fetchValue(x, y)); }
 #endif
 
