@@ -11,10 +11,7 @@ void main() {
     if (!outputPixel(p)) return;
     const Luma3x3 n = neighbourhood(p.x, p.y);
     float range;
-    if (belowEdgeThreshold(n, range)) {
-        storeInput(p);
-        return;
-    }
-    const Diffusion d = diffusion(n, edgeSides(n));
-    store(p, diffuse(p.x, p.y, d, 0.0, 0.0), alphaAt(p.x, p.y));
+    vec3 colour = texelValue(p.x, p.y);  // the input pixel unless an edge is found
+    if (!belowEdgeThreshold(n, range)) colour = diffuse(p.x, p.y, diffusion(n, edgeSides(n)), 0.0, 0.0);
+    store(p, colour, alphaAt(p.x, p.y));
 }

@@ -12,16 +12,13 @@ const int kBatch = 3;  // samples per round: EDGE_STEP_LIST = [3, 3, 3, 3, 3]
 // The luma of the search read at c moved `move` (texture units) along the edge, plus texel
 // offset k along it, minus localAverage.
 float searchDelta(bool horizontal, float cu, float cv, float move, int k, float localAverage) {
-    vec3 c;
-    if (spec_sampling != 0) {
-        c = horizontal ? sampleAt(cu + move, cv, k, 0) : sampleAt(cu, cv + move, 0, k);
-    } else if (horizontal) {
-        precise float along = cu + move;
-        c = sampleModel(axisU(along), axisV(cv), k, 0);
-    } else {
-        precise float along = cv + move;
-        c = sampleModel(axisU(cu), axisV(along), 0, k);
-    }
+    // One read, its coordinates chosen by value: a branch with a read on each side would
+    // cost both reads on drivers that run shaders as masked SIMD code (lavapipe).
+    precise float movedU = cu + move;
+    precise float movedV = cv + move;
+    const float su = horizontal ? movedU : cu, sv = horizontal ? cv : movedV;
+    const int ox = horizontal ? k : 0, oy = horizontal ? 0 : k;
+    const vec3 c = spec_sampling != 0 ? sampleAt(su, sv, ox, oy) : sampleModel(axisU(su), axisV(sv), ox, oy);
     precise float delta = edgeLuma(c) - localAverage;
     return delta;
 }
@@ -97,19 +94,11 @@ float edgeSearchOffset(int x, int y, Luma3x3 n, EdgeSides s) {
     return correct ? signedOffset : 0.0;
 }
 
-void main() {
-    loadTile();
-    ivec2 p;
-    if (!outputPixel(p)) return;
-    const Luma3x3 n = neighbourhood(p.x, p.y);
-    float range;
-    if (belowEdgeThreshold(n, range)) {
-        storeInput(p);
-        return;
-    }
+// The colour of an edge pixel: the diffusion, moved by the edge search's offset.
+vec3 edgeColour(int x, int y, Luma3x3 n) {
     const EdgeSides s = edgeSides(n);
     Diffusion d = diffusion(n, s);
-    const float offset = edgeSearchOffset(p.x, p.y, n, s);
+    const float offset = edgeSearchOffset(x, y, n, s);
     // Combination (section 2.3): the search offset moves both diffusion reads, and a large
     // offset (near an edge's end) weakens the diffusion.
     precise float edgeStrength = minf(1.0, 2.0 * abs(offset));
@@ -117,5 +106,16 @@ void main() {
     d.strength = st;
     precise float offU = s.horizontal ? 0.0 : offset * pc.invW;
     precise float offV = s.horizontal ? offset * pc.invH : 0.0;
-    store(p, diffuse(p.x, p.y, d, offU, offV), alphaAt(p.x, p.y));
+    return diffuse(x, y, d, offU, offV);
+}
+
+void main() {
+    loadTile();
+    ivec2 p;
+    if (!outputPixel(p)) return;
+    const Luma3x3 n = neighbourhood(p.x, p.y);
+    float range;
+    vec3 colour = texelValue(p.x, p.y);  // the input pixel unless an edge is found
+    if (!belowEdgeThreshold(n, range)) colour = edgeColour(p.x, p.y, n);
+    store(p, colour, alphaAt(p.x, p.y));
 }

@@ -16,17 +16,9 @@ float walkLuma(bool horizontal, float wu, float wv, float localAverage) {
     return d;
 }
 
-void main() {
-    loadTile();
-    ivec2 p;
-    if (!outputPixel(p)) return;
-    const int x = p.x, y = p.y;
-    const Luma3x3 n = neighbourhood(x, y);
-    float range;
-    if (belowEdgeThreshold(n, range)) {
-        storeInput(p);
-        return;
-    }
+// The colour of an edge pixel: the edge search along it, then one read moved across it by
+// the larger of the search's offset and the sub-pixel term.
+vec3 edgeColour(int x, int y, Luma3x3 n, float range) {
     const EdgeSides s = edgeSides(n);
     const bool pair1 = abs(s.g1) >= abs(s.g2);  // steeper side; ties go to side 1
     const float lumaSteep = pair1 ? s.luma1 : s.luma2;
@@ -94,6 +86,16 @@ void main() {
     precise float shift = offset * lengthSign;
     precise float ru = u + shift;
     precise float rv = v + shift;
-    const vec3 c = s.horizontal ? sampleUV(u, rv) : sampleUV(ru, v);
-    store(p, c, alphaAt(x, y));
+    return sampleUV(s.horizontal ? u : ru, s.horizontal ? rv : v);  // one read (see ddaa2's searchDelta)
+}
+
+void main() {
+    loadTile();
+    ivec2 p;
+    if (!outputPixel(p)) return;
+    const Luma3x3 n = neighbourhood(p.x, p.y);
+    float range;
+    vec3 colour = texelValue(p.x, p.y);  // the input pixel unless an edge is found
+    if (!belowEdgeThreshold(n, range)) colour = edgeColour(p.x, p.y, n, range);
+    store(p, colour, alphaAt(p.x, p.y));
 }
