@@ -34,11 +34,13 @@ layout(push_constant, std430) uniform Push {
 float sixteenthLevel(uint k) { return levelOver4080(k); }
 float unormLevel(uint v) { return levelOver4080(16u * v); }
 
-// The 8-bit texel (x, y), clamped to the image (clamp-to-edge addressing).
-uvec3 texel8(int x, int y) {
-    const vec4 t = texelFetch(src, ivec2(clamp(x, 0, pc.width - 1), clamp(y, 0, pc.height - 1)), 0);
-    return uvec3(round(t.rgb * 255.0));
+// Texel (x, y) as fetched, clamped to the image (clamp-to-edge addressing). (Every fetch
+// goes through here, so a compiler can merge two fetches of one texel.)
+vec4 texelRaw(int x, int y) {
+    return texelFetch(src, ivec2(clamp(x, 0, pc.width - 1), clamp(y, 0, pc.height - 1)), 0);
 }
+// The 8-bit texel (x, y).
+uvec3 texel8(int x, int y) { return uvec3(round(texelRaw(x, y).rgb * 255.0)); }
 vec3 fetchValue(int x, int y) {
     const uvec3 t = texel8(x, y);
     return vec3(unormLevel(t.r), unormLevel(t.g), unormLevel(t.b));
@@ -153,9 +155,7 @@ void store(ivec2 p, vec3 c, uint alpha) {
 void storeInput(ivec2 p) {
     imageStore(dst, p, texelFetch(src, p, 0));
 }
-uint alphaAt(int x, int y) {
-    return uint(round(texelFetch(src, ivec2(x, y), 0).a * 255.0));
-}
+uint alphaAt(int x, int y) { return uint(round(texelRaw(x, y).a * 255.0)); }
 
 // ---- the 3x3 luma neighbourhood, early exit, edge sides (src/aa/ppaa_common.hpp) -----------
 
