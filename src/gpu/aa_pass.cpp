@@ -31,7 +31,7 @@ static_assert(sizeof(AaConstants) == 4 * std::size(kOffsets), "AaConstants: no p
 static_assert(sizeof(AaConstants) <= 128, "AaConstants: within the guaranteed push-constant size");
 
 // The specialization constants: constant_id i at byte 4 i.
-#define SSFX_AA_SPEC_ENTRY(id, name) vk::SpecializationMapEntry(id, offsetof(AaSpecialization, name), 4),
+#define SSFX_AA_SPEC_ENTRY(id, name, value) vk::SpecializationMapEntry(id, offsetof(AaSpecialization, name), 4),
 const vk::SpecializationMapEntry kSpecEntries[] = {SSFX_AA_SPECIALIZATION(SSFX_AA_SPEC_ENTRY)};
 #undef SSFX_AA_SPEC_ENTRY
 static_assert(sizeof(AaSpecialization) == 4 * std::size(kSpecEntries), "AaSpecialization: no padding");
@@ -172,8 +172,15 @@ const std::vector<vkx::BindingSpec> kBindings{
     {vk::DescriptorType::eCombinedImageSampler},  // SSFX_AA_BINDING_INPUT
     {vk::DescriptorType::eStorageImage},          // SSFX_AA_BINDING_OUTPUT
     {vk::DescriptorType::eStorageBuffer},         // SSFX_AA_BINDING_TABLES
+    {vk::DescriptorType::eStorageBuffer},         // SSFX_AA_BINDING_EDGES (the two-pass methods)
 };
-static_assert(SSFX_AA_BINDING_INPUT == 0 && SSFX_AA_BINDING_OUTPUT == 1 && SSFX_AA_BINDING_TABLES == 2);
+static_assert(SSFX_AA_BINDING_INPUT == 0 && SSFX_AA_BINDING_OUTPUT == 1 && SSFX_AA_BINDING_TABLES == 2 &&
+              SSFX_AA_BINDING_EDGES == 3);
+
+// The methods whose shaders have an edge test and run as two passes (edge_list.glsl).
+bool hasEdgePass(std::string_view id) {
+    return id == "fxaa3c" || id == "fxaa3d" || id == "ddaa1" || id == "ddaa2" || id == "ddaa2p";
+}
 
 constexpr vk::Format kOutputFormat = vk::Format::eR8G8B8A8Unorm;
 
@@ -205,22 +212,61 @@ struct AaPass::Impl {
     vk::raii::Sampler sampler{nullptr};
     vkx::Buffer tables;
     std::unique_ptr<vkx::ComputePipeline> pipeline, resolve;  // resolve: ddaa2p's ssaax2
-    vkx::Image scratch;                                       // ddaa2p: ddaa2's 2x output
+    // The methods with an edge test: `pipeline` classifies (SSFX_AA_STAGE_CLASSIFY), `edgePass`
+    // computes the listed edge pixels (edge_list.glsl); `edges` holds the list.
+    std::unique_ptr<vkx::ComputePipeline> edgePass;
+    vkx::Buffer edges;
+    vk::DeviceSize edgeCapacity = 0;  // pixels the list can hold
+    vkx::Image scratch;               // ddaa2p: ddaa2's 2x output
     vk::raii::ImageView scratchView{nullptr};
     std::unique_ptr<vkx::GpuTimer> timer;
     double lastMs = 0;
 
+    // Records pipeline p (and, for an edge-test method, the edge pass after it) from `in` to `out`.
     void dispatch(const vkx::ComputePipeline& p, const vk::raii::CommandBuffer& cmd, vk::ImageView in,
-                  vk::ImageLayout inLayout, vk::ImageView out, const AaConstants& c) const {
+                  vk::ImageLayout inLayout, vk::ImageView out, const AaConstants& c) {
+        const bool twoPass = &p == pipeline.get() && edgePass;
+        if (twoPass) ensureEdges(vk::DeviceSize(c.outWidth) * vk::DeviceSize(c.outHeight));
         const vk::DescriptorImageInfo inInfo(*sampler, in, inLayout);
         const vk::DescriptorImageInfo outInfo(nullptr, out, vk::ImageLayout::eGeneral);
         const vk::DescriptorBufferInfo tableInfo(*tables.buffer, 0, VK_WHOLE_SIZE);
+        const vk::DescriptorBufferInfo edgeInfo(twoPass ? *edges.buffer : *tables.buffer, 0, VK_WHOLE_SIZE);
         const vk::WriteDescriptorSet writes[] = {
             {{}, SSFX_AA_BINDING_INPUT, 0, vk::DescriptorType::eCombinedImageSampler, inInfo},
             {{}, SSFX_AA_BINDING_OUTPUT, 0, vk::DescriptorType::eStorageImage, outInfo},
             {{}, SSFX_AA_BINDING_TABLES, 0, vk::DescriptorType::eStorageBuffer, {}, tableInfo},
+            {{}, SSFX_AA_BINDING_EDGES, 0, vk::DescriptorType::eStorageBuffer, {}, edgeInfo},
         };
-        p.dispatchPushed(cmd, writes, &c, groups(std::uint32_t(c.outWidth)), groups(std::uint32_t(c.outHeight)));
+        const std::span<const vk::WriteDescriptorSet> used(writes, twoPass ? 4 : 3);
+        if (!twoPass) {
+            p.dispatchPushed(cmd, used, &c, groups(std::uint32_t(c.outWidth)), groups(std::uint32_t(c.outHeight)));
+            return;
+        }
+        using S = vk::PipelineStageFlagBits;
+        using A = vk::AccessFlagBits;
+        // The list's header: no groups (y = z = 1), no pixels; after an earlier recording's
+        // reads of it (an execution dependency is enough before a write).
+        cmd.pipelineBarrier(S::eComputeShader | S::eDrawIndirect, S::eTransfer, {}, {}, {}, {});
+        const std::uint32_t header[4] = {0, 1, 1, 0};
+        cmd.updateBuffer<std::uint32_t>(*edges.buffer, 0, header);
+        const vk::BufferMemoryBarrier cleared(A::eTransferWrite, A::eShaderRead | A::eShaderWrite,
+                                              VK_QUEUE_FAMILY_IGNORED, VK_QUEUE_FAMILY_IGNORED, *edges.buffer, 0,
+                                              VK_WHOLE_SIZE);
+        cmd.pipelineBarrier(S::eTransfer, S::eComputeShader, {}, {}, cleared, {});
+        p.dispatchPushed(cmd, used, &c, groups(std::uint32_t(c.outWidth)), groups(std::uint32_t(c.outHeight)));
+        // The list and the unchanged pixels, before the indirect dispatch and the edge pixels.
+        const vk::MemoryBarrier listed(A::eShaderWrite, A::eIndirectCommandRead | A::eShaderRead | A::eShaderWrite);
+        cmd.pipelineBarrier(S::eComputeShader, S::eDrawIndirect | S::eComputeShader, {}, listed, {}, {});
+        edgePass->dispatchPushedIndirect(cmd, used, &c, *edges.buffer, 0);
+    }
+
+    void ensureEdges(vk::DeviceSize pixels) {
+        if (*edges.buffer && edgeCapacity >= pixels) return;
+        edges = ctx->createBuffer(16 + 4 * pixels,
+                                  vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eIndirectBuffer |
+                                      vk::BufferUsageFlagBits::eTransferDst,
+                                  false);
+        edgeCapacity = pixels;
     }
 
     // run()'s images and staging buffers, kept while the size stays the same (a sequence of
@@ -304,9 +350,20 @@ AaPass::AaPass(std::shared_ptr<vkx::Context> ctx, std::string_view method, const
         for (int d = -8; d <= 7; ++d) t.push_back(aa::mitchell((float(2 + d) + 0.5f - 2.0f) / 4.0f, mp.B, mp.C));
         static_assert(SSFX_AA_MITCHELL4_COUNT == 16);
         m.tables = c.uploadBuffer(t.data(), t.size() * sizeof(float), vk::BufferUsageFlagBits::eStorageBuffer);
-        const vk::SpecializationInfo specInfo = detail::specializationInfo(spec);
+        detail::AaSpecialization first = spec;
+        if (hasEdgePass(m.method->id)) first.stage = SSFX_AA_STAGE_CLASSIFY;
+        const vk::SpecializationInfo specInfo = detail::specializationInfo(first);
         m.pipeline = std::make_unique<vkx::ComputePipeline>(c, shaderFor(m.method->id), kBindings,
                                                             std::uint32_t(sizeof(AaConstants)), &specInfo, true);
+        if (hasEdgePass(m.method->id)) {
+            detail::AaSpecialization second = spec;
+            second.stage = SSFX_AA_STAGE_EDGES;
+            second.groupX = SSFX_AA_EDGE_GROUP;
+            second.groupY = 1;
+            const vk::SpecializationInfo edgeInfo = detail::specializationInfo(second);
+            m.edgePass = std::make_unique<vkx::ComputePipeline>(c, shaderFor(m.method->id), kBindings,
+                                                                std::uint32_t(sizeof(AaConstants)), &edgeInfo, true);
+        }
         if (m.method->id == "ddaa2p") {
             const detail::AaSpecialization resolveSpec =
                 detail::aaSpecialization("ssaax2", aa::Ssaax2Params{}, sampling);

@@ -89,6 +89,16 @@ void ComputePipeline::dispatchPushed(const vk::raii::CommandBuffer& cmd, std::sp
     cmd.dispatch(groupsX, groupsY, groupsZ);
 }
 
+void ComputePipeline::dispatchPushedIndirect(const vk::raii::CommandBuffer& cmd,
+                                             std::span<const vk::WriteDescriptorSet> writes, const void* push,
+                                             vk::Buffer args, vk::DeviceSize offset) const {
+    cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *pipeline);
+    cmd.pushDescriptorSetKHR(vk::PipelineBindPoint::eCompute, *layout, 0,
+                             vk::ArrayProxy<const vk::WriteDescriptorSet>(std::uint32_t(writes.size()), writes.data()));
+    pushConstants(cmd, push);
+    cmd.dispatchIndirect(args, offset);
+}
+
 void ComputePipeline::pushConstants(const vk::raii::CommandBuffer& cmd, const void* push) const {
     if (!pushBytes_) return;
     if (!push) throw Error("compute dispatch without its push constants");

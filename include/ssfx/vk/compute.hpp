@@ -70,6 +70,10 @@ public:
     void dispatchPushed(const vk::raii::CommandBuffer& cmd, std::span<const vk::WriteDescriptorSet> writes,
                         const void* push, std::uint32_t groupsX, std::uint32_t groupsY = 1,
                         std::uint32_t groupsZ = 1) const;
+    //! As dispatchPushed, with the group counts read by the device from `args` at `offset`
+    //! (a VkDispatchIndirectCommand; the buffer needs INDIRECT_BUFFER usage).
+    void dispatchPushedIndirect(const vk::raii::CommandBuffer& cmd, std::span<const vk::WriteDescriptorSet> writes,
+                                const void* push, vk::Buffer args, vk::DeviceSize offset = 0) const;
 
     vk::raii::DescriptorSetLayout setLayout{nullptr};
     vk::raii::PipelineLayout layout{nullptr};

@@ -6,6 +6,9 @@
 #ifndef SSFX_GPU_AA_CONSTANTS_H
 #define SSFX_GPU_AA_CONSTANTS_H
 
+// Work-group size of the per-pixel passes: 16 x 16 pixels (its tile: 18 x 18 texels, ppaa.glsl).
+#define SSFX_AA_GROUP 16
+
 // X(type, name): the members in order.
 #define SSFX_AA_CONSTANTS(X)                                                               \
     X(int, width) /* input size in pixels */                                               \
@@ -32,15 +35,28 @@
     X(float, ridgeFactor)                                                                  \
     X(int, searchRounds) /* ddaa2 */
 
-// The specialization constants, fixed when a pass's pipeline is made: X(constant_id, name),
-// each a 32-bit int. The choices that select code live here, not in the push constants:
-// the device compiles only the branch taken, where a branch on a push constant costs both
-// sides on drivers that run shaders as masked SIMD code (lavapipe runs every side of every
-// branch). GLSL sees them as spec_<name>.
-#define SSFX_AA_SPECIALIZATION(X)                                                             \
-    X(0, sampling)           /* 0: the GPU sampling model (exact); 1: the device's sampler */ \
-    X(1, chroma)             /* 1: chromaWeight != 0 (edgeLuma adds the chroma term) */       \
-    X(2, diagonalsAtCentres) /* fxaa3c: diagonalOffset == 1 (reads at pixel centres) */
+// The specialization constants, fixed when a pass's pipeline is made: X(constant_id, name,
+// default), each a 32-bit int. The choices that select code live here, not in the push
+// constants: the device compiles only the branch taken, where a branch on a push constant
+// costs both sides on drivers that run shaders as masked SIMD code (lavapipe runs every side
+// of every branch). GLSL sees them as spec_<name>.
+#define SSFX_AA_SPECIALIZATION(X)                                                                   \
+    X(0, sampling, 0)           /* 0: the GPU sampling model (exact); 1: the device's sampler */    \
+    X(1, chroma, 0)             /* 1: chromaWeight != 0 (edgeLuma adds the chroma term) */          \
+    X(2, diagonalsAtCentres, 0) /* fxaa3c: diagonalOffset == 1 (reads at pixel centres) */          \
+    X(3, stage, 0)              /* edge-list methods: SSFX_AA_STAGE_CLASSIFY or _EDGES; others 0 */ \
+    X(4, groupX, SSFX_AA_GROUP) /* work-group size: SSFX_AA_GROUP^2, or SSFX_AA_EDGE_GROUP x 1 */   \
+    X(5, groupY, SSFX_AA_GROUP)
+
+// The two passes of the methods with an edge test (fxaa3c, fxaa3d, ddaa1, ddaa2; ppaa.glsl):
+// the first tests every pixel, writes the pixels that stay as they are and appends the edge
+// pixels to a list; the second, an indirect dispatch over the list, computes the edge pixels.
+#define SSFX_AA_STAGE_CLASSIFY 1
+#define SSFX_AA_STAGE_EDGES 2
+#define SSFX_AA_EDGE_GROUP 64  // edge pass: invocations per work group (1-D)
+#define SSFX_AA_EDGE_MAX_GROUPS \
+    65535u  // edge pass: at most this many groups (Vulkan's minimum
+            // maxComputeWorkGroupCount); each invocation loops
 
 #define SSFX_AA_MEMBER(type, name) type name;
 
@@ -50,7 +66,7 @@ namespace ssfx::gpu::detail {
 struct AaConstants {
     SSFX_AA_CONSTANTS(SSFX_AA_MEMBER)
 };
-#define SSFX_AA_SPEC_MEMBER(id, name) std::int32_t name;
+#define SSFX_AA_SPEC_MEMBER(id, name, value) std::int32_t name = value;
 struct AaSpecialization {
     SSFX_AA_SPECIALIZATION(SSFX_AA_SPEC_MEMBER)
 };
@@ -60,7 +76,7 @@ struct AaSpecialization {
 struct AaConstants {
     SSFX_AA_CONSTANTS(SSFX_AA_MEMBER)
 };
-#define SSFX_AA_SPEC_DECL(id, name) layout(constant_id = id) const int spec_##name = 0;
+#define SSFX_AA_SPEC_DECL(id, name, value) layout(constant_id = id) const int spec_##name = value;
 SSFX_AA_SPECIALIZATION(SSFX_AA_SPEC_DECL)
 #undef SSFX_AA_SPEC_DECL
 #endif
@@ -69,13 +85,11 @@ SSFX_AA_SPECIALIZATION(SSFX_AA_SPEC_DECL)
 #define SSFX_AA_BINDING_INPUT 0   // combined image sampler: the input (linear, clamp to edge)
 #define SSFX_AA_BINDING_OUTPUT 1  // storage image rgba8: the output
 #define SSFX_AA_BINDING_TABLES 2  // storage buffer: the tables below
+#define SSFX_AA_BINDING_EDGES 3   // storage buffer: the edge list (the two-pass methods)
 
 // The tables buffer (floats): the 16 Mitchell weights of the x4 resolve per axis (read at
 // indices that are the same for every invocation; the model's levels k / 4080 are computed,
 // exact.glsl's levelOver4080, as a per-pixel table lookup is slow on SIMD CPU drivers).
 #define SSFX_AA_MITCHELL4_COUNT 16
-
-// Work-group size of every pass: 16 x 16 pixels (its tile: 18 x 18 texels, ppaa.glsl).
-#define SSFX_AA_GROUP 16
 
 #endif

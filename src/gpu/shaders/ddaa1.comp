@@ -5,13 +5,10 @@
 #include "ppaa.glsl"
 #include "ddaa.glsl"
 
-void main() {
-    loadTile();
-    ivec2 p;
-    if (!outputPixel(p)) return;
-    const Luma3x3 n = neighbourhood(p.x, p.y);
-    float range;
-    vec3 colour = texelValue(p.x, p.y);  // the input pixel unless an edge is found
-    if (!belowEdgeThreshold(n, range)) colour = diffuse(p.x, p.y, diffusion(n, edgeSides(n)), 0.0, 0.0);
-    store(p, colour, alphaAt(p.x, p.y));
+bool edgeAt(int x, int y) { return edgeAt3x3(x, y); }
+vec3 edgeColour(int x, int y) {
+    const Luma3x3 n = neighbourhood(x, y);
+    return diffuse(x, y, diffusion(n, edgeSides(n)), 0.0, 0.0);
 }
+
+#include "edge_list.glsl"

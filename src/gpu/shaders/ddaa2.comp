@@ -95,7 +95,9 @@ float edgeSearchOffset(int x, int y, Luma3x3 n, EdgeSides s) {
 }
 
 // The colour of an edge pixel: the diffusion, moved by the edge search's offset.
-vec3 edgeColour(int x, int y, Luma3x3 n) {
+bool edgeAt(int x, int y) { return edgeAt3x3(x, y); }
+vec3 edgeColour(int x, int y) {
+    const Luma3x3 n = neighbourhood(x, y);
     const EdgeSides s = edgeSides(n);
     Diffusion d = diffusion(n, s);
     const float offset = edgeSearchOffset(x, y, n, s);
@@ -109,13 +111,4 @@ vec3 edgeColour(int x, int y, Luma3x3 n) {
     return diffuse(x, y, d, offU, offV);
 }
 
-void main() {
-    loadTile();
-    ivec2 p;
-    if (!outputPixel(p)) return;
-    const Luma3x3 n = neighbourhood(p.x, p.y);
-    float range;
-    vec3 colour = texelValue(p.x, p.y);  // the input pixel unless an edge is found
-    if (!belowEdgeThreshold(n, range)) colour = edgeColour(p.x, p.y, n);
-    store(p, colour, alphaAt(p.x, p.y));
-}
+#include "edge_list.glsl"

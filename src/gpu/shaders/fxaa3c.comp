@@ -16,18 +16,41 @@ float diagonal(int x, int y, int sx, int sy) {
 // clamp(q, -2, 2) with NaN giving -2, as the CPU's fmin(fmax(q, -2), 2).
 float clampTwo(float q) { return isnan(q) ? -2.0 : clamp(q, -2.0, 2.0); }
 
-// The colour of an edge pixel: two short and two long taps along the direction (FXAA
-// 3.11 console); `unchanged` where the direction is 0.
-vec3 edgeColour(int x, int y, float lumaNW, float lumaSW, float lumaSE, float lumaNE, float lumaMin, float lumaMax,
-                vec3 unchanged) {
-    precise float swMinusNe = lumaSW - lumaNE;
-    precise float seMinusNw = lumaSE - lumaNW;
+// The diagonal lumas and the early-exit test (FXAA 3.11 console).
+struct Lumas {
+    float NW, SW, SE, NE;
+    float lumaMin, lumaMax;
+    bool edge;
+};
+Lumas lumas(int x, int y) {
+    Lumas l;
+    l.NW = diagonal(x, y, -1, -1);
+    l.SW = diagonal(x, y, -1, +1);
+    l.SE = diagonal(x, y, +1, +1);
+    precise float ne = diagonal(x, y, +1, -1) + 1.0 / 384.0;  // FXAA: keeps dir from being 0
+    l.NE = ne;
+    const float lumaM = lumaAt(x, y);
+    l.lumaMax = maxf(maxf(l.NE, l.SE), maxf(l.NW, l.SW));
+    l.lumaMin = minf(minf(l.NE, l.SE), minf(l.NW, l.SW));
+    precise float contrast = maxf(l.lumaMax, lumaM) - minf(l.lumaMin, lumaM);
+    precise float relative = l.lumaMax * pc.edgeThreshold;
+    l.edge = !(contrast < maxf(pc.edgeThresholdMin, relative));
+    return l;
+}
+
+bool edgeAt(int x, int y) { return lumas(x, y).edge; }
+
+// The colour of an edge pixel: two short and two long taps along the direction.
+vec3 edgeColour(int x, int y) {
+    const Lumas l = lumas(x, y);
+    precise float swMinusNe = l.SW - l.NE;
+    precise float seMinusNw = l.SE - l.NW;
     precise float dirX = swMinusNe + seMinusNw;
     precise float dirY = swMinusNe - seMinusNw;
     precise float len2 = dirX * dirX + dirY * dirY;
     const float len = crSqrt(len2);
     // No direction at all (exact float ties only): leave the pixel, as the CPU does.
-    if (!(len > 0.0)) return unchanged;
+    if (!(len > 0.0)) return texelValue(x, y);
     const float u = centreU(x), v = centreV(y);
     const float d1x = crDiv(dirX, len), d1y = crDiv(dirY, len);
     const float hs = 0.5;  // first pair of taps at +-0.5 px along the edge
@@ -47,25 +70,7 @@ vec3 edgeColour(int x, int y, float lumaNW, float lumaSW, float lumaSE, float lu
     precise vec3 B = (n2 + p2) * 0.25 + A * 0.25;
     const float lumaB = edgeLuma(B);
     precise vec3 halfA = A * 0.5;
-    return (lumaB < lumaMin || lumaB > lumaMax) ? halfA : B;
+    return (lumaB < l.lumaMin || lumaB > l.lumaMax) ? halfA : B;
 }
 
-void main() {
-    loadTile();
-    ivec2 p;
-    if (!outputPixel(p)) return;
-    const int x = p.x, y = p.y;
-    const float lumaNW = diagonal(x, y, -1, -1), lumaSW = diagonal(x, y, -1, +1);
-    const float lumaSE = diagonal(x, y, +1, +1);
-    precise float lumaNE = diagonal(x, y, +1, -1) + 1.0 / 384.0;  // FXAA: keeps dir from being 0
-    const float lumaM = lumaAt(x, y);
-    const float lumaMax = maxf(maxf(lumaNE, lumaSE), maxf(lumaNW, lumaSW));
-    const float lumaMin = minf(minf(lumaNE, lumaSE), minf(lumaNW, lumaSW));
-    precise float contrast = maxf(lumaMax, lumaM) - minf(lumaMin, lumaM);
-    precise float relative = lumaMax * pc.edgeThreshold;
-    // The input pixel unless the contrast says edge (spec section 1's early exit).
-    vec3 colour = texelValue(x, y);
-    if (!(contrast < maxf(pc.edgeThresholdMin, relative)))
-        colour = edgeColour(x, y, lumaNW, lumaSW, lumaSE, lumaNE, lumaMin, lumaMax, colour);
-    store(p, colour, alphaAt(x, y));
-}
+#include "edge_list.glsl"

@@ -18,7 +18,11 @@ float walkLuma(bool horizontal, float wu, float wv, float localAverage) {
 
 // The colour of an edge pixel: the edge search along it, then one read moved across it by
 // the larger of the search's offset and the sub-pixel term.
-vec3 edgeColour(int x, int y, Luma3x3 n, float range) {
+bool edgeAt(int x, int y) { return edgeAt3x3(x, y); }
+vec3 edgeColour(int x, int y) {
+    const Luma3x3 n = neighbourhood(x, y);
+    float range;
+    belowEdgeThreshold(n, range);
     const EdgeSides s = edgeSides(n);
     const bool pair1 = abs(s.g1) >= abs(s.g2);  // steeper side; ties go to side 1
     const float lumaSteep = pair1 ? s.luma1 : s.luma2;
@@ -89,13 +93,4 @@ vec3 edgeColour(int x, int y, Luma3x3 n, float range) {
     return sampleUV(s.horizontal ? u : ru, s.horizontal ? rv : v);  // one read (see ddaa2's searchDelta)
 }
 
-void main() {
-    loadTile();
-    ivec2 p;
-    if (!outputPixel(p)) return;
-    const Luma3x3 n = neighbourhood(p.x, p.y);
-    float range;
-    vec3 colour = texelValue(p.x, p.y);  // the input pixel unless an edge is found
-    if (!belowEdgeThreshold(n, range)) colour = edgeColour(p.x, p.y, n, range);
-    store(p, colour, alphaAt(p.x, p.y));
-}
+#include "edge_list.glsl"

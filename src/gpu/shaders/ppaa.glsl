@@ -14,8 +14,8 @@
 #extension GL_GOOGLE_include_directive : require
 #include "aa_constants.h"
 
-layout(local_size_x = SSFX_AA_GROUP, local_size_y = SSFX_AA_GROUP) in;
-
+// The work-group size is specialized (aa_constants.h: groupX, groupY).
+layout(local_size_x_id = 4, local_size_y_id = 5) in;
 
 layout(set = 0, binding = SSFX_AA_BINDING_INPUT) uniform sampler2D src;
 layout(set = 0, binding = SSFX_AA_BINDING_OUTPUT, rgba8) uniform writeonly image2D dst;
@@ -132,8 +132,10 @@ void loadTile() {
     barrier();
 }
 // The luma of texel (x, y) of the group's pixels or their border, clamped to the image like
-// a fetch (the tile's border texels were fetched clamped).
+// a fetch (the tile's border texels were fetched clamped). The edge pass's pixels are
+// scattered: it computes the luma from the texel, the same value.
 float lumaAt(int x, int y) {
+    if (spec_stage == SSFX_AA_STAGE_EDGES) return edgeLuma(fetchValue(x, y));
     const ivec2 q = ivec2(x, y) - tileOrigin();
     return tileLuma[q.y * kTile + q.x];
 }
@@ -188,6 +190,12 @@ bool belowEdgeThreshold(Luma3x3 n, out float range) {
     precise float t = lumaMax * pc.edgeThreshold;
     range = r;
     return r < maxf(pc.edgeThresholdMin, t);
+}
+
+// The early-exit test of the methods on the 3x3 neighbourhood: true for an edge pixel.
+bool edgeAt3x3(int x, int y) {
+    float range;
+    return !belowEdgeThreshold(neighbourhood(x, y), range);
 }
 
 struct EdgeSides {
