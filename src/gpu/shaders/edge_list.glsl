@@ -39,5 +39,5 @@ void main() {
     if (edgeAt(p.x, p.y))
         appendEdge(p);
     else
-        store(p, texelValue(p.x, p.y), alphaAt(p.x, p.y));
+        storeInput(p);  // the texel as fetched, as noaa stores it
 }
