@@ -3,7 +3,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cstddef>
+#include <cstdlib>
 #include <cstring>
 #include <iterator>
 
@@ -217,7 +219,12 @@ struct AaPass::Impl {
     std::unique_ptr<vkx::ComputePipeline> edgePass;
     vkx::Buffer edges;
     vk::DeviceSize edgeCapacity = 0;  // pixels the list can hold
-    vkx::Image scratch;               // ddaa2p: ddaa2's 2x output
+    // Larger images run the method in one pass (stage 0, made when first needed): the list
+    // must fit in one storage-buffer descriptor (maxStorageBufferRange).
+    vk::DeviceSize maxListPixels = 0;
+    std::unique_ptr<vkx::ComputePipeline> onePass;
+    detail::AaSpecialization spec{};
+    vkx::Image scratch;  // ddaa2p: ddaa2's 2x output
     vk::raii::ImageView scratchView{nullptr};
     std::unique_ptr<vkx::GpuTimer> timer;
     double lastMs = 0;
@@ -225,8 +232,19 @@ struct AaPass::Impl {
     // Records pipeline p (and, for an edge-test method, the edge pass after it) from `in` to `out`.
     void dispatch(const vkx::ComputePipeline& p, const vk::raii::CommandBuffer& cmd, vk::ImageView in,
                   vk::ImageLayout inLayout, vk::ImageView out, const AaConstants& c) {
-        const bool twoPass = &p == pipeline.get() && edgePass;
-        if (twoPass) ensureEdges(vk::DeviceSize(c.outWidth) * vk::DeviceSize(c.outHeight));
+        const vk::DeviceSize pixels = vk::DeviceSize(c.outWidth) * vk::DeviceSize(c.outHeight);
+        const bool edgeMethod = &p == pipeline.get() && edgePass;
+        const bool twoPass = edgeMethod && pixels <= maxListPixels;
+        if (edgeMethod && !twoPass) {
+            if (!onePass) {
+                const vk::SpecializationInfo info = detail::specializationInfo(spec);  // stage 0
+                onePass = std::make_unique<vkx::ComputePipeline>(*ctx, shaderFor(method->id), kBindings,
+                                                                 std::uint32_t(sizeof(AaConstants)), &info, true);
+            }
+            dispatch(*onePass, cmd, in, inLayout, out, c);
+            return;
+        }
+        if (twoPass) ensureEdges(pixels);
         const vk::DescriptorImageInfo inInfo(*sampler, in, inLayout);
         const vk::DescriptorImageInfo outInfo(nullptr, out, vk::ImageLayout::eGeneral);
         const vk::DescriptorBufferInfo tableInfo(*tables.buffer, 0, VK_WHOLE_SIZE);
@@ -237,7 +255,9 @@ struct AaPass::Impl {
             {{}, SSFX_AA_BINDING_TABLES, 0, vk::DescriptorType::eStorageBuffer, {}, tableInfo},
             {{}, SSFX_AA_BINDING_EDGES, 0, vk::DescriptorType::eStorageBuffer, {}, edgeInfo},
         };
-        const std::span<const vk::WriteDescriptorSet> used(writes, twoPass ? 4 : 3);
+        // (The edge methods' shaders declare the list in every stage: stage 0 gets a stand-in.)
+        const bool listBinding = edgePass && &p != resolve.get();
+        const std::span<const vk::WriteDescriptorSet> used(writes, listBinding ? 4 : 3);
         if (!twoPass) {
             p.dispatchPushed(cmd, used, &c, groups(std::uint32_t(c.outWidth)), groups(std::uint32_t(c.outHeight)));
             return;
@@ -356,6 +376,12 @@ AaPass::AaPass(std::shared_ptr<vkx::Context> ctx, std::string_view method, const
         m.pipeline = std::make_unique<vkx::ComputePipeline>(c, shaderFor(m.method->id), kBindings,
                                                             std::uint32_t(sizeof(AaConstants)), &specInfo, true);
         if (hasEdgePass(m.method->id)) {
+            m.spec = spec;
+            const vk::DeviceSize range = c.physical.getProperties().limits.maxStorageBufferRange;
+            m.maxListPixels = (range - 16) / 4;
+            // A smaller limit for tests of the one-pass path (docs/gpu.md).
+            if (const char* v = std::getenv("SSFX_GPU_EDGE_LIST_MAX_PIXELS"))
+                m.maxListPixels = std::min<vk::DeviceSize>(m.maxListPixels, std::strtoull(v, nullptr, 10));
             detail::AaSpecialization second = spec;
             second.stage = SSFX_AA_STAGE_EDGES;
             second.groupX = SSFX_AA_EDGE_GROUP;

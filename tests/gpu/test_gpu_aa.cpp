@@ -133,6 +133,28 @@ TEST_P(GpuModelParity, ReferenceDrawingsGiveTheCpuBytes) {
     expectNoValidationMessages();
 }
 
+// The edge-test methods list their edge pixels for a second pass; an image with more pixels
+// than a storage buffer's list could hold runs them in one pass instead. A lowered limit
+// (SSFX_GPU_EDGE_LIST_MAX_PIXELS, read when a pass is made) sends these images down that
+// path, and a small one down the list's: both must give the CPU's bytes.
+TEST(GpuModelParityOnePass, ImagesOverTheListLimitGiveTheCpuBytes) {
+    REQUIRE_DEVICE();
+    ASSERT_EQ(setenv("SSFX_GPU_EDGE_LIST_MAX_PIXELS", "1000", 1), 0);
+    for (const char* id : {"fxaa3c", "fxaa3d", "ddaa1", "ddaa2", "ddaa2p"}) {
+        const MethodInfo& m = methodById(id);
+        gpu::AaPass pass(context(), m.id);
+        unsigned seed = 40;
+        for (const Case& c : {Case{"random 64x48, one pass", 64, 48}, Case{"random 30x20, two passes", 30, 20}}) {
+            const ImageRgba8 in = inputFor(c, m.inputScale, seed++);
+            const Diff d = compare(pass.run(in.view()), m.run(in.view(), {}, Exec{}));
+            EXPECT_EQ(d.pixels, 0) << m.id << " on " << c.name << ": " << d.pixels << " pixels differ, by up to "
+                                   << d.largest;
+        }
+    }
+    unsetenv("SSFX_GPU_EDGE_LIST_MAX_PIXELS");
+    expectNoValidationMessages();
+}
+
 // The shaders write the paper's decimal constants as GLSL literals, which glslang reads
 // in double and rounds to float; C++ rounds `0.299f` once. The two agree for these values.
 TEST(GpuShaders, DecimalLiteralsRoundTheSameInGlslAndCpp) {

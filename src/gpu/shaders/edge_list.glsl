@@ -8,7 +8,8 @@
 // whole edge computation, search loops included, for every group of lanes that holds one
 // edge pixel, and about 40 % of 8-pixel runs hold one; from the list every lane is an edge
 // pixel. The list's order depends on the atomics, the output does not: each pixel is
-// computed on its own.
+// computed on its own. Stage 0 is the same method in one pass, for images with more pixels
+// than a storage buffer's list can hold (the device's maxStorageBufferRange).
 layout(set = 0, binding = SSFX_AA_BINDING_EDGES, std430) buffer EdgeList {
     uint groupsX, groupsY, groupsZ;  // the edge pass's VkDispatchIndirectCommand
     uint count;                      // edge pixels listed
@@ -36,8 +37,13 @@ void main() {
     loadTile();
     ivec2 p;
     if (!outputPixel(p)) return;
-    if (edgeAt(p.x, p.y))
-        appendEdge(p);
-    else
-        storeInput(p);  // the texel as fetched, as noaa stores it
+    if (spec_stage == SSFX_AA_STAGE_CLASSIFY) {
+        if (edgeAt(p.x, p.y))
+            appendEdge(p);
+        else
+            storeInput(p);  // the texel as fetched, as noaa stores it
+        return;
+    }
+    // Stage 0: one pass, for an image whose list would not fit in a storage buffer.
+    store(p, edgeAt(p.x, p.y) ? edgeColour(p.x, p.y) : texelValue(p.x, p.y), alphaAt(p.x, p.y));
 }
