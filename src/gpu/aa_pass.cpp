@@ -179,6 +179,12 @@ const std::vector<vkx::BindingSpec> kBindings{
 static_assert(SSFX_AA_BINDING_INPUT == 0 && SSFX_AA_BINDING_OUTPUT == 1 && SSFX_AA_BINDING_TABLES == 2 &&
               SSFX_AA_BINDING_EDGES == 3);
 
+std::unique_ptr<vkx::ComputePipeline> makePipeline(const vkx::Context& c, std::span<const std::uint32_t> spirv,
+                                                   const detail::AaSpecialization& spec) {
+    const vk::SpecializationInfo info = detail::specializationInfo(spec);
+    return std::make_unique<vkx::ComputePipeline>(c, spirv, kBindings, std::uint32_t(sizeof(AaConstants)), &info, true);
+}
+
 // The methods whose shaders have an edge test and run as two passes (edge_list.glsl).
 bool hasEdgePass(std::string_view id) {
     return id == "fxaa3c" || id == "fxaa3d" || id == "ddaa1" || id == "ddaa2" || id == "ddaa2p";
@@ -229,39 +235,43 @@ struct AaPass::Impl {
     std::unique_ptr<vkx::GpuTimer> timer;
     double lastMs = 0;
 
-    // Records pipeline p (and, for an edge-test method, the edge pass after it) from `in` to `out`.
+    // Records one dispatch of p over the output; `list`: the edge list (or, for a shader that
+    // declares it without using it, a stand-in) at SSFX_AA_BINDING_EDGES.
     void dispatch(const vkx::ComputePipeline& p, const vk::raii::CommandBuffer& cmd, vk::ImageView in,
-                  vk::ImageLayout inLayout, vk::ImageView out, const AaConstants& c) {
-        const vk::DeviceSize pixels = vk::DeviceSize(c.outWidth) * vk::DeviceSize(c.outHeight);
-        const bool edgeMethod = &p == pipeline.get() && edgePass;
-        const bool twoPass = edgeMethod && pixels <= maxListPixels;
-        if (edgeMethod && !twoPass) {
-            if (!onePass) {
-                const vk::SpecializationInfo info = detail::specializationInfo(spec);  // stage 0
-                onePass = std::make_unique<vkx::ComputePipeline>(*ctx, shaderFor(method->id), kBindings,
-                                                                 std::uint32_t(sizeof(AaConstants)), &info, true);
-            }
-            dispatch(*onePass, cmd, in, inLayout, out, c);
-            return;
-        }
-        if (twoPass) ensureEdges(pixels);
+                  vk::ImageLayout inLayout, vk::ImageView out, const AaConstants& c, vk::Buffer list = {},
+                  bool indirect = false) const {
         const vk::DescriptorImageInfo inInfo(*sampler, in, inLayout);
         const vk::DescriptorImageInfo outInfo(nullptr, out, vk::ImageLayout::eGeneral);
         const vk::DescriptorBufferInfo tableInfo(*tables.buffer, 0, VK_WHOLE_SIZE);
-        const vk::DescriptorBufferInfo edgeInfo(twoPass ? *edges.buffer : *tables.buffer, 0, VK_WHOLE_SIZE);
+        const vk::DescriptorBufferInfo listInfo(list, 0, VK_WHOLE_SIZE);
         const vk::WriteDescriptorSet writes[] = {
             {{}, SSFX_AA_BINDING_INPUT, 0, vk::DescriptorType::eCombinedImageSampler, inInfo},
             {{}, SSFX_AA_BINDING_OUTPUT, 0, vk::DescriptorType::eStorageImage, outInfo},
             {{}, SSFX_AA_BINDING_TABLES, 0, vk::DescriptorType::eStorageBuffer, {}, tableInfo},
-            {{}, SSFX_AA_BINDING_EDGES, 0, vk::DescriptorType::eStorageBuffer, {}, edgeInfo},
+            {{}, SSFX_AA_BINDING_EDGES, 0, vk::DescriptorType::eStorageBuffer, {}, listInfo},
         };
-        // (The edge methods' shaders declare the list in every stage: stage 0 gets a stand-in.)
-        const bool listBinding = edgePass && &p != resolve.get();
-        const std::span<const vk::WriteDescriptorSet> used(writes, listBinding ? 4 : 3);
-        if (!twoPass) {
+        const std::span<const vk::WriteDescriptorSet> used(writes, list ? 4 : 3);
+        if (indirect)
+            p.dispatchPushedIndirect(cmd, used, &c, list, 0);
+        else
             p.dispatchPushed(cmd, used, &c, groups(std::uint32_t(c.outWidth)), groups(std::uint32_t(c.outHeight)));
+    }
+
+    // Records the method's own shader (not ddaa2p's resolve) from `in` to `out`: for an
+    // edge-test method its two passes, or its one pass when the list would not fit.
+    void dispatchMethod(const vk::raii::CommandBuffer& cmd, vk::ImageView in, vk::ImageLayout inLayout,
+                        vk::ImageView out, const AaConstants& c) {
+        if (!edgePass) {
+            dispatch(*pipeline, cmd, in, inLayout, out, c);
             return;
         }
+        const vk::DeviceSize pixels = vk::DeviceSize(c.outWidth) * vk::DeviceSize(c.outHeight);
+        if (pixels > maxListPixels) {
+            if (!onePass) onePass = makePipeline(*ctx, shaderFor(method->id), spec);  // stage 0
+            dispatch(*onePass, cmd, in, inLayout, out, c, *tables.buffer);            // (the stand-in)
+            return;
+        }
+        ensureEdges(pixels);
         using S = vk::PipelineStageFlagBits;
         using A = vk::AccessFlagBits;
         // The list's header: no groups (y = z = 1), no pixels; after an earlier recording's
@@ -273,11 +283,11 @@ struct AaPass::Impl {
                                               VK_QUEUE_FAMILY_IGNORED, VK_QUEUE_FAMILY_IGNORED, *edges.buffer, 0,
                                               VK_WHOLE_SIZE);
         cmd.pipelineBarrier(S::eTransfer, S::eComputeShader, {}, {}, cleared, {});
-        p.dispatchPushed(cmd, used, &c, groups(std::uint32_t(c.outWidth)), groups(std::uint32_t(c.outHeight)));
+        dispatch(*pipeline, cmd, in, inLayout, out, c, *edges.buffer);
         // The list and the unchanged pixels, before the indirect dispatch and the edge pixels.
         const vk::MemoryBarrier listed(A::eShaderWrite, A::eIndirectCommandRead | A::eShaderRead | A::eShaderWrite);
         cmd.pipelineBarrier(S::eComputeShader, S::eDrawIndirect | S::eComputeShader, {}, listed, {}, {});
-        edgePass->dispatchPushedIndirect(cmd, used, &c, *edges.buffer, 0);
+        dispatch(*edgePass, cmd, in, inLayout, out, c, *edges.buffer, true);
     }
 
     void ensureEdges(vk::DeviceSize pixels) {
@@ -372,9 +382,7 @@ AaPass::AaPass(std::shared_ptr<vkx::Context> ctx, std::string_view method, const
         m.tables = c.uploadBuffer(t.data(), t.size() * sizeof(float), vk::BufferUsageFlagBits::eStorageBuffer);
         detail::AaSpecialization first = spec;
         if (hasEdgePass(m.method->id)) first.stage = SSFX_AA_STAGE_CLASSIFY;
-        const vk::SpecializationInfo specInfo = detail::specializationInfo(first);
-        m.pipeline = std::make_unique<vkx::ComputePipeline>(c, shaderFor(m.method->id), kBindings,
-                                                            std::uint32_t(sizeof(AaConstants)), &specInfo, true);
+        m.pipeline = makePipeline(c, shaderFor(m.method->id), first);
         if (hasEdgePass(m.method->id)) {
             m.spec = spec;
             const vk::DeviceSize range = c.physical.getProperties().limits.maxStorageBufferRange;
@@ -386,17 +394,10 @@ AaPass::AaPass(std::shared_ptr<vkx::Context> ctx, std::string_view method, const
             second.stage = SSFX_AA_STAGE_EDGES;
             second.groupX = SSFX_AA_EDGE_GROUP;
             second.groupY = 1;
-            const vk::SpecializationInfo edgeInfo = detail::specializationInfo(second);
-            m.edgePass = std::make_unique<vkx::ComputePipeline>(c, shaderFor(m.method->id), kBindings,
-                                                                std::uint32_t(sizeof(AaConstants)), &edgeInfo, true);
+            m.edgePass = makePipeline(c, shaderFor(m.method->id), second);
         }
-        if (m.method->id == "ddaa2p") {
-            const detail::AaSpecialization resolveSpec =
-                detail::aaSpecialization("ssaax2", aa::Ssaax2Params{}, sampling);
-            const vk::SpecializationInfo resolveInfo = detail::specializationInfo(resolveSpec);
-            m.resolve = std::make_unique<vkx::ComputePipeline>(c, std::span<const std::uint32_t>(kSsaax2), kBindings,
-                                                               std::uint32_t(sizeof(AaConstants)), &resolveInfo, true);
-        }
+        if (m.method->id == "ddaa2p")
+            m.resolve = makePipeline(c, kSsaax2, detail::aaSpecialization("ssaax2", aa::Ssaax2Params{}, sampling));
         m.timer = std::make_unique<vkx::GpuTimer>(c, 1);
     });
 }
@@ -448,8 +449,8 @@ void AaPass::record(const vk::raii::CommandBuffer& cmd, const ImageRef& input, c
             // (Also orders this recording's writes after an earlier recording's reads.)
             cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eComputeShader,
                                 {}, {}, {}, toGeneral);
-            m.dispatch(*m.pipeline, cmd, input.view, input.layout, *m.scratchView,
-                       detail::aaConstants("ddaa2", m.params, w, h, w, h));
+            m.dispatchMethod(cmd, input.view, input.layout, *m.scratchView,
+                             detail::aaConstants("ddaa2", m.params, w, h, w, h));
             const vk::ImageMemoryBarrier written(
                 vk::AccessFlagBits::eShaderWrite, vk::AccessFlagBits::eShaderRead, vk::ImageLayout::eGeneral,
                 vk::ImageLayout::eGeneral, VK_QUEUE_FAMILY_IGNORED, VK_QUEUE_FAMILY_IGNORED, *m.scratch.image, range);
@@ -459,8 +460,8 @@ void AaPass::record(const vk::raii::CommandBuffer& cmd, const ImageRef& input, c
                        detail::aaConstants("ssaax2", aa::Ssaax2Params{}, w, h, w / 2, h / 2));
             return;
         }
-        m.dispatch(*m.pipeline, cmd, input.view, input.layout, output.view,
-                   detail::aaConstants(id, m.params, w, h, w / int(scale), h / int(scale)));
+        m.dispatchMethod(cmd, input.view, input.layout, output.view,
+                         detail::aaConstants(id, m.params, w, h, w / int(scale), h / int(scale)));
     });
 }
 
@@ -482,36 +483,29 @@ ImageRgba8 AaPass::run(ImageView<const Rgba8> input) {
         for (std::uint32_t y = 0; y < h; ++y)
             std::memcpy(static_cast<std::uint8_t*>(r.upload.mapped) + std::size_t(y) * w * 4, input.row(int(y)),
                         std::size_t(w) * 4);
-        const vkx::Image& in = r.in;
-        const vkx::Image& res = r.res;
-        const vkx::Buffer& upload = r.upload;
-        const vkx::Buffer& download = r.download;
-        const vk::raii::ImageView& inView = r.inView;
-        const vk::raii::ImageView& resView = r.resView;
-        const vk::ImageUsageFlags inUsage = Impl::RunImages::kInUsage, resUsage = Impl::RunImages::kResUsage;
         using S = vk::PipelineStageFlagBits;
         using A = vk::AccessFlagBits;
         using L = vk::ImageLayout;
         c.submit([&](const vk::raii::CommandBuffer& cmd) {
             // (All commands before: a previous call's reads of the kept images.)
-            vkx::transition(cmd, in, L::eUndefined, L::eTransferDstOptimal, S::eAllCommands, {}, S::eTransfer,
+            vkx::transition(cmd, r.in, L::eUndefined, L::eTransferDstOptimal, S::eAllCommands, {}, S::eTransfer,
                             A::eTransferWrite);
             const vk::BufferImageCopy inCopy(0, 0, 0, {vk::ImageAspectFlagBits::eColor, 0, 0, 1}, {0, 0, 0}, {w, h, 1});
-            cmd.copyBufferToImage(*upload.buffer, *in.image, L::eTransferDstOptimal, inCopy);
-            vkx::transition(cmd, in, L::eTransferDstOptimal, L::eShaderReadOnlyOptimal, S::eTransfer, A::eTransferWrite,
-                            S::eComputeShader, A::eShaderRead);
-            vkx::transition(cmd, res, L::eUndefined, L::eGeneral, S::eAllCommands, {}, S::eComputeShader,
+            cmd.copyBufferToImage(*r.upload.buffer, *r.in.image, L::eTransferDstOptimal, inCopy);
+            vkx::transition(cmd, r.in, L::eTransferDstOptimal, L::eShaderReadOnlyOptimal, S::eTransfer,
+                            A::eTransferWrite, S::eComputeShader, A::eShaderRead);
+            vkx::transition(cmd, r.res, L::eUndefined, L::eGeneral, S::eAllCommands, {}, S::eComputeShader,
                             A::eShaderWrite);
             m.timer->reset(cmd);
             m.timer->begin(cmd, 0, S::eComputeShader);
-            record(cmd, ImageRef{*inView, kOutputFormat, inUsage, w, h, L::eShaderReadOnlyOptimal},
-                   ImageRef{*resView, kOutputFormat, resUsage, ow, oh, L::eGeneral});
+            record(cmd, ImageRef{*r.inView, kOutputFormat, Impl::RunImages::kInUsage, w, h, L::eShaderReadOnlyOptimal},
+                   ImageRef{*r.resView, kOutputFormat, Impl::RunImages::kResUsage, ow, oh, L::eGeneral});
             m.timer->end(cmd, 0, S::eComputeShader);
-            vkx::transition(cmd, res, L::eGeneral, L::eTransferSrcOptimal, S::eComputeShader, A::eShaderWrite,
+            vkx::transition(cmd, r.res, L::eGeneral, L::eTransferSrcOptimal, S::eComputeShader, A::eShaderWrite,
                             S::eTransfer, A::eTransferRead);
             const vk::BufferImageCopy outCopy(0, 0, 0, {vk::ImageAspectFlagBits::eColor, 0, 0, 1}, {0, 0, 0},
                                               {ow, oh, 1});
-            cmd.copyImageToBuffer(*res.image, L::eTransferSrcOptimal, *download.buffer, outCopy);
+            cmd.copyImageToBuffer(*r.res.image, L::eTransferSrcOptimal, *r.download.buffer, outCopy);
             const vk::MemoryBarrier toHost(A::eTransferWrite, A::eHostRead);
             cmd.pipelineBarrier(S::eTransfer, S::eHost, {}, toHost, {}, {});
         });
@@ -519,7 +513,7 @@ ImageRgba8 AaPass::run(ImageView<const Rgba8> input) {
         m.lastMs = ms.empty() ? 0.0 : ms[0];
         for (std::uint32_t y = 0; y < oh; ++y)
             std::memcpy(out.view().row(int(y)),
-                        static_cast<const std::uint8_t*>(download.mapped) + std::size_t(y) * ow * 4,
+                        static_cast<const std::uint8_t*>(r.download.mapped) + std::size_t(y) * ow * 4,
                         std::size_t(ow) * 4);
     });
     return out;
