@@ -186,6 +186,9 @@ std::unique_ptr<vkx::ComputePipeline> makePipeline(const vkx::Context& c, std::s
 }
 
 // The methods whose shaders have an edge test and run as two passes (edge_list.glsl).
+// The edge pass's most work groups on a CPU device (aa_constants.h: edgeGroups).
+constexpr std::int32_t kCpuEdgeGroups = 256;
+
 bool hasEdgePass(std::string_view id) {
     return id == "fxaa3c" || id == "fxaa3d" || id == "ddaa1" || id == "ddaa2" || id == "ddaa2p";
 }
@@ -381,7 +384,15 @@ AaPass::AaPass(std::shared_ptr<vkx::Context> ctx, std::string_view method, const
         static_assert(SSFX_AA_MITCHELL4_COUNT == 16);
         m.tables = c.uploadBuffer(t.data(), t.size() * sizeof(float), vk::BufferUsageFlagBits::eStorageBuffer);
         detail::AaSpecialization first = spec;
-        if (hasEdgePass(m.method->id)) first.stage = SSFX_AA_STAGE_CLASSIFY;
+        if (hasEdgePass(m.method->id)) {
+            first.stage = SSFX_AA_STAGE_CLASSIFY;
+            // A CPU device (lavapipe) pays for every work group it starts, so its edge pass
+            // runs few groups that loop over the list; a GPU gets one pixel per invocation.
+            // (lavapipe at 1920x1080: fxaa3c's edge pass about half as long with 256 groups
+            // as with one group per 64 listed pixels; docs/gpu.md.)
+            if (c.physical.getProperties().deviceType == vk::PhysicalDeviceType::eCpu)
+                first.edgeGroups = kCpuEdgeGroups;
+        }
         m.pipeline = makePipeline(c, shaderFor(m.method->id), first);
         if (hasEdgePass(m.method->id)) {
             m.spec = spec;

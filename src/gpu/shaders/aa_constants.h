@@ -46,7 +46,8 @@
     X(2, diagonalsAtCentres, 0) /* fxaa3c: diagonalOffset == 1 (reads at pixel centres) */          \
     X(3, stage, 0)              /* edge-list methods: SSFX_AA_STAGE_CLASSIFY or _EDGES; others 0 */ \
     X(4, groupX, SSFX_AA_GROUP) /* work-group size: SSFX_AA_GROUP^2, or SSFX_AA_EDGE_GROUP x 1 */   \
-    X(5, groupY, SSFX_AA_GROUP)
+    X(5, groupY, SSFX_AA_GROUP)                                                                     \
+    X(6, edgeGroups, SSFX_AA_EDGE_MAX_GROUPS) /* edge pass: at most this many groups (aa_pass.cpp) */
 
 // The two passes of the methods with an edge test (fxaa3c, fxaa3d, ddaa1, ddaa2; ppaa.glsl):
 // the first tests every pixel, writes the pixels that stay as they are and appends the edge
@@ -54,9 +55,10 @@
 #define SSFX_AA_STAGE_CLASSIFY 1
 #define SSFX_AA_STAGE_EDGES 2
 #define SSFX_AA_EDGE_GROUP 64  // edge pass: invocations per work group (1-D)
-#define SSFX_AA_EDGE_MAX_GROUPS \
-    65535u  // edge pass: at most this many groups (Vulkan's minimum
-            // maxComputeWorkGroupCount); each invocation loops
+// Edge pass: at most this many groups (Vulkan's minimum maxComputeWorkGroupCount); each
+// invocation loops over the list with the dispatch's stride. The specialization constant
+// edgeGroups lowers it on CPU devices (aa_pass.cpp: kCpuEdgeGroups).
+#define SSFX_AA_EDGE_MAX_GROUPS 65535
 
 #define SSFX_AA_MEMBER(type, name) type name;
 

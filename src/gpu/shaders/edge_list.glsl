@@ -19,9 +19,9 @@ layout(set = 0, binding = SSFX_AA_BINDING_EDGES, std430) buffer EdgeList {
 void appendEdge(ivec2 p) {
     const uint slot = atomicAdd(edges.count, 1u);
     edges.pixels[slot] = uint(p.x) | (uint(p.y) << 16u);
-    // groupsX = min(ceil(count / SSFX_AA_EDGE_GROUP), SSFX_AA_EDGE_MAX_GROUPS) as the list grows.
+    // groupsX = min(ceil(count / SSFX_AA_EDGE_GROUP), spec_edgeGroups) as the list grows.
     const uint group = uint(SSFX_AA_EDGE_GROUP);
-    if (slot % group == 0u && slot / group < SSFX_AA_EDGE_MAX_GROUPS) atomicAdd(edges.groupsX, 1u);
+    if (slot % group == 0u && slot / group < uint(spec_edgeGroups)) atomicAdd(edges.groupsX, 1u);
 }
 
 void main() {
