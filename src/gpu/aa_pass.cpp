@@ -175,9 +175,10 @@ const std::vector<vkx::BindingSpec> kBindings{
     {vk::DescriptorType::eStorageImage},          // SSFX_AA_BINDING_OUTPUT
     {vk::DescriptorType::eStorageBuffer},         // SSFX_AA_BINDING_TABLES
     {vk::DescriptorType::eStorageBuffer},         // SSFX_AA_BINDING_EDGES (the two-pass methods)
+    {vk::DescriptorType::eStorageImage},          // SSFX_AA_BINDING_LUMA (the two-pass methods)
 };
 static_assert(SSFX_AA_BINDING_INPUT == 0 && SSFX_AA_BINDING_OUTPUT == 1 && SSFX_AA_BINDING_TABLES == 2 &&
-              SSFX_AA_BINDING_EDGES == 3);
+              SSFX_AA_BINDING_EDGES == 3 && SSFX_AA_BINDING_LUMA == 4);
 
 std::unique_ptr<vkx::ComputePipeline> makePipeline(const vkx::Context& c, std::span<const std::uint32_t> spirv,
                                                    const detail::AaSpecialization& spec) {
@@ -225,7 +226,9 @@ struct AaPass::Impl {
     std::unique_ptr<vkx::ComputePipeline> pipeline, resolve;  // resolve: ddaa2p's ssaax2
     // The methods with an edge test: `pipeline` classifies (SSFX_AA_STAGE_CLASSIFY), `edgePass`
     // computes the listed edge pixels (edge_list.glsl); `edges` holds the list.
-    std::unique_ptr<vkx::ComputePipeline> edgePass;
+    std::unique_ptr<vkx::ComputePipeline> edgePass, lumaPass;
+    vkx::Image luma;  // the luma plane (r32f, the input's size)
+    vk::raii::ImageView lumaView{nullptr};
     vkx::Buffer edges;
     vk::DeviceSize edgeCapacity = 0;  // pixels the list can hold
     // Larger images run the method in one pass (stage 0, made when first needed): the list
@@ -247,13 +250,15 @@ struct AaPass::Impl {
         const vk::DescriptorImageInfo outInfo(nullptr, out, vk::ImageLayout::eGeneral);
         const vk::DescriptorBufferInfo tableInfo(*tables.buffer, 0, VK_WHOLE_SIZE);
         const vk::DescriptorBufferInfo listInfo(list, 0, VK_WHOLE_SIZE);
+        const vk::DescriptorImageInfo lumaInfo(nullptr, *lumaView, vk::ImageLayout::eGeneral);
         const vk::WriteDescriptorSet writes[] = {
             {{}, SSFX_AA_BINDING_INPUT, 0, vk::DescriptorType::eCombinedImageSampler, inInfo},
             {{}, SSFX_AA_BINDING_OUTPUT, 0, vk::DescriptorType::eStorageImage, outInfo},
             {{}, SSFX_AA_BINDING_TABLES, 0, vk::DescriptorType::eStorageBuffer, {}, tableInfo},
             {{}, SSFX_AA_BINDING_EDGES, 0, vk::DescriptorType::eStorageBuffer, {}, listInfo},
+            {{}, SSFX_AA_BINDING_LUMA, 0, vk::DescriptorType::eStorageImage, lumaInfo},
         };
-        const std::span<const vk::WriteDescriptorSet> used(writes, list ? 4 : 3);
+        const std::span<const vk::WriteDescriptorSet> used(writes, list ? (*lumaView ? 5 : 4) : 3);
         if (indirect)
             p.dispatchPushedIndirect(cmd, used, &c, list, 0);
         else
@@ -271,26 +276,56 @@ struct AaPass::Impl {
         const vk::DeviceSize pixels = vk::DeviceSize(c.outWidth) * vk::DeviceSize(c.outHeight);
         if (pixels > maxListPixels) {
             if (!onePass) onePass = makePipeline(*ctx, shaderFor(method->id), spec);  // stage 0
-            dispatch(*onePass, cmd, in, inLayout, out, c, *tables.buffer);            // (the stand-in)
+            // Stand-ins for the list and the luma plane, which stage 0 declares but does not use
+            // (its lumas are in the work group's tile).
+            if (!*luma.image) ensureLuma(1, 1);
+            cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eComputeShader,
+                                {}, {}, {}, lumaDiscarded());
+            dispatch(*onePass, cmd, in, inLayout, out, c, *tables.buffer);
             return;
         }
         ensureEdges(pixels);
+        ensureLuma(std::uint32_t(c.width), std::uint32_t(c.height));
         using S = vk::PipelineStageFlagBits;
         using A = vk::AccessFlagBits;
-        // The list's header: no groups (y = z = 1), no pixels; after an earlier recording's
-        // reads of it (an execution dependency is enough before a write).
+        // Before this recording's writes, an earlier recording's reads of the list and the luma
+        // plane (an execution dependency is enough before a write).
         cmd.pipelineBarrier(S::eComputeShader | S::eDrawIndirect, S::eTransfer, {}, {}, {}, {});
+        // The list's header: no groups (y = z = 1), no pixels.
         const std::uint32_t header[4] = {0, 1, 1, 0};
         cmd.updateBuffer<std::uint32_t>(*edges.buffer, 0, header);
         const vk::BufferMemoryBarrier cleared(A::eTransferWrite, A::eShaderRead | A::eShaderWrite,
                                               VK_QUEUE_FAMILY_IGNORED, VK_QUEUE_FAMILY_IGNORED, *edges.buffer, 0,
                                               VK_WHOLE_SIZE);
-        cmd.pipelineBarrier(S::eTransfer, S::eComputeShader, {}, {}, cleared, {});
+        // The luma plane is written whole by the luma pass: its old contents are dropped.
+        cmd.pipelineBarrier(S::eTransfer | S::eComputeShader, S::eComputeShader, {}, {}, cleared, lumaDiscarded());
+        dispatch(*lumaPass, cmd, in, inLayout, out, c, *edges.buffer);
+        // The luma plane, before the classify pass reads it.
+        const vk::MemoryBarrier lumaWritten(A::eShaderWrite, A::eShaderRead | A::eShaderWrite);
+        cmd.pipelineBarrier(S::eComputeShader, S::eComputeShader, {}, lumaWritten, {}, {});
         dispatch(*pipeline, cmd, in, inLayout, out, c, *edges.buffer);
         // The list and the unchanged pixels, before the indirect dispatch and the edge pixels.
         const vk::MemoryBarrier listed(A::eShaderWrite, A::eIndirectCommandRead | A::eShaderRead | A::eShaderWrite);
         cmd.pipelineBarrier(S::eComputeShader, S::eDrawIndirect | S::eComputeShader, {}, listed, {}, {});
         dispatch(*edgePass, cmd, in, inLayout, out, c, *edges.buffer, true);
+    }
+
+    // The luma plane to GENERAL with its old contents dropped, after an earlier recording's reads.
+    vk::ImageMemoryBarrier lumaDiscarded() const {
+        return vk::ImageMemoryBarrier(vk::AccessFlagBits::eShaderRead, vk::AccessFlagBits::eShaderWrite,
+                                      vk::ImageLayout::eUndefined, vk::ImageLayout::eGeneral, VK_QUEUE_FAMILY_IGNORED,
+                                      VK_QUEUE_FAMILY_IGNORED, *luma.image,
+                                      vk::ImageSubresourceRange(vk::ImageAspectFlagBits::eColor, 0, 1, 0, 1));
+    }
+
+    void ensureLuma(std::uint32_t w, std::uint32_t h) {
+        if (*luma.image && luma.width == w && luma.height == h) return;
+        luma = ctx->createImage(vk::Format::eR32Sfloat, w, h, vk::ImageUsageFlagBits::eStorage,
+                                vk::ImageAspectFlagBits::eColor);
+        lumaView = vk::raii::ImageView(
+            ctx->device,
+            vk::ImageViewCreateInfo({}, *luma.image, vk::ImageViewType::e2D, vk::Format::eR32Sfloat, {},
+                                    vk::ImageSubresourceRange(vk::ImageAspectFlagBits::eColor, 0, 1, 0, 1)));
     }
 
     void ensureEdges(vk::DeviceSize pixels) {
@@ -406,6 +441,9 @@ AaPass::AaPass(std::shared_ptr<vkx::Context> ctx, std::string_view method, const
             second.groupX = SSFX_AA_EDGE_GROUP;
             second.groupY = 1;
             m.edgePass = makePipeline(c, shaderFor(m.method->id), second);
+            detail::AaSpecialization lumaSpec = spec;
+            lumaSpec.stage = SSFX_AA_STAGE_LUMA;
+            m.lumaPass = makePipeline(c, shaderFor(m.method->id), lumaSpec);
         }
         if (m.method->id == "ddaa2p")
             m.resolve = makePipeline(c, kSsaax2, detail::aaSpecialization("ssaax2", aa::Ssaax2Params{}, sampling));

@@ -54,6 +54,7 @@
 // pixels to a list; the second, an indirect dispatch over the list, computes the edge pixels.
 #define SSFX_AA_STAGE_CLASSIFY 1
 #define SSFX_AA_STAGE_EDGES 2
+#define SSFX_AA_STAGE_LUMA 3   // before CLASSIFY: the luma plane (SSFX_AA_BINDING_LUMA)
 #define SSFX_AA_EDGE_GROUP 64  // edge pass: invocations per work group (1-D)
 // Edge pass: at most this many groups (Vulkan's minimum maxComputeWorkGroupCount); each
 // invocation loops over the list with the dispatch's stride. The specialization constant
@@ -88,6 +89,7 @@ SSFX_AA_SPECIALIZATION(SSFX_AA_SPEC_DECL)
 #define SSFX_AA_BINDING_OUTPUT 1  // storage image rgba8: the output
 #define SSFX_AA_BINDING_TABLES 2  // storage buffer: the tables below
 #define SSFX_AA_BINDING_EDGES 3   // storage buffer: the edge list (the two-pass methods)
+#define SSFX_AA_BINDING_LUMA 4    // storage image r32f: the luma plane (the two-pass methods)
 
 // The tables buffer (floats): the 16 Mitchell weights of the x4 resolve per axis (read at
 // indices that are the same for every invocation; the model's levels k / 4080 are computed,

@@ -34,7 +34,12 @@ void main() {
         }
         return;
     }
-    loadTile();
+    if (spec_stage == SSFX_AA_STAGE_LUMA) {
+        ivec2 p;
+        if (outputPixel(p)) imageStore(lumaPlane, p, vec4(edgeLuma(fetchValue(p.x, p.y))));
+        return;
+    }
+    if (spec_stage == 0) loadTile();
     ivec2 p;
     if (!outputPixel(p)) return;
     if (spec_stage == SSFX_AA_STAGE_CLASSIFY) {

@@ -134,8 +134,10 @@ void loadTile() {
 // The luma of texel (x, y) of the group's pixels or their border, clamped to the image like
 // a fetch (the tile's border texels were fetched clamped). The edge pass's pixels are
 // scattered: it computes the luma from the texel, the same value.
+layout(set = 0, binding = SSFX_AA_BINDING_LUMA, r32f) uniform image2D lumaPlane;
 float lumaAt(int x, int y) {
-    if (spec_stage == SSFX_AA_STAGE_EDGES) return edgeLuma(fetchValue(x, y));
+    if (spec_stage == SSFX_AA_STAGE_EDGES || spec_stage == SSFX_AA_STAGE_CLASSIFY)
+        return imageLoad(lumaPlane, ivec2(clamp(x, 0, pc.width - 1), clamp(y, 0, pc.height - 1))).r;
     const ivec2 q = ivec2(x, y) - tileOrigin();
     return tileLuma[q.y * kTile + q.x];
 }
