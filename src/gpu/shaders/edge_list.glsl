@@ -1,15 +1,16 @@
-// The two passes of the methods with an edge test (aa_constants.h: SSFX_AA_STAGE_*), shared.
-// Included last by a method's shader (with SSFX_TILE defined), which defines
+// The three dispatches of the methods with an edge test (aa_constants.h: SSFX_AA_STAGE_*),
+// shared. Included last by a method's shader (with SSFX_TILE defined), which defines
 //   bool edgeAt(int x, int y): the early-exit test says edge (spec ppaa.md section 1), and
 //   vec3 edgeColour(int x, int y): the method's colour for an edge pixel.
-// Pass 1 (classify, 16 x 16 groups with the luma tile) writes every other pixel unchanged and
-// lists the edge pixels; pass 2 (edges, an indirect dispatch of 64 x 1 groups) computes the
-// listed pixels. Why: a driver that runs shaders as masked SIMD code (lavapipe) runs the
-// whole edge computation, search loops included, for every group of lanes that holds one
-// edge pixel, and about 40 % of 8-pixel runs hold one; from the list every lane is an edge
-// pixel. The list's order depends on the atomics, the output does not: each pixel is
-// computed on its own. Stage 0 is the same method in one pass, for images with more pixels
-// than a storage buffer's list can hold (the device's maxStorageBufferRange).
+// LUMA writes the luma plane (each texel's edgeLuma once, ppaa.glsl's lumaAt reads it);
+// CLASSIFY (16 x 16 groups) writes every pixel below the edge threshold unchanged and lists
+// the edge pixels; EDGES (an indirect dispatch of 64 x 1 groups) computes the listed pixels.
+// Why: a driver that runs shaders as masked SIMD code (lavapipe) runs the whole edge
+// computation, search loops included, for every group of lanes that holds one edge pixel,
+// and about 40 % of 8-pixel runs hold one; from the list every lane is an edge pixel. The
+// list's order depends on the atomics, the output does not: each pixel is computed on its
+// own. Stage 0 is the same method in one pass, its lumas in the work group's tile, for images
+// with more pixels than a storage buffer's list can hold (the device's maxStorageBufferRange).
 layout(set = 0, binding = SSFX_AA_BINDING_EDGES, std430) buffer EdgeList {
     uint groupsX, groupsY, groupsZ;  // the edge pass's VkDispatchIndirectCommand
     uint count;                      // edge pixels listed

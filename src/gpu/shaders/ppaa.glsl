@@ -114,12 +114,12 @@ float edgeLuma(vec3 c) {
     precise float e = l + pc.chromaWeight * (hi - lo);
     return e;
 }
-// ---- the work group's tile: the luma of its pixels and a one-pixel border (the CPU's luma
-// plane), in workgroup memory, so that each texel's luma is computed once, not nine times.
-// Shaders that read the 3x3 luma neighbourhood define SSFX_TILE and call loadTile() first,
-// in uniform control flow. Colours are fetched where they are used: on lavapipe a
-// workgroup-memory load at a per-pixel address is a loop over the SIMD lanes, dearer than a
-// texel fetch and its exact decode.
+// ---- the lumas of the 3x3 neighbourhoods (the CPU's luma plane): shaders that read them
+// define SSFX_TILE. The two-pass dispatches (edge_list.glsl) read the luma plane that their
+// LUMA dispatch wrote (an r32f image: on lavapipe its loads are gathers); stage 0 loads the
+// work group's tile, the lumas of its pixels and a one-pixel border, in workgroup memory
+// (loadTile(), first, in uniform control flow). Either way each texel's luma is computed
+// once. Colours are fetched where they are used.
 vec3 texelValue(int x, int y) { return fetchValue(x, y); }
 #ifdef SSFX_TILE
 const int kTile = SSFX_AA_GROUP + 2;
