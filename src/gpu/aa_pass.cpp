@@ -186,10 +186,10 @@ std::unique_ptr<vkx::ComputePipeline> makePipeline(const vkx::Context& c, std::s
     return std::make_unique<vkx::ComputePipeline>(c, spirv, kBindings, std::uint32_t(sizeof(AaConstants)), &info, true);
 }
 
-// The methods whose shaders have an edge test and run as two passes (edge_list.glsl).
 // The edge pass's most work groups on a CPU device (aa_constants.h: edgeGroups).
 constexpr std::int32_t kCpuEdgeGroups = 256;
 
+// The methods whose shaders have an edge test and run as three dispatches (edge_list.glsl).
 bool hasEdgePass(std::string_view id) {
     return id == "fxaa3c" || id == "fxaa3d" || id == "ddaa1" || id == "ddaa2" || id == "ddaa2p";
 }
@@ -224,8 +224,9 @@ struct AaPass::Impl {
     vk::raii::Sampler sampler{nullptr};
     vkx::Buffer tables;
     std::unique_ptr<vkx::ComputePipeline> pipeline, resolve;  // resolve: ddaa2p's ssaax2
-    // The methods with an edge test: `pipeline` classifies (SSFX_AA_STAGE_CLASSIFY), `edgePass`
-    // computes the listed edge pixels (edge_list.glsl); `edges` holds the list.
+    // The methods with an edge test: `lumaPass` writes the luma plane `luma`, `pipeline`
+    // classifies (SSFX_AA_STAGE_CLASSIFY), `edgePass` computes the listed edge pixels
+    // (edge_list.glsl); `edges` holds the list.
     std::unique_ptr<vkx::ComputePipeline> edgePass, lumaPass;
     vkx::Image luma;  // the luma plane (r32f, the input's size)
     vk::raii::ImageView lumaView{nullptr};
@@ -242,7 +243,8 @@ struct AaPass::Impl {
     double lastMs = 0;
 
     // Records one dispatch of p over the output; `list`: the edge list (or, for a shader that
-    // declares it without using it, a stand-in) at SSFX_AA_BINDING_EDGES.
+    // declares it without using it, a stand-in) at SSFX_AA_BINDING_EDGES, with the luma plane
+    // (or its stand-in) at SSFX_AA_BINDING_LUMA: the edge methods' shaders declare both.
     void dispatch(const vkx::ComputePipeline& p, const vk::raii::CommandBuffer& cmd, vk::ImageView in,
                   vk::ImageLayout inLayout, vk::ImageView out, const AaConstants& c, vk::Buffer list = {},
                   bool indirect = false) const {
@@ -258,7 +260,7 @@ struct AaPass::Impl {
             {{}, SSFX_AA_BINDING_EDGES, 0, vk::DescriptorType::eStorageBuffer, {}, listInfo},
             {{}, SSFX_AA_BINDING_LUMA, 0, vk::DescriptorType::eStorageImage, lumaInfo},
         };
-        const std::span<const vk::WriteDescriptorSet> used(writes, list ? (*lumaView ? 5 : 4) : 3);
+        const std::span<const vk::WriteDescriptorSet> used(writes, list ? 5 : 3);
         if (indirect)
             p.dispatchPushedIndirect(cmd, used, &c, list, 0);
         else

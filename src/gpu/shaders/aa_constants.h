@@ -40,18 +40,19 @@
 // constants: the device compiles only the branch taken, where a branch on a push constant
 // costs both sides on drivers that run shaders as masked SIMD code (lavapipe runs every side
 // of every branch). GLSL sees them as spec_<name>.
-#define SSFX_AA_SPECIALIZATION(X)                                                                   \
-    X(0, sampling, 0)           /* 0: the GPU sampling model (exact); 1: the device's sampler */    \
-    X(1, chroma, 0)             /* 1: chromaWeight != 0 (edgeLuma adds the chroma term) */          \
-    X(2, diagonalsAtCentres, 0) /* fxaa3c: diagonalOffset == 1 (reads at pixel centres) */          \
-    X(3, stage, 0)              /* edge-list methods: SSFX_AA_STAGE_CLASSIFY or _EDGES; others 0 */ \
-    X(4, groupX, SSFX_AA_GROUP) /* work-group size: SSFX_AA_GROUP^2, or SSFX_AA_EDGE_GROUP x 1 */   \
-    X(5, groupY, SSFX_AA_GROUP)                                                                     \
+#define SSFX_AA_SPECIALIZATION(X)                                                                        \
+    X(0, sampling, 0)           /* 0: the GPU sampling model (exact); 1: the device's sampler */         \
+    X(1, chroma, 0)             /* 1: chromaWeight != 0 (edgeLuma adds the chroma term) */               \
+    X(2, diagonalsAtCentres, 0) /* fxaa3c: diagonalOffset == 1 (reads at pixel centres) */               \
+    X(3, stage, 0)              /* edge-list methods: SSFX_AA_STAGE_LUMA, _CLASSIFY or _EDGES; else 0 */ \
+    X(4, groupX, SSFX_AA_GROUP) /* work-group size: SSFX_AA_GROUP^2, or SSFX_AA_EDGE_GROUP x 1 */        \
+    X(5, groupY, SSFX_AA_GROUP)                                                                          \
     X(6, edgeGroups, SSFX_AA_EDGE_MAX_GROUPS) /* edge pass: at most this many groups (aa_pass.cpp) */
 
-// The two passes of the methods with an edge test (fxaa3c, fxaa3d, ddaa1, ddaa2; ppaa.glsl):
-// the first tests every pixel, writes the pixels that stay as they are and appends the edge
-// pixels to a list; the second, an indirect dispatch over the list, computes the edge pixels.
+// The three dispatches of the methods with an edge test (fxaa3c, fxaa3d, ddaa1, ddaa2;
+// edge_list.glsl): the first writes the luma plane; the second tests every pixel, writes the
+// pixels that stay as they are and appends the edge pixels to a list; the third, an indirect
+// dispatch over the list, computes the edge pixels.
 #define SSFX_AA_STAGE_CLASSIFY 1
 #define SSFX_AA_STAGE_EDGES 2
 #define SSFX_AA_STAGE_LUMA 3   // before CLASSIFY: the luma plane (SSFX_AA_BINDING_LUMA)

@@ -131,9 +131,9 @@ void loadTile() {
         tileLuma[i] = edgeLuma(fetchValue(origin.x + i % kTile, origin.y + i / kTile));
     barrier();
 }
-// The luma of texel (x, y) of the group's pixels or their border, clamped to the image like
-// a fetch (the tile's border texels were fetched clamped). The edge pass's pixels are
-// scattered: it computes the luma from the texel, the same value.
+// The luma of texel (x, y), clamped to the image like a fetch: from the luma plane (the
+// classify and edge dispatches) or from the tile (stage 0: the group's pixels or their
+// border, whose texels were fetched clamped).
 layout(set = 0, binding = SSFX_AA_BINDING_LUMA, r32f) uniform image2D lumaPlane;
 float lumaAt(int x, int y) {
     if (spec_stage == SSFX_AA_STAGE_EDGES || spec_stage == SSFX_AA_STAGE_CLASSIFY)
