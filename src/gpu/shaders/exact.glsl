@@ -1,10 +1,12 @@
-// Exact float helpers of the model sampling mode (ppaa.glsl's header says why): Dekker's
-// exact product, correctly rounded division and square root from the device's, and the
+// Exact float helpers of the model sampling mode (ppaa.glsl's header says why): correctly
+// rounded division (with Dekker's exact product) and square root (with an integer residual)
+// from the device's results, and the
 // exact float-to-8-bit conversion. Self-contained (no bindings): tests/gpu/shaders/exact.comp
 // checks them against the CPU's IEEE results.
 
 // a * b == p + e exactly (Dekker 1971, with Veltkamp's split; needs only correctly rounded
-// multiply and add, which Vulkan guarantees).
+// multiply and add, which Vulkan guarantees), for |a|, |b| < 2^114 (4097 a must not
+// overflow) and a product that neither overflows nor underflows.
 void twoProduct(float a, float b, out float p, out float e) {
     precise float pp = a * b;
     precise float ca = 4097.0 * a;
@@ -24,12 +26,11 @@ float nextFloat(float q, float dir) {
     return uintBitsToFloat((q > 0.0) == (dir > 0.0) ? bits + 1u : bits - 1u);
 }
 
-// a - q b (division a / b) or a - q q (square root of a; b unused), to compare candidate
-// results: exact up to the last subtraction's rounding, far below the difference between
-// neighbouring candidates.
-float signedResidual(bool root, float a, float b, float q) {
+// a - q b, to compare candidate quotients: exact up to the last subtraction's rounding, far
+// below the difference between neighbouring candidates.
+float signedResidual(float a, float b, float q) {
     float p, e;
-    twoProduct(q, root ? q : b, p, e);
+    twoProduct(q, b, p, e);
     precise float r = (a - p) - e;
     return r;
 }
@@ -41,21 +42,21 @@ float minGap(float q) {
     return min(abs(up), abs(down));
 }
 
-// The device's result q of a / b or sqrt(a), correctly rounded. Pass 0 checks q: it is the
-// correctly rounded result when its residual is under boundFactor * scale * gap (the usual
-// case: one exact product). A lane that fails walks on, one neighbour per pass in the
+// The device's quotient q of a / b, correctly rounded. Pass 0 checks q: it is the correctly
+// rounded result when its residual is under boundFactor |b| gap (the usual case: one exact
+// product). A lane that fails walks on, one neighbour per pass in the
 // direction the residual's sign gives, while the residual shrinks, at most `steps` ulp. One
 // residual per pass: drivers that run shaders as masked SIMD code (lavapipe) run a loop's
 // first pass for every lane, so the check is all an exact device pays.
-float correctlyRounded(bool root, float a, float b, float q, float boundFactor, int steps) {
+float correctlyRounded(float a, float b, float q, float boundFactor, int steps) {
     float best = q, bestR = 0.0, dir = 0.0;
     for (int i = 0; i <= steps; ++i) {
-        const float sr = signedResidual(root, a, b, q);
+        const float sr = signedResidual(a, b, q);
         const float r = abs(sr);
         if (i == 0) {
-            precise float bound = boundFactor * (root ? q : abs(b)) * minGap(q);
+            precise float bound = boundFactor * abs(b) * minGap(q);
             if (r < bound) break;
-            dir = (sr > 0.0) == (root || b > 0.0) ? 1.0 : -1.0;  // towards the exact result
+            dir = (sr > 0.0) == (b > 0.0) ? 1.0 : -1.0;  // towards the exact result
         } else if (!(r < bestR)) {
             break;
         }
@@ -71,7 +72,7 @@ float correctlyRounded(bool root, float a, float b, float q, float boundFactor, 
 // neighbours; tested against 0.49, a little under half).
 float crDivFrom(float a, float b, float q) {
     if (isinf(q) || isnan(q) || q == 0.0) return q;
-    return correctlyRounded(false, a, b, q, 0.49, 3);
+    return correctlyRounded(a, b, q, 0.49, 3);
 }
 // From the device's quotient: Vulkan allows 2.5 ulp, and compilers may turn a division into
 // a multiplication by the reciprocal.
@@ -80,12 +81,51 @@ float crDiv(float a, float b) {
     return crDivFrom(a, b, q);
 }
 
-// sqrt(x) correctly rounded, from an approximation s of it. s is correctly rounded when
-// |x - s^2| < s gap, as (s +- gap / 2)^2 = s^2 +- s gap + gap^2 / 4 (tested against
-// 0.98 s gap).
+// sqrt(x) correctly rounded, from an approximation s of it (within 8 ulp), in integer
+// arithmetic. With x = X 2^(ex - 23) and s = S 2^(es - 23) (24-bit X, S), s is correctly
+// rounded when (S - 1/2)^2 < X 2^(ex - 2 es + 23) < (S + 1/2)^2, that is, times 4, when
+// (2S - 1)^2 < N < (2S + 1)^2 with N = X 2^(ex - 2 es + 25): with E = N - 4 S^2, when
+// -4S < E <= 4S (N and 4 S^2 are even; a tie, N = (2S +- 1)^2, would be odd; for S = 2^23
+// the bound below is -2S, sqrtStep). N reaches
+// 2^51, but E is small (8 S t for s t ulp off: under 2^31 within 8 ulp), so E is exact in
+// wrapping 32-bit arithmetic. One check, a step of round(E / 8S) ulp (the correction to
+// first order), a second check and a last step of one ulp (the first-order step can end
+// one ulp off): no float residual, no loop. (s, then every step, stays within the range
+// where sqrt of a normal float lies, so the shift is 24..27.)
+int sqrtResidual(uint X, int ex, uint bits, out int fourS) {
+    const uint S = (bits & 0x7fffffu) | 0x800000u;
+    const int shift = clamp(ex - 2 * int(bits >> 23u) + 152, 0, 31);  // biased: + 2 127 - 127 + 25
+    fourS = int(S << 2u);
+    return int((X << uint(shift)) - ((S * S) << 2u));
+}
+uint sqrtStep(uint X, int ex, uint bits, bool firstOrder) {
+    int fourS;
+    const int e = sqrtResidual(X, ex, bits, fourS);
+    if (firstOrder) {
+        // The step as a float addition, t ulp of s: exact, or rounded to the next binade's
+        // ulp where it crosses a power of two (a step in bits would be twice too long there).
+        const float t = round(float(e) / float(2 * fourS));
+        precise float moved = uintBitsToFloat(bits) + t * (uintBitsToFloat(bits & 0x7f800000u) * (1.0 / 8388608.0));
+        return floatBitsToUint(moved);
+    }
+    // Below a power of two (S = 2^23) the next float down is half an ulp away: the bound
+    // is (S - 1/4)^2, so E > -2S.
+    const int below = (bits & 0x7fffffu) == 0u ? fourS / 2 : fourS;
+    return e > fourS ? bits + 1u : (e <= -below ? bits - 1u : bits);
+}
 float crSqrtFrom(float x, float s) {
     if (!(x > 0.0) || isinf(x)) return s;
-    return correctlyRounded(true, x, 0.0, s, 0.98, 2);
+    // A subnormal x: the root of x 2^24 (normal), times 2^-12 (exact: the root is normal).
+    const bool tiny = x < 1.17549435e-38;  // 2^-126
+    precise float xs = x * 16777216.0;
+    const float xn = tiny ? xs : x;
+    const float sn = tiny ? sqrt(xn) : s;
+    const uint bx = floatBitsToUint(xn);
+    const uint X = (bx & 0x7fffffu) | 0x800000u;
+    const int ex = int(bx >> 23u);
+    const uint bits = sqrtStep(X, ex, sqrtStep(X, ex, floatBitsToUint(sn), true), false);
+    precise float r = uintBitsToFloat(bits) * (tiny ? 1.0 / 4096.0 : 1.0);
+    return r;
 }
 // From the device's square root (Vulkan: "inherited from 1 / inversesqrt").
 float crSqrt(float x) {

@@ -2,8 +2,9 @@
 // The exact float helpers (src/gpu/shaders/exact.glsl) on the device, for
 // GpuShaders.ExactHelpersMatchIeee: per input pair (a, b), the device's own a / b and
 // sqrt(a), crDiv(a, b), crSqrt(a), toUnorm8(a), and the corrections from deliberately wrong
-// starting values (a / b 2 ulp up and 2 ulp down, sqrt(a) 1 ulp up and down), which
-// exercise the correction loop on a device whose own results are already exact; and
+// starting values (a / b 2 ulp up and 2 ulp down, sqrt(a) 1 ulp (even pairs) or 7 ulp (odd
+// pairs) up and down), which exercise the corrections on a device whose own results are
+// already exact; and
 // levelOver4080(k) for k = 0..4080 (invocation k).
 #extension GL_GOOGLE_include_directive : require
 #include "../../../src/gpu/shaders/exact.glsl"
@@ -30,7 +31,9 @@ void main() {
     const bool finite = !isinf(q) && !isnan(q) && q != 0.0 && s > 0.0 && !isinf(s);
     const float qUp = finite ? nextFloat(nextFloat(q, 1.0), 1.0) : q;
     const float qDown = finite ? nextFloat(nextFloat(q, -1.0), -1.0) : q;
-    const float sUp = finite ? nextFloat(s, 1.0) : s, sDown = finite ? nextFloat(s, -1.0) : s;
+    const uint ulps = (i & 1u) != 0u ? 7u : 1u;
+    const float sUp = finite ? uintBitsToFloat(floatBitsToUint(s) + ulps) : s;
+    const float sDown = finite ? uintBitsToFloat(floatBitsToUint(s) - ulps) : s;
     results[o + 5] = floatBitsToUint(crDivFrom(a, b, qUp));
     results[o + 6] = floatBitsToUint(crDivFrom(a, b, qDown));
     results[o + 7] = floatBitsToUint(crSqrtFrom(a, sUp));
