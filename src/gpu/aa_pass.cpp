@@ -9,6 +9,7 @@
 #include <cstring>
 #include <iterator>
 
+#include "src/aa/ddaa_kernel.hpp"
 #include "src/gpu/shaders/aa_constants.h"
 #include "ssfx/core/error.hpp"
 #include "ssfx/vk/compute.hpp"
@@ -194,6 +195,19 @@ bool hasEdgePass(std::string_view id) {
     return id == "fxaa3c" || id == "fxaa3d" || id == "ddaa1" || id == "ddaa2" || id == "ddaa2p";
 }
 
+// ddaa2's edge search reads only half-way positions (weight 128 across, on a texel along)
+// for every realistic image size; the CPU checks its coordinate arithmetic per size
+// (searchReadsArePairReads) before its vector kernel reads luma planes instead. Where the
+// check holds, the model's edge pass reads those texel pairs by index (spec pairReads): the
+// same values, without coordinates or weights. The check only splits coordinates, so the
+// texture is a size with no pixels. O(W + H).
+bool searchReadsArePairReads(const AaParams& params, int w, int h) {
+    const Texture tex(ImageView<const Rgba8>(nullptr, w, h), Filtering::Gpu);
+    if (const auto* p = std::get_if<aa::Ddaa2Params>(&params))
+        return aa::detail::searchReadsArePairReads(tex, p->searchRounds);
+    return false;
+}
+
 constexpr vk::Format kOutputFormat = vk::Format::eR8G8B8A8Unorm;
 
 bool inputFormatOk(vk::Format f) { return f == vk::Format::eR8G8B8A8Unorm || f == vk::Format::eB8G8R8A8Unorm; }
@@ -228,6 +242,13 @@ struct AaPass::Impl {
     // classifies (SSFX_AA_STAGE_CLASSIFY), `edgePass` computes the listed edge pixels
     // (edge_list.glsl); `edges` holds the list.
     std::unique_ptr<vkx::ComputePipeline> edgePass, lumaPass;
+    // ddaa2 in model mode: `edgePass` reads the search's texels by index (spec
+    // pairReads), for the sizes where searchReadsArePairReads holds (remembered for the last
+    // size); `edgePassCoords` (made when first needed) reads at coordinates, for the others.
+    std::unique_ptr<vkx::ComputePipeline> edgePassCoords;
+    detail::AaSpecialization edgeSpec{};
+    int pairsW = -1, pairsH = -1;
+    bool pairsHold = false;
     vkx::Image luma;  // the luma plane (r32f, the input's size)
     vk::raii::ImageView lumaView{nullptr};
     vkx::Buffer edges;
@@ -309,7 +330,23 @@ struct AaPass::Impl {
         // The list and the unchanged pixels, before the indirect dispatch and the edge pixels.
         const vk::MemoryBarrier listed(A::eShaderWrite, A::eIndirectCommandRead | A::eShaderRead | A::eShaderWrite);
         cmd.pipelineBarrier(S::eComputeShader, S::eDrawIndirect | S::eComputeShader, {}, listed, {}, {});
-        dispatch(*edgePass, cmd, in, inLayout, out, c, *edges.buffer, true);
+        dispatch(edgePipeline(c.width, c.height), cmd, in, inLayout, out, c, *edges.buffer, true);
+    }
+
+    const vkx::ComputePipeline& edgePipeline(int w, int h) {
+        if (edgeSpec.pairReads == 0) return *edgePass;
+        if (w != pairsW || h != pairsH) {
+            pairsHold = searchReadsArePairReads(params, w, h);
+            pairsW = w;
+            pairsH = h;
+        }
+        if (pairsHold) return *edgePass;
+        if (!edgePassCoords) {
+            detail::AaSpecialization coords = edgeSpec;
+            coords.pairReads = 0;
+            edgePassCoords = makePipeline(*ctx, shaderFor(method->id), coords);
+        }
+        return *edgePassCoords;
     }
 
     // The luma plane to GENERAL with its old contents dropped, after an earlier recording's reads.
@@ -442,6 +479,13 @@ AaPass::AaPass(std::shared_ptr<vkx::Context> ctx, std::string_view method, const
             second.stage = SSFX_AA_STAGE_EDGES;
             second.groupX = SSFX_AA_EDGE_GROUP;
             second.groupY = 1;
+            // (fxaa3d's walk as quad reads by index was slower on lavapipe in a paired A/B run:
+            // its four fetches stay, and the coordinate path's arithmetic is cheap there.)
+            second.pairReads = sampling == Sampling::Model && std::holds_alternative<aa::Ddaa2Params>(m.params);
+            // Tests of the coordinate reads set SSFX_GPU_COORDINATE_READS (docs/gpu.md).
+            if (const char* v = std::getenv("SSFX_GPU_COORDINATE_READS"); v && std::string_view(v) == "1")
+                second.pairReads = 0;
+            m.edgeSpec = second;
             m.edgePass = makePipeline(c, shaderFor(m.method->id), second);
             detail::AaSpecialization lumaSpec = spec;
             lumaSpec.stage = SSFX_AA_STAGE_LUMA;

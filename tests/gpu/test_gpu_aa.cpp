@@ -155,6 +155,28 @@ TEST(GpuModelParityOnePass, ImagesOverTheListLimitGiveTheCpuBytes) {
     expectNoValidationMessages();
 }
 
+// ddaa2's search reads texel pairs by index where the CPU's per-size check says its
+// coordinates land half-way (every size above, as for the CPU's vector kernel); other sizes
+// read at coordinates. SSFX_GPU_COORDINATE_READS=1 (read when a
+// pass is made) sends every size down the coordinate reads: the same bytes.
+TEST(GpuModelParityCoordinateReads, SearchReadsAtCoordinatesGiveTheCpuBytes) {
+    REQUIRE_DEVICE();
+    ASSERT_EQ(setenv("SSFX_GPU_COORDINATE_READS", "1", 1), 0);
+    for (const char* id : {"ddaa2", "ddaa2p"}) {
+        const MethodInfo& m = methodById(id);
+        gpu::AaPass pass(context(), m.id);
+        unsigned seed = 60;
+        for (const Case& c : {Case{"random 64x48", 64, 48}, Case{"random 37x23", 37, 23}}) {
+            const ImageRgba8 in = inputFor(c, m.inputScale, seed++);
+            const Diff d = compare(pass.run(in.view()), m.run(in.view(), {}, Exec{}));
+            EXPECT_EQ(d.pixels, 0) << m.id << " on " << c.name << ": " << d.pixels << " pixels differ, by up to "
+                                   << d.largest;
+        }
+    }
+    unsetenv("SSFX_GPU_COORDINATE_READS");
+    expectNoValidationMessages();
+}
+
 // The shaders write the paper's decimal constants as GLSL literals, which glslang reads
 // in double and rounds to float; C++ rounds `0.299f` once. The two agree for these values.
 TEST(GpuShaders, DecimalLiteralsRoundTheSameInGlslAndCpp) {

@@ -10,8 +10,17 @@
 const int kBatch = 3;  // samples per round: EDGE_STEP_LIST = [3, 3, 3, 3, 3]
 
 // The luma of the search read at c moved `move` (texture units) along the edge, plus texel
-// offset k along it, minus localAverage.
-float searchDelta(bool horizontal, float cu, float cv, float move, int k, float localAverage) {
+// offset k along it, minus localAverage. With spec_pairReads (aa_pass.cpp: the CPU's
+// searchReadsArePairReads holds for this size) that read is the pair read of the texels
+// `along` pixels from (x, y) along the edge, across at rows/columns +a0 and +a0 + 1: the
+// same value from two fetches and no coordinate arithmetic.
+float searchDelta(int x, int y, int a0, int along, bool horizontal, float cu, float cv, float move, int k,
+                  float localAverage) {
+    if (spec_pairReads != 0) {
+        const ivec2 p = horizontal ? ivec2(x + along, y + a0) : ivec2(x + a0, y + along);
+        precise float d = edgeLuma(pairRead(p, p + (horizontal ? ivec2(0, 1) : ivec2(1, 0)))) - localAverage;
+        return d;
+    }
     // One read, its coordinates chosen by value: a branch with a read on each side would
     // cost both reads on drivers that run shaders as masked SIMD code (lavapipe).
     precise float movedU = cu + move;
@@ -34,6 +43,7 @@ float edgeSearchOffset(int x, int y, Luma3x3 n, EdgeSides s) {
     precise float gradientScaled = 0.25 * maxf(abs(s.g1), abs(s.g2));
     precise float localAverage = (lumaSteep + n.C) * 0.5;
     const int across = steep2 ? 1 : -1;
+    const int a0 = steep2 ? 0 : -1;  // the search reads between rows/columns +a0 and +a0 + 1
 
     // First positions, free: the neighbours along the edge and their diagonals on the steep side.
     precise float first1, first2;
@@ -61,18 +71,19 @@ float edgeSearchOffset(int x, int y, Luma3x3 n, EdgeSides s) {
     bool done1 = abs(delta1) >= gradientScaled, done2 = abs(delta2) >= gradientScaled;
     float d1 = 1.0, d2 = 1.0;
     for (int r = 0; r < pc.searchRounds && !(done1 && done2); ++r) {
-        precise float move = r == 0 ? 0.0 : float(kBatch * r + 2) * invAlong;
+        const int moved = r == 0 ? 0 : kBatch * r + 2;  // pixels
+        precise float move = float(moved) * invAlong;
         for (int k = r == 0 ? 1 : 0; k < kBatch; ++k) {
             const int offset = r == 0 ? k + 1 : k - 1;  // texel offset from the round's coordinate
             if (!done1) {
-                delta1 = searchDelta(s.horizontal, cu, cv, -move, -offset, localAverage);
+                delta1 = searchDelta(x, y, a0, -(moved + offset), s.horizontal, cu, cv, -move, -offset, localAverage);
                 if (abs(delta1) >= gradientScaled) {
                     done1 = true;
                     d1 = float(roundPosition(r, r == 0 ? k - 1 : k));
                 }
             }
             if (!done2) {
-                delta2 = searchDelta(s.horizontal, cu, cv, move, offset, localAverage);
+                delta2 = searchDelta(x, y, a0, moved + offset, s.horizontal, cu, cv, move, offset, localAverage);
                 if (abs(delta2) >= gradientScaled) {
                     done2 = true;
                     d2 = float(roundPosition(r, r == 0 ? k - 1 : k));

@@ -86,6 +86,14 @@ vec3 sampleModel(AxisPos ax, AxisPos ay, int ox, int oy) {
     return vec3(sixteenthLevel(k.r), sixteenthLevel(k.g), sixteenthLevel(k.b));
 }
 
+// The GPU-model read half-way between texels a and b (weights 128 and 0 or 256): the sum
+// of sampleModel is 32768 (a + b), so k = 8 (a + b). Texels clamped like every fetch. The
+// CPU's pair planes hold these values (src/aa/luma_planes.hpp).
+vec3 pairRead(ivec2 a, ivec2 b) {
+    const uvec3 k = 8u * (texel8(a.x, a.y) + texel8(b.x, b.y));
+    return vec3(sixteenthLevel(k.r), sixteenthLevel(k.g), sixteenthLevel(k.b));
+}
+
 // A bilinear read at texture coordinate (u, v) plus an integer texel offset: the model, or
 // the device's sampler (the offset added in texture units: not exact, the fast path).
 vec3 sampleAt(float u, float v, int ox, int oy) {
