@@ -191,6 +191,11 @@ void ddaa2(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Ddaa2Params& p
 ImageRgba8 ddaa2(ImageView<const Rgba8> in, const Ddaa2Params& p, const Exec& exec) {
     return detail::newOutput("ddaa2", in, [&](ImageView<Rgba8> out) { detail::run(in, out, p, exec, false); });
 }
+bool ddaa2SearchReadsArePairReads(int width, int height, int searchRounds) {
+    // The check only splits coordinates: a texture of that size with no pixels.
+    return detail::searchReadsArePairReads(Texture(ImageView<const Rgba8>(nullptr, width, height), Filtering::Gpu),
+                                           searchRounds);
+}
 ImageRgba8 ddaa2Reference(ImageView<const Rgba8> in, const Ddaa2Params& p) {
     return detail::newOutput("ddaa2", in, [&](ImageView<Rgba8> out) { detail::run(in, out, p, Exec{1}, true); });
 }

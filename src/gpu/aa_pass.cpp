@@ -9,8 +9,8 @@
 #include <cstring>
 #include <iterator>
 
-#include "src/aa/ddaa_kernel.hpp"
 #include "src/gpu/shaders/aa_constants.h"
+#include "ssfx/aa/ddaa.hpp"
 #include "ssfx/core/error.hpp"
 #include "ssfx/vk/compute.hpp"
 #include "ssfx/vk/timer.hpp"
@@ -199,13 +199,10 @@ bool hasEdgePass(std::string_view id) {
 // for every realistic image size; the CPU checks its coordinate arithmetic per size
 // (searchReadsArePairReads) before its vector kernel reads luma planes instead. Where the
 // check holds, the model's edge pass reads those texel pairs by index (spec pairReads): the
-// same values, without coordinates or weights. The check only splits coordinates, so the
-// texture is a size with no pixels. O(W + H).
+// same values, without coordinates or weights. O(W + H).
 bool searchReadsArePairReads(const AaParams& params, int w, int h) {
-    const Texture tex(ImageView<const Rgba8>(nullptr, w, h), Filtering::Gpu);
-    if (const auto* p = std::get_if<aa::Ddaa2Params>(&params))
-        return aa::detail::searchReadsArePairReads(tex, p->searchRounds);
-    return false;
+    const auto* p = std::get_if<aa::Ddaa2Params>(&params);
+    return p && aa::ddaa2SearchReadsArePairReads(w, h, p->searchRounds);
 }
 
 constexpr vk::Format kOutputFormat = vk::Format::eR8G8B8A8Unorm;

@@ -69,6 +69,11 @@ ImageRgba8 ddaa1Reference(ImageView<const Rgba8> in, const Ddaa1Params& params =
 ImageRgba8 ddaa2(ImageView<const Rgba8> in, const Ddaa2Params& params = {}, const Exec& exec = {});
 void ddaa2(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Ddaa2Params& params = {}, const Exec& exec = {});
 ImageRgba8 ddaa2Reference(ImageView<const Rgba8> in, const Ddaa2Params& params = {});
+//! True when, on a width x height image (GPU filtering model), every read of ddaa2's edge
+//! search with `searchRounds` rounds lands exactly half-way between two texels across the
+//! edge and on a texel along it, so it is a function of those two texels (true for every
+//! realistic size; the CPU's vector kernel and the GPU pass rely on it). O(W + H).
+bool ddaa2SearchReadsArePairReads(int width, int height, int searchRounds);
 
 //! ddaa2 on the 2x image `in2x`, then ssaax2: output is half its size (in2x must have even sizes).
 ImageRgba8 ddaa2p(ImageView<const Rgba8> in2x, const Ddaa2Params& params = {}, const Exec& exec = {});
