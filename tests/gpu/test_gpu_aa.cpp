@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <initializer_list>
 
 #include "ssfx/core/error.hpp"
 #include "ssfx/gpu/aa.hpp"
@@ -133,48 +134,44 @@ TEST_P(GpuModelParity, ReferenceDrawingsGiveTheCpuBytes) {
     expectNoValidationMessages();
 }
 
-// The edge-test methods list their edge pixels for a second pass; an image with more pixels
-// than a storage buffer's list could hold runs them in one pass instead. A lowered limit
-// (SSFX_GPU_EDGE_LIST_MAX_PIXELS, read when a pass is made) sends these images down that
-// path, and a small one down the list's: both must give the CPU's bytes.
-TEST(GpuModelParityOnePass, ImagesOverTheListLimitGiveTheCpuBytes) {
-    REQUIRE_DEVICE();
-    ASSERT_EQ(setenv("SSFX_GPU_EDGE_LIST_MAX_PIXELS", "1000", 1), 0);
-    for (const char* id : {"fxaa3c", "fxaa3d", "ddaa1", "ddaa2", "ddaa2p"}) {
+// Runs `ids` on `cases` (random images, seeds from `seed`) with the environment variable
+// `var` set to `value` (read when a pass is made): each output must be the CPU's bytes.
+void expectCpuBytesWith(const char* var, const char* value, std::initializer_list<const char*> ids,
+                        std::initializer_list<Case> cases, unsigned seed) {
+    ASSERT_EQ(setenv(var, value, 1), 0);
+    for (const char* id : ids) {
         const MethodInfo& m = methodById(id);
         gpu::AaPass pass(context(), m.id);
-        unsigned seed = 40;
-        for (const Case& c : {Case{"random 64x48, one pass", 64, 48}, Case{"random 30x20, two passes", 30, 20}}) {
-            const ImageRgba8 in = inputFor(c, m.inputScale, seed++);
+        unsigned s = seed;
+        for (const Case& c : cases) {
+            const ImageRgba8 in = inputFor(c, m.inputScale, s++);
             const Diff d = compare(pass.run(in.view()), m.run(in.view(), {}, Exec{}));
-            EXPECT_EQ(d.pixels, 0) << m.id << " on " << c.name << ": " << d.pixels << " pixels differ, by up to "
-                                   << d.largest;
+            EXPECT_EQ(d.pixels, 0) << m.id << " on " << c.name << " with " << var << "=" << value << ": " << d.pixels
+                                   << " pixels differ, by up to " << d.largest;
         }
     }
-    unsetenv("SSFX_GPU_EDGE_LIST_MAX_PIXELS");
+    unsetenv(var);
     expectNoValidationMessages();
+}
+
+// The edge-test methods list their edge pixels for a second pass; an image with more pixels
+// than a storage buffer's list could hold runs them in one pass instead. A lowered limit
+// (SSFX_GPU_EDGE_LIST_MAX_PIXELS) sends these images down that path, and a small one down
+// the list's: both must give the CPU's bytes.
+TEST(GpuModelParityOnePass, ImagesOverTheListLimitGiveTheCpuBytes) {
+    REQUIRE_DEVICE();
+    expectCpuBytesWith("SSFX_GPU_EDGE_LIST_MAX_PIXELS", "1000", {"fxaa3c", "fxaa3d", "ddaa1", "ddaa2", "ddaa2p"},
+                       {Case{"random 64x48, one pass", 64, 48}, Case{"random 30x20, two passes", 30, 20}}, 40);
 }
 
 // ddaa2's search reads texel pairs by index where the CPU's per-size check says its
 // coordinates land half-way (every size above, as for the CPU's vector kernel); other sizes
-// read at coordinates. SSFX_GPU_COORDINATE_READS=1 (read when a
-// pass is made) sends every size down the coordinate reads: the same bytes.
+// read at coordinates. SSFX_GPU_COORDINATE_READS=1 sends every size down the coordinate
+// reads: the same bytes.
 TEST(GpuModelParityCoordinateReads, SearchReadsAtCoordinatesGiveTheCpuBytes) {
     REQUIRE_DEVICE();
-    ASSERT_EQ(setenv("SSFX_GPU_COORDINATE_READS", "1", 1), 0);
-    for (const char* id : {"ddaa2", "ddaa2p"}) {
-        const MethodInfo& m = methodById(id);
-        gpu::AaPass pass(context(), m.id);
-        unsigned seed = 60;
-        for (const Case& c : {Case{"random 64x48", 64, 48}, Case{"random 37x23", 37, 23}}) {
-            const ImageRgba8 in = inputFor(c, m.inputScale, seed++);
-            const Diff d = compare(pass.run(in.view()), m.run(in.view(), {}, Exec{}));
-            EXPECT_EQ(d.pixels, 0) << m.id << " on " << c.name << ": " << d.pixels << " pixels differ, by up to "
-                                   << d.largest;
-        }
-    }
-    unsetenv("SSFX_GPU_COORDINATE_READS");
-    expectNoValidationMessages();
+    expectCpuBytesWith("SSFX_GPU_COORDINATE_READS", "1", {"ddaa2", "ddaa2p"},
+                       {Case{"random 64x48", 64, 48}, Case{"random 37x23", 37, 23}}, 60);
 }
 
 // The shaders write the paper's decimal constants as GLSL literals, which glslang reads
