@@ -152,8 +152,7 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Ddaa2Params& p, 
     // The vector kernel across pixels: GPU filtering model, and search reads provably equal
     // to pair-plane lookups for this size (else everything takes the scalar kernel).
     const bool vector = !scalar && p.filtering == Filtering::Gpu &&
-                        oncePerSize(in.width(), in.height(), p.searchRounds,
-                                    [&] { return searchReadsArePairReads(tex, p.searchRounds); }) &&
+                        ddaa2SearchReadsArePairReads(in.width(), in.height(), p.searchRounds) &&
                         planesFitGatherIndices(in.width());
     // The search reads up to 3 searchRounds texels along the edge: plane rows y - 3 r .. y + 3 r.
     PlaneNeeds needs;
@@ -192,9 +191,12 @@ ImageRgba8 ddaa2(ImageView<const Rgba8> in, const Ddaa2Params& p, const Exec& ex
     return detail::newOutput("ddaa2", in, [&](ImageView<Rgba8> out) { detail::run(in, out, p, exec, false); });
 }
 bool ddaa2SearchReadsArePairReads(int width, int height, int searchRounds) {
-    // The check only splits coordinates: a texture of that size with no pixels.
-    return detail::searchReadsArePairReads(Texture(ImageView<const Rgba8>(nullptr, width, height), Filtering::Gpu),
-                                           searchRounds);
+    // The check only splits coordinates: a texture of that size with no pixels. Remembered
+    // for the last size (per thread), as a frame loop asks once per frame.
+    return detail::oncePerSize(width, height, searchRounds, [&] {
+        return detail::searchReadsArePairReads(Texture(ImageView<const Rgba8>(nullptr, width, height), Filtering::Gpu),
+                                               searchRounds);
+    });
 }
 ImageRgba8 ddaa2Reference(ImageView<const Rgba8> in, const Ddaa2Params& p) {
     return detail::newOutput("ddaa2", in, [&](ImageView<Rgba8> out) { detail::run(in, out, p, Exec{1}, true); });

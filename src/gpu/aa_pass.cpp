@@ -195,16 +195,6 @@ bool hasEdgePass(std::string_view id) {
     return id == "fxaa3c" || id == "fxaa3d" || id == "ddaa1" || id == "ddaa2" || id == "ddaa2p";
 }
 
-// ddaa2's edge search reads only half-way positions (weight 128 across, on a texel along)
-// for every realistic image size; the CPU checks its coordinate arithmetic per size
-// (searchReadsArePairReads) before its vector kernel reads luma planes instead. Where the
-// check holds, the model's edge pass reads those texel pairs by index (spec pairReads): the
-// same values, without coordinates or weights. O(W + H).
-bool searchReadsArePairReads(const AaParams& params, int w, int h) {
-    const auto* p = std::get_if<aa::Ddaa2Params>(&params);
-    return p && aa::ddaa2SearchReadsArePairReads(w, h, p->searchRounds);
-}
-
 constexpr vk::Format kOutputFormat = vk::Format::eR8G8B8A8Unorm;
 
 bool inputFormatOk(vk::Format f) { return f == vk::Format::eR8G8B8A8Unorm || f == vk::Format::eB8G8R8A8Unorm; }
@@ -239,13 +229,14 @@ struct AaPass::Impl {
     // classifies (SSFX_AA_STAGE_CLASSIFY), `edgePass` computes the listed edge pixels
     // (edge_list.glsl); `edges` holds the list.
     std::unique_ptr<vkx::ComputePipeline> edgePass, lumaPass;
-    // ddaa2 in model mode: `edgePass` reads the search's texels by index (spec
-    // pairReads), for the sizes where searchReadsArePairReads holds (remembered for the last
-    // size); `edgePassCoords` (made when first needed) reads at coordinates, for the others.
+    // ddaa2 in model mode: its edge search reads only half-way positions (weight 128 across,
+    // on a texel along) for every realistic size, which the CPU checks per size before its
+    // vector kernel reads pair planes (aa::ddaa2SearchReadsArePairReads). Where the check
+    // holds, `edgePass` reads those texel pairs by index (spec pairReads: the same values,
+    // without coordinates or weights); `edgePassCoords` (made when first needed) reads at
+    // coordinates, for the other sizes.
     std::unique_ptr<vkx::ComputePipeline> edgePassCoords;
     detail::AaSpecialization edgeSpec{};
-    int pairsW = -1, pairsH = -1;
-    bool pairsHold = false;
     vkx::Image luma;  // the luma plane (r32f, the input's size)
     vk::raii::ImageView lumaView{nullptr};
     vkx::Buffer edges;
@@ -331,13 +322,9 @@ struct AaPass::Impl {
     }
 
     const vkx::ComputePipeline& edgePipeline(int w, int h) {
-        if (edgeSpec.pairReads == 0) return *edgePass;
-        if (w != pairsW || h != pairsH) {
-            pairsHold = searchReadsArePairReads(params, w, h);
-            pairsW = w;
-            pairsH = h;
-        }
-        if (pairsHold) return *edgePass;
+        if (edgeSpec.pairReads == 0 ||
+            aa::ddaa2SearchReadsArePairReads(w, h, std::get<aa::Ddaa2Params>(params).searchRounds))
+            return *edgePass;
         if (!edgePassCoords) {
             detail::AaSpecialization coords = edgeSpec;
             coords.pairReads = 0;

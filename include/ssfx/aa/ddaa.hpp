@@ -72,7 +72,8 @@ ImageRgba8 ddaa2Reference(ImageView<const Rgba8> in, const Ddaa2Params& params =
 //! True when, on a width x height image (GPU filtering model), every read of ddaa2's edge
 //! search with `searchRounds` rounds lands exactly half-way between two texels across the
 //! edge and on a texel along it, so it is a function of those two texels (true for every
-//! realistic size; the CPU's vector kernel and the GPU pass rely on it). O(W + H).
+//! realistic size; the CPU's vector kernel and the GPU pass rely on it). O(W + H), and
+//! remembered for the last size asked on the calling thread.
 bool ddaa2SearchReadsArePairReads(int width, int height, int searchRounds);
 
 //! ddaa2 on the 2x image `in2x`, then ssaax2: output is half its size (in2x must have even sizes).

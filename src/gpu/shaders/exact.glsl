@@ -1,8 +1,7 @@
 // Exact float helpers of the model sampling mode (ppaa.glsl's header says why): correctly
 // rounded division (with Dekker's exact product) and square root (with an integer residual)
-// from the device's results, and the
-// exact float-to-8-bit conversion. Self-contained (no bindings): tests/gpu/shaders/exact.comp
-// checks them against the CPU's IEEE results.
+// from the device's results, and the exact float-to-8-bit conversion. Self-contained (no
+// bindings): tests/gpu/shaders/exact.comp checks them against the CPU's IEEE results.
 
 // a * b == p + e exactly (Dekker 1971, with Veltkamp's split; needs only correctly rounded
 // multiply and add, which Vulkan guarantees), for |a|, |b| < 2^114 (4097 a must not
@@ -86,9 +85,8 @@ float crDiv(float a, float b) {
 // rounded when (S - 1/2)^2 < X 2^(ex - 2 es + 23) < (S + 1/2)^2, that is, times 4, when
 // (2S - 1)^2 < N < (2S + 1)^2 with N = X 2^(ex - 2 es + 25): with E = N - 4 S^2, when
 // -4S < E <= 4S (N and 4 S^2 are even; a tie, N = (2S +- 1)^2, would be odd; for S = 2^23
-// the bound below is -2S, sqrtStep). N reaches
-// 2^51, but E is small (8 S t for s t ulp off: under 2^31 within 8 ulp), so E is exact in
-// wrapping 32-bit arithmetic. One check, a step of round(E / 8S) ulp (the correction to
+// the bound below is -2S, sqrtStep). N reaches 2^51, but E is small (8 S t for s t ulp off:
+// under 2^31 within 8 ulp), so E is exact in wrapping 32-bit arithmetic. One check, a step of round(E / 8S) ulp (the correction to
 // first order), a second check and a last step of one ulp (the first-order step can end
 // one ulp off): no float residual, no loop. (s, then every step, stays within the range
 // where sqrt of a normal float lies, so the shift is 24..27.)
