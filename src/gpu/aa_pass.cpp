@@ -201,6 +201,9 @@ bool inputFormatOk(vk::Format f) { return f == vk::Format::eR8G8B8A8Unorm || f =
 
 std::uint32_t groups(std::uint32_t n) { return vkx::groupCount(n, SSFX_AA_GROUP); }
 
+// The luma plane's width in texels (ppaa.glsl: lumaPlaneWidth).
+std::uint32_t lumaPlaneWidth(int width) { return vkx::groupCount(std::uint32_t(width), SSFX_AA_LUMA_PACK); }
+
 }  // namespace
 
 std::string_view samplingName(Sampling s) { return s == Sampling::Hardware ? "hardware" : "model"; }
@@ -237,7 +240,7 @@ struct AaPass::Impl {
     // coordinates, for the other sizes.
     std::unique_ptr<vkx::ComputePipeline> edgePassCoords;
     detail::AaSpecialization edgeSpec{};
-    vkx::Image luma;  // the luma plane (r32f, the input's size)
+    vkx::Image luma;  // the luma plane (rgba32f, 4 lumas per texel: ppaa.glsl)
     vk::raii::ImageView lumaView{nullptr};
     vkx::Buffer edges;
     vk::DeviceSize edgeCapacity = 0;  // pixels the list can hold
@@ -251,12 +254,16 @@ struct AaPass::Impl {
     std::unique_ptr<vkx::GpuTimer> timer;
     double lastMs = 0;
 
+    // What a dispatch's invocations cover: the output's pixels, the luma plane's texels (the
+    // luma and classify dispatches), or the edge list (indirect).
+    enum class Grid { Pixels, LumaTexels, EdgeList };
+
     // Records one dispatch of p over the output; `list`: the edge list (or, for a shader that
     // declares it without using it, a stand-in) at SSFX_AA_BINDING_EDGES, with the luma plane
     // (or its stand-in) at SSFX_AA_BINDING_LUMA: the edge methods' shaders declare both.
     void dispatch(const vkx::ComputePipeline& p, const vk::raii::CommandBuffer& cmd, vk::ImageView in,
                   vk::ImageLayout inLayout, vk::ImageView out, const AaConstants& c, vk::Buffer list = {},
-                  bool indirect = false) const {
+                  Grid grid = Grid::Pixels) const {
         const vk::DescriptorImageInfo inInfo(*sampler, in, inLayout);
         const vk::DescriptorImageInfo outInfo(nullptr, out, vk::ImageLayout::eGeneral);
         const vk::DescriptorBufferInfo tableInfo(*tables.buffer, 0, VK_WHOLE_SIZE);
@@ -270,10 +277,12 @@ struct AaPass::Impl {
             {{}, SSFX_AA_BINDING_LUMA, 0, vk::DescriptorType::eStorageImage, lumaInfo},
         };
         const std::span<const vk::WriteDescriptorSet> used(writes, list ? 5 : 3);
-        if (indirect)
+        if (grid == Grid::EdgeList)
             p.dispatchPushedIndirect(cmd, used, &c, list, 0);
         else
-            p.dispatchPushed(cmd, used, &c, groups(std::uint32_t(c.outWidth)), groups(std::uint32_t(c.outHeight)));
+            p.dispatchPushed(cmd, used, &c,
+                             groups(grid == Grid::LumaTexels ? lumaPlaneWidth(c.width) : std::uint32_t(c.outWidth)),
+                             groups(std::uint32_t(c.outHeight)));
     }
 
     // Records the method's own shader (not ddaa2p's resolve) from `in` to `out`: for an
@@ -296,7 +305,7 @@ struct AaPass::Impl {
             return;
         }
         ensureEdges(pixels);
-        ensureLuma(std::uint32_t(c.width), std::uint32_t(c.height));
+        ensureLuma(lumaPlaneWidth(c.width), std::uint32_t(c.height));
         using S = vk::PipelineStageFlagBits;
         using A = vk::AccessFlagBits;
         // Before this recording's writes, an earlier recording's reads of the list and the luma
@@ -310,15 +319,15 @@ struct AaPass::Impl {
                                               VK_WHOLE_SIZE);
         // The luma plane is written whole by the luma pass: its old contents are dropped.
         cmd.pipelineBarrier(S::eTransfer | S::eComputeShader, S::eComputeShader, {}, {}, cleared, lumaDiscarded());
-        dispatch(*lumaPass, cmd, in, inLayout, out, c, *edges.buffer);
+        dispatch(*lumaPass, cmd, in, inLayout, out, c, *edges.buffer, Grid::LumaTexels);
         // The luma plane, before the classify pass reads it.
         const vk::MemoryBarrier lumaWritten(A::eShaderWrite, A::eShaderRead | A::eShaderWrite);
         cmd.pipelineBarrier(S::eComputeShader, S::eComputeShader, {}, lumaWritten, {}, {});
-        dispatch(*pipeline, cmd, in, inLayout, out, c, *edges.buffer);
+        dispatch(*pipeline, cmd, in, inLayout, out, c, *edges.buffer, Grid::LumaTexels);
         // The list and the unchanged pixels, before the indirect dispatch and the edge pixels.
         const vk::MemoryBarrier listed(A::eShaderWrite, A::eIndirectCommandRead | A::eShaderRead | A::eShaderWrite);
         cmd.pipelineBarrier(S::eComputeShader, S::eDrawIndirect | S::eComputeShader, {}, listed, {}, {});
-        dispatch(edgePipeline(c.width, c.height), cmd, in, inLayout, out, c, *edges.buffer, true);
+        dispatch(edgePipeline(c.width, c.height), cmd, in, inLayout, out, c, *edges.buffer, Grid::EdgeList);
     }
 
     const vkx::ComputePipeline& edgePipeline(int w, int h) {
@@ -343,11 +352,11 @@ struct AaPass::Impl {
 
     void ensureLuma(std::uint32_t w, std::uint32_t h) {
         if (*luma.image && luma.width == w && luma.height == h) return;
-        luma = ctx->createImage(vk::Format::eR32Sfloat, w, h, vk::ImageUsageFlagBits::eStorage,
+        luma = ctx->createImage(vk::Format::eR32G32B32A32Sfloat, w, h, vk::ImageUsageFlagBits::eStorage,
                                 vk::ImageAspectFlagBits::eColor);
         lumaView = vk::raii::ImageView(
             ctx->device,
-            vk::ImageViewCreateInfo({}, *luma.image, vk::ImageViewType::e2D, vk::Format::eR32Sfloat, {},
+            vk::ImageViewCreateInfo({}, *luma.image, vk::ImageViewType::e2D, vk::Format::eR32G32B32A32Sfloat, {},
                                     vk::ImageSubresourceRange(vk::ImageAspectFlagBits::eColor, 0, 1, 0, 1)));
     }
 

@@ -91,7 +91,11 @@ SSFX_AA_SPECIALIZATION(SSFX_AA_SPEC_DECL)
 #define SSFX_AA_BINDING_OUTPUT 1  // storage image rgba8: the output
 #define SSFX_AA_BINDING_TABLES 2  // storage buffer: the tables below
 #define SSFX_AA_BINDING_EDGES 3   // storage buffer: the edge list (the two-pass methods)
-#define SSFX_AA_BINDING_LUMA 4    // storage image r32f: the luma plane (the two-pass methods)
+#define SSFX_AA_BINDING_LUMA 4    // storage image rgba32f: the luma plane (the two-pass methods)
+
+// The luma plane packs this many horizontally adjacent lumas per texel (ppaa.glsl); the luma
+// and classify dispatches run one invocation per texel.
+#define SSFX_AA_LUMA_PACK 4
 
 // The tables buffer (floats): the 16 Mitchell weights of the x4 resolve per axis (read at
 // indices that are the same for every invocation; the model's levels k / 4080 are computed,

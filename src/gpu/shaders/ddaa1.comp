@@ -5,7 +5,7 @@
 #include "ppaa.glsl"
 #include "ddaa.glsl"
 
-bool edgeAt(int x, int y) { return edgeAt3x3(x, y); }
+bool edgeAt(int x, int y, Luma3x3 n) { return edgeAt3x3(n); }
 vec3 edgeColour(int x, int y) {
     const Luma3x3 n = neighbourhood(x, y);
     return diffuse(x, y, diffusion(n, edgeSides(n)), 0.0, 0.0);

@@ -106,7 +106,7 @@ float edgeSearchOffset(int x, int y, Luma3x3 n, EdgeSides s) {
 }
 
 // The colour of an edge pixel: the diffusion, moved by the edge search's offset.
-bool edgeAt(int x, int y) { return edgeAt3x3(x, y); }
+bool edgeAt(int x, int y, Luma3x3 n) { return edgeAt3x3(n); }
 vec3 edgeColour(int x, int y) {
     const Luma3x3 n = neighbourhood(x, y);
     const EdgeSides s = edgeSides(n);

@@ -1,11 +1,16 @@
 // The three dispatches of the methods with an edge test (aa_constants.h: SSFX_AA_STAGE_*),
 // shared. Included last by a method's shader (with SSFX_TILE defined), which defines
-//   bool edgeAt(int x, int y): the early-exit test says edge (spec ppaa.md section 1), and
+//   bool edgeAt(int x, int y, Luma3x3 n): the early-exit test says edge (spec ppaa.md
+//     section 1), n the pixel's 3x3 lumas, and
 //   vec3 edgeColour(int x, int y): the method's colour for an edge pixel.
-// LUMA writes the luma plane (each texel's edgeLuma once, ppaa.glsl's lumaAt reads it);
-// CLASSIFY (16 x 16 groups) writes every pixel below the edge threshold unchanged and lists
-// the edge pixels; EDGES (an indirect dispatch of 64 x 1 groups) computes the listed pixels.
-// Why: a driver that runs shaders as masked SIMD code (lavapipe) runs the whole edge
+// LUMA writes the luma plane (each texel's edgeLuma once, four per plane texel: ppaa.glsl's
+// lumaAt reads it) and copies every pixel to the output unchanged; CLASSIFY lists the edge
+// pixels; EDGES (an indirect dispatch of 64 x 1 groups) computes the listed pixels over their
+// copies. LUMA and CLASSIFY run one invocation per plane texel (four pixels of a row) in
+// 16 x 16 groups: a CPU driver pays per invocation, and CLASSIFY reads the 3x3 lumas of four
+// pixels from 5 to 9 plane loads, not 20 to 36 (lavapipe at 1920x1080: the two dispatches
+// took 80 ms with one pixel per invocation and an r32f plane, 37 ms like this).
+// Why a list: a driver that runs shaders as masked SIMD code (lavapipe) runs the whole edge
 // computation, search loops included, for every group of lanes that holds one edge pixel,
 // and about 40 % of 8-pixel runs hold one; from the list every lane is an edge pixel. The
 // list's order depends on the atomics, the output does not: each pixel is computed on its
@@ -17,12 +22,32 @@ layout(set = 0, binding = SSFX_AA_BINDING_EDGES, std430) buffer EdgeList {
     uint pixels[];                   // x | y << 16
 } edges;
 
-void appendEdge(ivec2 p) {
-    const uint slot = atomicAdd(edges.count, 1u);
-    edges.pixels[slot] = uint(p.x) | (uint(p.y) << 16u);
-    // groupsX = min(ceil(count / SSFX_AA_EDGE_GROUP), spec_edgeGroups) as the list grows.
-    const uint group = uint(SSFX_AA_EDGE_GROUP);
-    if (slot % group == 0u && slot / group < uint(spec_edgeGroups)) atomicAdd(edges.groupsX, 1u);
+// Appends the edge pixels among `n` candidates (`edge[i]`: pixel (x0 + i, y)) with one
+// atomic: their slots are consecutive. groupsX = min(ceil(count / SSFX_AA_EDGE_GROUP),
+// spec_edgeGroups) as the list grows.
+void appendEdges(int x0, int y, bool edge[SSFX_AA_LUMA_PACK]) {
+    uint n = 0u;
+    for (int i = 0; i < SSFX_AA_LUMA_PACK; ++i) n += edge[i] ? 1u : 0u;
+    if (n == 0u) return;
+    uint slot = atomicAdd(edges.count, n);
+    const uint group = uint(SSFX_AA_EDGE_GROUP), most = uint(spec_edgeGroups);
+    const uint before = min((slot + group - 1u) / group, most), after = min((slot + n + group - 1u) / group, most);
+    if (after > before) atomicAdd(edges.groupsX, after - before);
+    for (int i = 0; i < SSFX_AA_LUMA_PACK; ++i)
+        if (edge[i]) edges.pixels[slot++] = uint(x0 + i) | (uint(y) << 16u);
+}
+
+// The luma plane's texel and its neighbours' lumas in one row: `l[0]` the pixel left of the
+// texel, `l[1..4]` its four, `l[5]` the pixel right of it, clamped to the image (the plane's
+// padding past the last column already holds the last column's luma).
+struct LumaRow {
+    float l[SSFX_AA_LUMA_PACK + 2];
+};
+LumaRow lumaRow(int q, int y) {
+    const vec4 mid = lumaTexel(q, y);
+    const float left = q > 0 ? lumaTexel(q - 1, y).w : mid.x;
+    const float right = (q + 1) * SSFX_AA_LUMA_PACK < pc.width ? lumaTexel(q + 1, y).x : mid.w;
+    return LumaRow(float[SSFX_AA_LUMA_PACK + 2](left, mid.x, mid.y, mid.z, mid.w, right));
 }
 
 void main() {
@@ -35,21 +60,41 @@ void main() {
         }
         return;
     }
+    // The luma and classify dispatches: one invocation per luma-plane texel (q, y), pixels
+    // x0 .. x0 + 3 of row y.
+    const int q = int(gl_GlobalInvocationID.x), y = int(gl_GlobalInvocationID.y);
+    const int x0 = q * SSFX_AA_LUMA_PACK;
     if (spec_stage == SSFX_AA_STAGE_LUMA) {
-        ivec2 p;
-        if (outputPixel(p)) imageStore(lumaPlane, p, vec4(edgeLuma(fetchValue(p.x, p.y))));
+        if (q >= lumaPlaneWidth() || y >= pc.height) return;
+        // The lumas, and the pixels copied to the output unchanged (the texel as fetched, as
+        // noaa stores it): the edge dispatch overwrites the edge pixels.
+        float l[SSFX_AA_LUMA_PACK];
+        for (int i = 0; i < SSFX_AA_LUMA_PACK; ++i) {
+            const int x = min(x0 + i, pc.width - 1);  // past the last column: the padding
+            const vec4 raw = texelRaw(x, y);
+            l[i] = edgeLuma(texelDecoded(raw));
+            if (x0 + i < pc.width) imageStore(dst, ivec2(x, y), raw);
+        }
+        imageStore(lumaPlane, ivec2(q, y), vec4(l[0], l[1], l[2], l[3]));
         return;
     }
-    if (spec_stage == 0) loadTile();
-    ivec2 p;
-    if (!outputPixel(p)) return;
     if (spec_stage == SSFX_AA_STAGE_CLASSIFY) {
-        if (edgeAt(p.x, p.y))
-            appendEdge(p);
-        else
-            storeInput(p);  // the texel as fetched, as noaa stores it
+        if (q >= lumaPlaneWidth() || y >= pc.height) return;
+        const LumaRow above = lumaRow(q, y - 1), row = lumaRow(q, y), below = lumaRow(q, y + 1);
+        bool edge[SSFX_AA_LUMA_PACK];
+        for (int i = 0; i < SSFX_AA_LUMA_PACK; ++i) {
+            // Luma3x3 names: S is the row above, N the row below.
+            const Luma3x3 n = Luma3x3(row.l[i + 1], row.l[i], row.l[i + 2], above.l[i + 1], below.l[i + 1],
+                                      above.l[i], below.l[i], above.l[i + 2], below.l[i + 2]);
+            edge[i] = x0 + i < pc.width && edgeAt(x0 + i, y, n);
+        }
+        appendEdges(x0, y, edge);
         return;
     }
     // Stage 0: one pass, for an image whose list would not fit in a storage buffer.
-    store(p, edgeAt(p.x, p.y) ? edgeColour(p.x, p.y) : texelValue(p.x, p.y), alphaAt(p.x, p.y));
+    loadTile();
+    ivec2 p;
+    if (!outputPixel(p)) return;
+    store(p, edgeAt(p.x, p.y, neighbourhood(p.x, p.y)) ? edgeColour(p.x, p.y) : texelValue(p.x, p.y),
+          alphaAt(p.x, p.y));
 }

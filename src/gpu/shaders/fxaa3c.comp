@@ -5,8 +5,9 @@
 #define SSFX_TILE
 #include "ppaa.glsl"
 
-float diagonal(int x, int y, int sx, int sy) {
-    if (spec_diagonalsAtCentres != 0) return lumaAt(x + sx, y + sy);  // at pixel centres: the pixels
+// `atCentre`: the luma of pixel (x + sx, y + sy), used when the diagonals are at pixel centres.
+float diagonal(int x, int y, int sx, int sy, float atCentre) {
+    if (spec_diagonalsAtCentres != 0) return atCentre;
     const float u = centreU(x), v = centreV(y);
     precise float du = u + float(sx) * pc.diagonalU;
     precise float dv = v + float(sy) * pc.diagonalV;
@@ -22,14 +23,15 @@ struct Lumas {
     float lumaMin, lumaMax;
     bool edge;
 };
-Lumas lumas(int x, int y) {
+// FXAA names y up: its NW is (x - 1, y - 1), Luma3x3's SW.
+Lumas lumas(int x, int y, Luma3x3 n) {
     Lumas l;
-    l.NW = diagonal(x, y, -1, -1);
-    l.SW = diagonal(x, y, -1, +1);
-    l.SE = diagonal(x, y, +1, +1);
-    precise float ne = diagonal(x, y, +1, -1) + 1.0 / 384.0;  // FXAA: keeps dir from being 0
+    l.NW = diagonal(x, y, -1, -1, n.SW);
+    l.SW = diagonal(x, y, -1, +1, n.NW);
+    l.SE = diagonal(x, y, +1, +1, n.NE);
+    precise float ne = diagonal(x, y, +1, -1, n.SE) + 1.0 / 384.0;  // FXAA: keeps dir from being 0
     l.NE = ne;
-    const float lumaM = lumaAt(x, y);
+    const float lumaM = n.C;
     l.lumaMax = maxf(maxf(l.NE, l.SE), maxf(l.NW, l.SW));
     l.lumaMin = minf(minf(l.NE, l.SE), minf(l.NW, l.SW));
     precise float contrast = maxf(l.lumaMax, lumaM) - minf(l.lumaMin, lumaM);
@@ -38,11 +40,11 @@ Lumas lumas(int x, int y) {
     return l;
 }
 
-bool edgeAt(int x, int y) { return lumas(x, y).edge; }
+bool edgeAt(int x, int y, Luma3x3 n) { return lumas(x, y, n).edge; }
 
 // The colour of an edge pixel: two short and two long taps along the direction.
 vec3 edgeColour(int x, int y) {
-    const Lumas l = lumas(x, y);
+    const Lumas l = lumas(x, y, neighbourhood(x, y));
     precise float swMinusNe = l.SW - l.NE;
     precise float seMinusNw = l.SE - l.NW;
     precise float dirX = swMinusNe + seMinusNw;

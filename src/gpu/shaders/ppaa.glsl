@@ -41,10 +41,12 @@ vec4 texelRaw(int x, int y) {
 }
 // The 8-bit texel (x, y).
 uvec3 texel8(int x, int y) { return uvec3(round(texelRaw(x, y).rgb * 255.0)); }
-vec3 fetchValue(int x, int y) {
-    const uvec3 t = texel8(x, y);
+// A fetched texel's value (v / 255, the CPU's table).
+vec3 texelDecoded(vec4 raw) {
+    const uvec3 t = uvec3(round(raw.rgb * 255.0));
     return vec3(unormLevel(t.r), unormLevel(t.g), unormLevel(t.b));
 }
+vec3 fetchValue(int x, int y) { return texelDecoded(texelRaw(x, y)); }
 
 // Texture coordinate of pixel x's centre: (x + 0.5) / W in float32.
 float centreU(int x) {
@@ -124,10 +126,9 @@ float edgeLuma(vec3 c) {
 }
 // ---- the lumas of the 3x3 neighbourhoods (the CPU's luma plane): shaders that read them
 // define SSFX_TILE. The two-pass dispatches (edge_list.glsl) read the luma plane that their
-// LUMA dispatch wrote (an r32f image: on lavapipe its loads are gathers); stage 0 loads the
-// work group's tile, the lumas of its pixels and a one-pixel border, in workgroup memory
-// (loadTile(), first, in uniform control flow). Either way each texel's luma is computed
-// once. Colours are fetched where they are used.
+// LUMA dispatch wrote; stage 0 loads the work group's tile, the lumas of its pixels and a
+// one-pixel border, in workgroup memory (loadTile(), first, in uniform control flow). Either
+// way each texel's luma is computed once. Colours are fetched where they are used.
 vec3 texelValue(int x, int y) { return fetchValue(x, y); }
 #ifdef SSFX_TILE
 const int kTile = SSFX_AA_GROUP + 2;
@@ -139,13 +140,24 @@ void loadTile() {
         tileLuma[i] = edgeLuma(fetchValue(origin.x + i % kTile, origin.y + i / kTile));
     barrier();
 }
+// The luma plane (rgba32f): texel (q, y) holds the lumas of pixels 4q .. 4q + 3 of row y,
+// those past the last column holding the last column's (aa_constants.h: SSFX_AA_LUMA_PACK).
+// Packed because each load is a gather on lavapipe: the classify dispatch reads a pixel's
+// five neighbours from 1.25 loads instead of 5 (edge_list.glsl).
+layout(set = 0, binding = SSFX_AA_BINDING_LUMA, rgba32f) uniform image2D lumaPlane;
+int lumaPlaneWidth() { return (pc.width + SSFX_AA_LUMA_PACK - 1) / SSFX_AA_LUMA_PACK; }
+// Texel q of row y of the plane, both clamped to it.
+vec4 lumaTexel(int q, int y) {
+    return imageLoad(lumaPlane, ivec2(clamp(q, 0, lumaPlaneWidth() - 1), clamp(y, 0, pc.height - 1)));
+}
 // The luma of texel (x, y), clamped to the image like a fetch: from the luma plane (the
 // classify and edge dispatches) or from the tile (stage 0: the group's pixels or their
 // border, whose texels were fetched clamped).
-layout(set = 0, binding = SSFX_AA_BINDING_LUMA, r32f) uniform image2D lumaPlane;
 float lumaAt(int x, int y) {
-    if (spec_stage == SSFX_AA_STAGE_EDGES || spec_stage == SSFX_AA_STAGE_CLASSIFY)
-        return imageLoad(lumaPlane, ivec2(clamp(x, 0, pc.width - 1), clamp(y, 0, pc.height - 1))).r;
+    if (spec_stage == SSFX_AA_STAGE_EDGES || spec_stage == SSFX_AA_STAGE_CLASSIFY) {
+        const int cx = clamp(x, 0, pc.width - 1);
+        return lumaTexel(cx / SSFX_AA_LUMA_PACK, y)[cx % SSFX_AA_LUMA_PACK];
+    }
     const ivec2 q = ivec2(x, y) - tileOrigin();
     return tileLuma[q.y * kTile + q.x];
 }
@@ -203,9 +215,9 @@ bool belowEdgeThreshold(Luma3x3 n, out float range) {
 }
 
 // The early-exit test of the methods on the 3x3 neighbourhood: true for an edge pixel.
-bool edgeAt3x3(int x, int y) {
+bool edgeAt3x3(Luma3x3 n) {
     float range;
-    return !belowEdgeThreshold(neighbourhood(x, y), range);
+    return !belowEdgeThreshold(n, range);
 }
 
 struct EdgeSides {
