@@ -144,6 +144,9 @@ void loadTile() {
 // those past the last column holding the last column's (aa_constants.h: SSFX_AA_LUMA_PACK).
 // Packed because each load is a gather on lavapipe: the classify dispatch reads a pixel's
 // five neighbours from 1.25 loads instead of 5 (edge_list.glsl).
+#if SSFX_AA_LUMA_PACK != 4
+#error "the luma plane is rgba32f: four lumas per texel"
+#endif
 layout(set = 0, binding = SSFX_AA_BINDING_LUMA, rgba32f) uniform image2D lumaPlane;
 int lumaPlaneWidth() { return (pc.width + SSFX_AA_LUMA_PACK - 1) / SSFX_AA_LUMA_PACK; }
 // Texel q of row y of the plane, both clamped to it.
