@@ -51,9 +51,9 @@
     X(7, pairReads, 0)                        /* ddaa2's edge pass, model: search reads by texel index (aa_pass.cpp) */
 
 // The three dispatches of the methods with an edge test (fxaa3c, fxaa3d, ddaa1, ddaa2;
-// edge_list.glsl): the first writes the luma plane; the second tests every pixel, writes the
-// pixels that stay as they are and appends the edge pixels to a list; the third, an indirect
-// dispatch over the list, computes the edge pixels.
+// edge_list.glsl): the first writes the luma plane and copies every pixel to the output; the
+// second tests every pixel and appends the edge pixels to a list; the third, an indirect
+// dispatch over the list, computes the edge pixels over their copies.
 #define SSFX_AA_STAGE_CLASSIFY 1
 #define SSFX_AA_STAGE_EDGES 2
 #define SSFX_AA_STAGE_LUMA 3   // before CLASSIFY: the luma plane (SSFX_AA_BINDING_LUMA)

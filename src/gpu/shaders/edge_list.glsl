@@ -64,8 +64,9 @@ void main() {
     // x0 .. x0 + 3 of row y.
     const int q = int(gl_GlobalInvocationID.x), y = int(gl_GlobalInvocationID.y);
     const int x0 = q * SSFX_AA_LUMA_PACK;
-    if (spec_stage == SSFX_AA_STAGE_LUMA) {
+    if (spec_stage == SSFX_AA_STAGE_LUMA || spec_stage == SSFX_AA_STAGE_CLASSIFY)
         if (q >= lumaPlaneWidth() || y >= pc.height) return;
+    if (spec_stage == SSFX_AA_STAGE_LUMA) {
         // The lumas, and the pixels copied to the output unchanged (the texel as fetched, as
         // noaa stores it): the edge dispatch overwrites the edge pixels.
         float l[SSFX_AA_LUMA_PACK];
@@ -79,7 +80,6 @@ void main() {
         return;
     }
     if (spec_stage == SSFX_AA_STAGE_CLASSIFY) {
-        if (q >= lumaPlaneWidth() || y >= pc.height) return;
         const LumaRow above = lumaRow(q, y - 1), row = lumaRow(q, y), below = lumaRow(q, y + 1);
         bool edge[SSFX_AA_LUMA_PACK];
         for (int i = 0; i < SSFX_AA_LUMA_PACK; ++i) {
