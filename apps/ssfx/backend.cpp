@@ -23,6 +23,10 @@ void addBackendOptions(CLI::App* cmd, BackendOptions& o) {
                     "a GPU, else lavapipe)");
 }
 
+void checkBackendOptions(const BackendOptions& o) {
+    if (o.backend != "vulkan" && !o.device.empty()) throw Error("--device goes with --backend vulkan");
+}
+
 void takeSamplingParam(std::vector<std::string>& params, BackendOptions& o) {
     std::vector<std::string> rest;
     for (const auto& p : params) {
@@ -40,8 +44,8 @@ void takeSamplingParam(std::vector<std::string>& params, BackendOptions& o) {
 }
 
 Applier makeApplier(const BackendOptions& o, const MethodInfo& m, const MethodSettings& settings, const Exec& exec) {
+    checkBackendOptions(o);
     if (o.backend != "vulkan") {
-        if (!o.device.empty()) throw Error("--device goes with --backend vulkan");
         const MethodInfo* method = &m;
         return {[method, settings, exec](ImageView<const Rgba8> in) { return method->run(in, settings, exec); },
                 [] { return -1.0; }, "cpu", ""};

@@ -23,6 +23,10 @@ struct BackendOptions {
 //! Adds --backend and --device to `cmd`.
 void addBackendOptions(CLI::App* cmd, BackendOptions& o);
 
+//! Refuses what the backend choice would silently ignore: --device without --backend
+//! vulkan. (A blank --device is refused where devices are chosen, vkx::Context.)
+void checkBackendOptions(const BackendOptions& o);
+
 //! Takes -p sampling=model|hardware out of `params` into o.sampling (an error with the cpu
 //! backend, where the sampling model is --filtering).
 void takeSamplingParam(std::vector<std::string>& params, BackendOptions& o);

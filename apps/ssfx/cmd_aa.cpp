@@ -40,6 +40,14 @@ std::pair<int, int> parseSize(const std::string& text, const std::string& option
     return {side(t.substr(0, x)), side(t.substr(x + 1))};
 }
 
+std::int64_t parseMaxPixels(const std::string& text) {
+    std::int64_t v = 0;
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+    if (text.empty() || ec != std::errc() || end != text.data() + text.size() || v < 1 || v > kMaxPixels)
+        throw Error(fmt::format("--max-pixels '{}' is not a whole number in [1, {}]", text, kMaxPixels));
+    return v;
+}
+
 std::pair<std::string, double> parseParam(const std::string& text) {
     const auto eq = text.find('=');
     if (eq == std::string::npos || eq == 0)
@@ -106,71 +114,94 @@ bool isFolder(const std::string& path) {
     return std::filesystem::is_directory(path, ec);
 }
 
-Frames openFrames(const AaOptions& o, std::pair<int, int> rawSize) {
+Frames openFrames(const AaOptions& o, std::pair<int, int> rawSize, bool outPattern) {
     Frames f;
     if (io::FramePattern::isPattern(o.input)) {
         const io::FramePattern pattern(o.input);
-        f.numbers = o.frames.empty() ? pattern.existing() : io::FrameRange::parse(o.frames).frames();
-        if (f.numbers.empty()) throw Error(fmt::format("{}: no files match the frame pattern", o.input));
-        std::vector<std::string> missing;
-        for (int n : f.numbers) {
-            f.files.push_back(pattern.path(n));
-            if (!std::filesystem::exists(f.files.back())) missing.push_back(f.files.back());
-        }
-        if (!missing.empty())
-            throw Error(fmt::format("{} of {} frames are missing, the first: {}", missing.size(), f.numbers.size(),
-                                    missing.front()));
+        std::optional<io::FrameRange> range;
+        if (!o.frames.empty()) range = io::FrameRange::parse(o.frames);
+        f.numbers = pattern.select(range ? &*range : nullptr);
+        for (int n : f.numbers) f.files.push_back(pattern.path(n));
         return f;
     }
     if (!o.frames.empty()) throw Error("--frames goes with a numbered input (frame.%04d.png)");
-    if (o.input != "-" && isFolder(o.input)) {
-        for (const auto& name : io::pngFilesIn(o.input))
-            f.files.push_back((std::filesystem::path(o.input) / name).string());
+    const std::string input = io::FramePattern::plain(o.input);
+    if (input != "-" && isFolder(input)) {
+        for (const auto& name : io::pngFilesIn(input)) f.files.push_back((std::filesystem::path(input) / name).string());
         return f;
     }
-    if (rawSize.first == 0) throw Error("standard input ('-') holds raw frames: give their size with --raw WxH");
-    f.rawName = o.input == "-" ? "stdin" : o.input;
-    f.rawFile.reset(o.input == "-" ? stdin : std::fopen(o.input.c_str(), "rb"));
-    if (!f.rawFile) throw Error(fmt::format("{}: cannot open ({})", o.input, std::strerror(errno)));
+    if (rawSize.first == 0) {
+        if (input == "-") throw Error("standard input ('-') holds raw frames: give their size with --raw WxH");
+        std::error_code ec;
+        if (!std::filesystem::exists(input, ec)) throw Error(fmt::format("{}: no such file or folder", input));
+        if (outPattern)
+            throw Error(fmt::format(
+                "{} is one image, but the output '{}' is numbered: a numbered output takes numbered input files "
+                "(in/frame.%04d.png) or a folder (write a '%' in a plain file name as %%)",
+                input, o.output));
+        throw Error(fmt::format("{}: raw frames need their size (--raw WxH)", input));
+    }
+    f.rawName = input == "-" ? "stdin" : input;
+    f.rawFile.reset(input == "-" ? stdin : std::fopen(input.c_str(), "rb"));
+    if (!f.rawFile) throw Error(fmt::format("{}: cannot open ({})", input, std::strerror(errno)));
     f.raw = std::make_unique<io::RawFrameReader>(f.rawFile.get(), rawSize.first, rawSize.second, f.rawName);
     return f;
 }
 
 void runFrames(const AaOptions& o, const Applier& method, const Exec& exec) {
     const auto rawSize = o.raw.empty() ? std::pair<int, int>{0, 0} : parseSize(o.raw, "--raw", 16384);
-    Frames in = openFrames(o, rawSize);
-    // The output: numbered files, a folder (the input's file names), or a raw stream.
+    // The output: numbered files, a folder (the input's file names), or a raw stream. A
+    // numbered output's pattern is checked before the input is opened.
     const bool outPattern = io::FramePattern::isPattern(o.output);
+    std::optional<io::FramePattern> pattern;
+    if (outPattern) pattern.emplace(o.output);
+    Frames in = openFrames(o, rawSize, outPattern);
+    const std::string output = outPattern ? o.output : io::FramePattern::plain(o.output);
     // Without --raw a plain output path is a folder; with it, a raw file unless it is a folder.
     const bool outFolder =
-        !outPattern && o.output != "-" && (isFolder(o.output) || o.output.back() == '/' || o.raw.empty());
+        !outPattern && output != "-" && (isFolder(output) || output.back() == '/' || o.raw.empty());
     const bool outRaw = !outPattern && !outFolder;
-    std::optional<io::FramePattern> pattern;
+    // Folders made here are removed again if the run fails before writing into them.
+    std::optional<io::OutputFolder> made;
     if (outPattern) {
-        pattern.emplace(o.output);
         const auto parent = std::filesystem::path(pattern->path(0)).parent_path();
-        if (!parent.empty()) io::makeDirectories(parent.string());
+        if (!parent.empty()) made.emplace(parent.string());
     }
     if (outFolder) {
         if (in.raw)
             throw Error("raw frames go to a numbered output (out/frame.%04d.png) or a raw stream, not a folder");
-        io::makeDirectories(o.output);
+        made.emplace(output);
     }
     std::unique_ptr<io::AtomicFile> rawFile;
     std::unique_ptr<io::RawFrameWriter> rawOut;
     if (outRaw) {
-        rawFile = std::make_unique<io::AtomicFile>(o.output);
+        rawFile = std::make_unique<io::AtomicFile>(output);
         rawOut = std::make_unique<io::RawFrameWriter>(*rawFile);
     }
     const int count = in.raw ? -1 : int(in.files.size());
     auto name = [&](int i) { return in.raw ? fmt::format("{} frame {}", in.rawName, i) : in.files[std::size_t(i)]; };
+    // PNG inputs: every frame has --raw's size when it is given, and one size (the first
+    // frame's) when they go into one raw stream, which a reader splits by that size.
+    std::pair<int, int> frameSize = rawSize;
+    auto checkSize = [&](int i, const ImageRgba8& frame) {
+        if (in.raw || (rawSize.first == 0 && !outRaw)) return;
+        if (frameSize.first == 0) frameSize = {frame.width(), frame.height()};
+        if (frame.width() == frameSize.first && frame.height() == frameSize.second) return;
+        throw Error(fmt::format("{}: {}x{}, but {} {}x{}: {}", name(i), frame.width(), frame.height(),
+                                rawSize.first ? "--raw says" : fmt::format("the first frame ({}) is", name(0)),
+                                frameSize.first, frameSize.second,
+                                rawSize.first ? "every frame must have the size --raw gives"
+                                              : "every frame of one raw stream must have one size"));
+    };
     // Frames in flight: a few per thread, each an input, an output and its PNG slot. Files are
-    // decoded and encoded in the parallel stage; only the raw stream is read in order.
+    // decoded and encoded in the parallel stage; only the raw stream is read in order. A bad
+    // frame k stops the run after frames 0..k-1 are written, whatever the threads' timing.
     const int slots = 2 * resolvedThreads(exec);
     const auto slotCount = std::size_t(slots);
     std::vector<ImageRgba8> inputs(slotCount), outputs(slotCount);
     std::vector<std::vector<std::uint8_t>> encoded(slotCount);
     std::optional<Error> stopped;  // a raw stream cut short: reported after the frames before it
+    int written = 0;
     ProgressLine progress("aa");
     const std::string what = in.raw ? in.rawName : o.input;
     orderedPipeline(
@@ -186,7 +217,16 @@ void runFrames(const AaOptions& o, const Applier& method, const Exec& exec) {
         },
         [&](int i) {
             const auto slot = std::size_t(i % slots);
-            if (!in.raw) inputs[slot] = io::readPng(in.files[std::size_t(i)]);
+            if (!in.raw) {
+                const std::string& file = in.files[std::size_t(i)];
+                const std::vector<std::uint8_t> bytes = io::readPngFile(file);
+                if (io::isApng(bytes))
+                    throw Error(fmt::format(
+                        "{}: an animated PNG in a frame sequence, whose frames are still images; run it on its own "
+                        "(ssfx aa -m {} {} -o out.png: every frame, an APNG out)",
+                        file, o.method, file));
+                inputs[slot] = io::decodePng(bytes, file);
+            }
             try {
                 outputs[slot] = method.apply(inputs[slot].view());
             } catch (const Error& e) {  // e.g. a resolve's size rule: say which frame
@@ -196,26 +236,38 @@ void runFrames(const AaOptions& o, const Applier& method, const Exec& exec) {
         },
         [&](int i) {
             const auto slot = std::size_t(i % slots);
+            checkSize(i, inputs[slot]);
             if (rawOut) {
                 rawOut->write(outputs[slot].view());
             } else if (pattern) {
                 io::writeFileAtomic(pattern->path(in.numbers.empty() ? i : in.numbers[std::size_t(i)]), encoded[slot]);
             } else {
                 io::writeFileAtomic(
-                    (std::filesystem::path(o.output) / std::filesystem::path(in.files[std::size_t(i)]).filename())
+                    (std::filesystem::path(output) / std::filesystem::path(in.files[std::size_t(i)]).filename())
                         .string(),
                     encoded[slot]);
             }
+            ++written;
             progress.report({what, i + 1, std::max(count, 0), "frames"});
         });
-    if (stopped) throw *stopped;
+    if (stopped) {
+        // What became of the whole frames before the cut, said as the help says it.
+        const bool held = rawFile && !rawFile->direct();
+        throw Error(fmt::format("{}; {}", stopped->what(),
+                                held      ? fmt::format("{} is not written (a raw output file appears only whole)", output)
+                                : written ? fmt::format("the {} frame(s) before it were written", written)
+                                          : "nothing was written"));
+    }
+    if (in.raw && written == 0)
+        throw Error(fmt::format("{}: no frames (the raw stream is empty); nothing was written", in.rawName));
     if (rawFile) rawFile->commit();
+    if (made) made->keep();
 }
 
 bool isSequence(const AaOptions& o) {
     // (A single PNG to "-" is a PNG on standard output, not a raw stream.)
     return !o.raw.empty() || o.input == "-" || io::FramePattern::isPattern(o.input) ||
-           io::FramePattern::isPattern(o.output) || isFolder(o.input) || !o.frames.empty();
+           io::FramePattern::isPattern(o.output) || isFolder(io::FramePattern::plain(o.input)) || !o.frames.empty();
 }
 
 void run(AaOptions o) {
@@ -243,7 +295,10 @@ void run(AaOptions o) {
         return;
     }
 
-    const std::vector<std::uint8_t> bytes = io::readFile(o.input, io::kMaxImageFileBytes, "PNG", io::kPngMagic);
+    // One file: a '%' in its name is written %% (as in the numbered patterns).
+    o.input = io::FramePattern::plain(o.input);
+    o.output = io::FramePattern::plain(o.output);
+    const std::vector<std::uint8_t> bytes = io::readPngFile(o.input);
     if (io::isApng(bytes)) {
         io::Animation anim = io::decodeApng(bytes, o.input);
         ProgressLine progress("aa");
@@ -305,7 +360,11 @@ void addAaCommand(CLI::App& app) {
         "  ssfx aa -m ddaa2 in/ -o out/\n"
         "  ffmpeg -i in.mkv -f rawvideo -pix_fmt rgba - | ssfx aa --raw 1920x1080 -m ddaa2 - -o - |\n"
         "    ffmpeg -f rawvideo -pix_fmt rgba -s 1920x1080 -i - -c:v ffv1 out.mkv\n"
-        "A raw stream cut short is an error naming the frame; the frames before it are written whole.\n"
+        "A bad frame (unreadable, an APNG among stills, cut short, or of another size in a raw stream) stops the\n"
+        "run with an error naming it. The frames before it are written, each whole: numbered files, a folder,\n"
+        "a pipe or stdout; a raw output FILE appears only whole, so it is then not written at all. The frames\n"
+        "of one raw stream have one size: --raw's, else the first frame's. An empty raw stream is an error.\n"
+        "A '%' in a plain (not numbered) file name is written %%: ssfx aa -m ddaa2 100%%.png -o out%%.png\n"
         "GPU: --backend vulkan runs the method as a Vulkan compute pass (docs/gpu.md); with the default\n"
         "-p sampling=model the output bytes are the CPU's, -p sampling=hardware uses the device's filtering.\n"
         "  ssfx aa -m ddaa2 --backend vulkan in.png -o out.png");

@@ -54,6 +54,7 @@ std::vector<eval::TimingResult> timeOnBackend(std::vector<std::string>& ids,
 
 void run(BenchOptions o) {
     const Exec exec{o.threads};
+    checkBackendOptions(o.backend);
     takeSamplingParam(o.params, o.backend);
     if (!o.params.empty()) throw Error(fmt::format("bench: -p takes sampling=model|hardware only ('{}')", o.params[0]));
     const bool gpu = o.backend.backend == "vulkan";

@@ -77,6 +77,8 @@ void addQuality(CLI::App& eval) {
         q.source = o->source == "given" ? eval::OutputSource::Given : eval::OutputSource::Compute;
         q.protocols = eval::parseProtocols(o->protocol);
         q.outputsDir = o->outputs;
+        if (!q.outputsDir.empty() && q.source == eval::OutputSource::Given)
+            throw Error("--outputs goes with --source compute (with --source given the outputs are the inputs)");
         if (!q.outputsDir.empty()) io::makeDirectories(q.outputsDir);
         q.exec = Exec{o->threads};
         q.progress = progressLine;

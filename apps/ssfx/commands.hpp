@@ -19,6 +19,8 @@ std::pair<std::string, double> parseParam(const std::string& text);
 std::pair<std::string, double> parseParam(const std::string& text, std::span<const ParamInfo> table,
                                           std::string_view id);
 //! Parses WIDTHxHEIGHT with both in [1, maxSide]; throws ssfx::Error naming `option`.
+//! --max-pixels N: a whole number in [1, kMaxPixels], echoed as given when it is not.
+std::int64_t parseMaxPixels(const std::string& text);
 std::pair<int, int> parseSize(const std::string& text, const std::string& option = "--size", int maxSide = 16384);
 
 void addAaCommand(CLI::App& app);

@@ -1,10 +1,15 @@
 #include "apps/ssfx/console.hpp"
 
 #include <fmt/format.h>
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <atomic>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <vector>
 
 #include "ssfx/core/error.hpp"
 #include "ssfx/io/png.hpp"
@@ -25,6 +30,33 @@ std::string clock(double seconds) {
                      : fmt::format("{}:{:02}", s / 60, s % 60);
 }
 }  // namespace
+
+namespace {
+bool gStdoutClosed = false;
+}  // namespace
+
+int reportError(std::string_view message) {
+    endActive();
+    fmt::print(stderr, "ssfx: error: {}\n", message);
+    return 2;
+}
+
+void guardStdout() {
+    if (::fcntl(STDOUT_FILENO, F_GETFD) != -1 || errno != EBADF) return;
+    // /dev/full takes descriptor 1 and fails every write (ENOSPC), which finishStdout() reports.
+    const int fd = ::open("/dev/full", O_WRONLY | O_CLOEXEC);
+    if (fd >= 0 && fd != STDOUT_FILENO) ::dup2(fd, STDOUT_FILENO), ::close(fd);
+    gStdoutClosed = true;
+}
+
+bool finishStdout() {
+    errno = 0;
+    if (std::fflush(stdout) == 0 && !std::ferror(stdout)) return true;
+    const int e = errno;
+    reportError(fmt::format("cannot write to standard output ({})",
+                            gStdoutClosed ? "it is closed" : e ? std::strerror(e) : "write error"));
+    return false;
+}
 
 void setQuiet(bool q) { gQuiet = q; }
 bool quiet() { return gQuiet; }
@@ -49,13 +81,24 @@ void reportProgress(const Progress& p) {
 void writeOutput(const std::string& path, const std::string& text) {
     if (path != "-") return io::writeTextAtomic(path, text);
     if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0)
-        throw Error("cannot write to standard output");
+        throw Error(fmt::format("cannot write to standard output ({})",
+                                gStdoutClosed ? "it is closed" : std::strerror(errno)));
 }
 
 bool anyStdout(std::initializer_list<std::string_view> paths) {
     int n = 0;
     for (auto p : paths) n += p == "-";
     if (n > 1) throw Error("only one output can go to stdout ('-')");
+    std::vector<std::pair<std::string_view, std::filesystem::path>> files;
+    for (auto p : paths) {
+        if (p.empty() || p == "-") continue;
+        std::error_code ec;
+        const auto full = std::filesystem::weakly_canonical(std::filesystem::path(p), ec);
+        for (const auto& [other, otherFull] : files)
+            if (full == otherFull)
+                throw Error(fmt::format("'{}' and '{}' name one file: give each output its own", other, p));
+        files.emplace_back(p, full);
+    }
     return n == 1;
 }
 

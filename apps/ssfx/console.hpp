@@ -13,6 +13,15 @@
 
 namespace ssfx::cli {
 
+//! Prints "ssfx: error: MESSAGE" on stderr; returns the exit status of bad input, 2.
+int reportError(std::string_view message);
+//! At start: a closed standard output (`>&-`) gets a descriptor that refuses writes, so
+//! that no file opened later takes descriptor 1 and receives the results.
+void guardStdout();
+//! At exit: flushes stdout; false when anything written to it was lost (a full disk, a
+//! closed or broken stdout), with the reason already reported on stderr.
+bool finishStdout();
+
 void setQuiet(bool quiet);
 bool quiet();
 //! Draws progress lines even when stderr is not a terminal (--progress).
@@ -27,7 +36,8 @@ void printNote(std::string_view prefix, std::string_view text);
 //! Writes `text` to `path` atomically, or to stdout when `path` is "-" (--json -, --md -).
 void writeOutput(const std::string& path, const std::string& text);
 //! Whether one of these output paths is stdout ("-"): the command then prints no table.
-//! Throws ssfx::Error when more than one is.
+//! Throws ssfx::Error when more than one is, or when two name one file (--json F --md F:
+//! the second would replace the first).
 bool anyStdout(std::initializer_list<std::string_view> paths);
 
 //! Reports to the innermost ProgressLine alive, if any (for code that runs inside a command

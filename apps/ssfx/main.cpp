@@ -13,6 +13,7 @@
 #include "ssfx/io/png.hpp"
 
 int main(int argc, char** argv) {
+    ssfx::cli::guardStdout();
     ssfx::tuneAllocatorForImages();  // frames and benchmark repetitions reuse their buffers
     CLI::App app{
         "ssfx: screen-space rendering effects (post-processing anti-aliasing, resolves, ambient obscurance)\n"
@@ -25,8 +26,8 @@ int main(int argc, char** argv) {
         "Exit status: 0 done, 2 bad input or usage (the message names the problem), 1 internal error.");
     app.set_version_flag("--version", "ssfx 0.1.0");
     // A batch user's lower pixel limit for every input (before the command: ssfx --max-pixels N aa ...).
-    app.add_option_function<std::int64_t>(
-           "--max-pixels", [](std::int64_t n) { ssfx::io::setMaxPixels(n); },
+    app.add_option_function<std::string>(
+           "--max-pixels", [](const std::string& text) { ssfx::io::setMaxPixels(ssfx::cli::parseMaxPixels(text)); },
            "Refuse input images larger than N pixels from their header (default and most: 268435456 = 2^28)")
         ->trigger_on_parse();
     app.add_flag_function(
@@ -48,23 +49,33 @@ int main(int argc, char** argv) {
     ssfx::cli::addDevicesCommand(app);
 #endif
     ssfx::cli::addEvalCommand(app);
+    int status = 0;
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
-        return app.exit(e);
+        status = app.exit(e);
     } catch (const CLI::CallForAllHelp& e) {
-        return app.exit(e);
+        status = app.exit(e);
     } catch (const CLI::CallForVersion& e) {
-        return app.exit(e);
+        status = app.exit(e);
     } catch (const CLI::ParseError& e) {
         app.exit(e);
-        return 2;
+        status = 2;
     } catch (const ssfx::Error& e) {
-        std::fprintf(stderr, "ssfx: error: %s\n", e.what());
-        return 2;
+        status = ssfx::cli::reportError(e.what());
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "ssfx: internal error: %s\n", e.what());
-        return 1;
+        // A result that could not be written (fmt throws on a failed write to stdout) is a
+        // problem of the output, not of ssfx.
+        if (std::ferror(stdout)) {
+            status = 2;  // finishStdout() below says why
+        } else {
+            std::fprintf(stderr, "ssfx: internal error: %s\n", e.what());
+            status = 1;
+        }
     }
-    return 0;
+    // Every command's results reach stdout here at the latest: a full disk, a closed or
+    // broken stdout is an error (exit 2), never a silent loss of the table or the help.
+    if (!ssfx::cli::finishStdout()) status = status == 0 ? 2 : status;
+    return status;
 }
+

@@ -6,6 +6,9 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <exception>
+#include <utility>
+#include <vector>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -56,6 +59,11 @@ void orderedPipeline(int inFlight, const Exec& exec, const std::function<bool(in
         for (int i = 0; produce(i); ++i) work(i), consume(i);
         return;
     }
+    // A failed work(i) is kept with its item and rethrown when item i reaches the consumer:
+    // the items before it are consumed first, whatever the threads' timing, and none after
+    // it (the consumer is serial and in order; its exception stops the pipeline). At most
+    // inFlight items are alive, so slot i % inFlight is item i's until it is consumed.
+    std::vector<std::exception_ptr> failed(static_cast<std::size_t>(inFlight));
     int next = 0;
     arenaFor(threads).execute([&] {
         tbb::parallel_pipeline(
@@ -69,9 +77,17 @@ void orderedPipeline(int inFlight, const Exec& exec, const std::function<bool(in
                 ++next;
                 return i;
             }) & tbb::make_filter<int, int>(tbb::filter_mode::parallel, [&](int i) {
-                work(i);
+                try {
+                    work(i);
+                } catch (...) {
+                    failed[std::size_t(i % inFlight)] = std::current_exception();
+                }
                 return i;
-            }) & tbb::make_filter<int, void>(tbb::filter_mode::serial_in_order, [&](int i) { consume(i); }));
+            }) & tbb::make_filter<int, void>(tbb::filter_mode::serial_in_order, [&](int i) {
+                if (std::exception_ptr e = std::exchange(failed[std::size_t(i % inFlight)], nullptr))
+                    std::rethrow_exception(e);
+                consume(i);
+            }));
     });
 }
 

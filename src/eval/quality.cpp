@@ -25,8 +25,28 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 std::string pathIn(const std::string& dir, const std::string& file) { return (fs::path(dir) / file).string(); }
 
 bool isStillPng(const std::string& path) {
-    const auto bytes = io::readFile(path, io::kMaxImageFileBytes, "PNG", io::kPngMagic);
+    const auto bytes = io::readPngFile(path);
     return !io::isApng(bytes);
+}
+
+// A render or a given output: a still PNG. An APNG is refused by name rather than read as
+// its first frame (animations are `ssfx eval temporal`'s).
+ImageRgba8 readStill(const std::string& path) {
+    const auto bytes = io::readPngFile(path);
+    if (io::isApng(bytes))
+        throw Error(fmt::format("{}: an animated PNG, where a still image is expected (animations: ssfx eval temporal)",
+                                path));
+    return io::decodePng(bytes, path);
+}
+
+// `image` (read from `file`) must be `scale` times the 1x render's size.
+void checkScaled(const ImageRgba8& image, const std::string& file, int scale, const ImageRgba8& x1,
+                 const std::string& x1File) {
+    if (std::int64_t{x1.width()} * scale == image.width() && std::int64_t{x1.height()} * scale == image.height())
+        return;
+    throw Error(fmt::format("{}: {}x{}, expected {}x{} ({} times {}, {}x{})", file, image.width(), image.height(),
+                            std::int64_t{x1.width()} * scale, std::int64_t{x1.height()} * scale, scale, x1File,
+                            x1.width(), x1.height()));
 }
 
 constexpr Scores kNoScores{kNaN, kNaN, kNaN, kNaN};
@@ -191,11 +211,10 @@ QualityTable evaluateQuality(const std::string& dir, const QualityOptions& o) {
     };
     for (const auto& name : t.images) {
         say(fmt::format("{}: loading renders", name));
-        const ImageRgba8 x1 = io::readPng(renderSetPath(dir, name, 1));
-        const ImageRgba8 x8 = io::readPng(renderSetPath(dir, name, 8));
-        if (std::int64_t{x1.width()} * 8 != x8.width() || std::int64_t{x1.height()} * 8 != x8.height())
-            throw Error(fmt::format("{}x8.png is {}x{}, expected 8 times {}.png ({}x{})", name, x8.width(), x8.height(),
-                                    name, x1.width(), x1.height()));
+        const std::string x1File = renderSetPath(dir, name, 1), x8File = renderSetPath(dir, name, 8);
+        const ImageRgba8 x1 = readStill(x1File);
+        const ImageRgba8 x8 = readStill(x8File);
+        checkScaled(x8, x8File, 8, x1, x1File);
         const ImageRgba8 truth = resolveTruth(x8.view(), o.exec);
         const Image<std::uint8_t> edges = edgeMask(truth.view(), x1.view());
         t.pixels.push_back(x1.pixelCount());
@@ -212,7 +231,8 @@ QualityTable evaluateQuality(const std::string& dir, const QualityOptions& o) {
                     say(fmt::format("{} {}: no {}, skipped", name, info.id, file));
                     continue;
                 }
-                output = io::readPng(file);
+                output = readStill(file);
+                checkScaled(output, file, 1, x1, x1File);
             } else {
                 const ImageRgba8* input = &x1;
                 if (info.inputScale != 1) {
@@ -223,7 +243,8 @@ QualityTable evaluateQuality(const std::string& dir, const QualityOptions& o) {
                             say(fmt::format("{} {}: no {}, skipped", name, info.id, file));
                             continue;
                         }
-                        s = io::readPng(file);
+                        s = readStill(file);
+                        checkScaled(s, file, info.inputScale, x1, x1File);
                     }
                     input = &s;
                 }

@@ -547,7 +547,7 @@ Section viewersSection(const Run& r, const QualityTable& quality, const std::map
         v.initial = {"noaa", "ddaa2"};
         std::vector<std::pair<std::string, std::string>> pngs;
         for (const auto& [label, file] : v.sources) {
-            const auto bytes = io::readFile((r.out / file).string(), io::kMaxImageFileBytes, "PNG", io::kPngMagic);
+            const auto bytes = io::readPngFile((r.out / file).string());
             pngs.emplace_back(label, std::string(bytes.begin(), bytes.end()));
         }
         v.pixels = "images/" + name + "_pixels.js";

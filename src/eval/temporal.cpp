@@ -101,6 +101,14 @@ private:
             if (scale != 8 && int(s.reader->frameCount()) != frames_)
                 throw Error(
                     fmt::format("{}: {} frames, but {} has {}", s.path, s.reader->frameCount(), path(8), frames_));
+            if (scale != 8) {  // each scale's frames are scale/8 of the x8 frames' size
+                const io::ApngReader& x8 = *streams_[3].reader;
+                const int w = x8.width() / 8 * scale, h = x8.height() / 8 * scale;
+                if (s.reader->width() != w || s.reader->height() != h)
+                    throw Error(fmt::format("{}: {}x{}, expected {}x{} ({} times the 1x size of {}, {}x{})", s.path,
+                                            s.reader->width(), s.reader->height(), w, h, scale, path(8), x8.width(),
+                                            x8.height()));
+            }
         }
         return *s.reader;
     }

@@ -372,6 +372,7 @@ struct ApngReader::Impl {
 
 ApngReader::ApngReader(const std::string& path) : impl_(std::make_unique<Impl>()) {
     impl_->name = path;
+    checkPath(path);
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) throw Error(fmt::format("{}: is a directory, not a PNG file", path));
     impl_->file = std::fopen(path.c_str(), "rb");

@@ -30,7 +30,10 @@ Camera parseCameraJson(const std::string& text, const std::string& name, CameraB
             return value.get<double>();
         };
         if (key == "fov_y_deg") {
-            c.fovY = number() * std::numbers::pi / 180.0;
+            const double degrees = number();
+            if (!(degrees > 0 && degrees < 180))  // the file's unit, not the struct's radians
+                throw Error(fmt::format("{}: 'fov_y_deg' {} is not in (0, 180) degrees", name, degrees));
+            c.fovY = degrees * std::numbers::pi / 180.0;
         } else if (key == "z_near") {
             c.zNear = number();
         } else if (key == "z_far") {

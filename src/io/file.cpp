@@ -5,7 +5,9 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
+#include <charconv>
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
@@ -29,6 +31,19 @@ void setMaxPixels(std::int64_t n) {
 
 std::int64_t maxPixels() { return gMaxPixels.load(); }
 
+void checkPath(const std::string& path) {
+    // The C library stops a path at its first NUL: 'victim\0.png' would name 'victim'.
+    if (path.find('\0') != std::string::npos)
+        throw Error(fmt::format("path '{}': contains a NUL byte (\\0), which no file name can hold",
+                                std::string_view(path).substr(0, path.find('\0'))));
+}
+
+std::uint64_t pngFileLimit() {
+    // 5 bytes a pixel (kMaxImageFileBytes' rule) at the process's pixel limit, plus room for
+    // ancillary chunks (profiles, text, EXIF), so that --max-pixels bounds the read too.
+    return std::min<std::uint64_t>(kMaxImageFileBytes, 5 * std::uint64_t(maxPixels()) + (std::uint64_t(16) << 20));
+}
+
 void checkInputDimensions(std::int64_t width, std::int64_t height, const std::string& what) {
     checkDimensions(width, height, what);
     if (width * height > maxPixels())
@@ -36,35 +51,54 @@ void checkInputDimensions(std::int64_t width, std::int64_t height, const std::st
                                 maxPixels()));
 }
 
-std::vector<std::uint8_t> readFile(const std::string& path, std::uint64_t maxBytes, const char* kind,
-                                   std::span<const std::uint8_t> signature) {
+InputFile::InputFile(const std::string& path, const char* kind) : path_(path) {
+    checkPath(path);
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec))
         throw Error(fmt::format("{}: is a directory, not a {} file", path, kind));
-    std::FILE* f = std::fopen(path.c_str(), "rb");
-    if (!f) throw Error(fmt::format("{}: cannot open for reading ({})", path, std::strerror(errno)));
+    file_ = std::fopen(path.c_str(), "rb");
+    if (!file_) throw Error(fmt::format("{}: cannot open for reading ({})", path, std::strerror(errno)));
+}
+
+InputFile::~InputFile() {
+    if (file_) std::fclose(file_);
+}
+
+std::vector<std::uint8_t> InputFile::signature(std::span<const std::uint8_t> magic, const char* kind) {
     std::vector<std::uint8_t> bytes;
-    std::uint8_t buf[1 << 16];
-    std::size_t n;
-    auto fail = [&](const std::string& message) {
-        std::fclose(f);
-        throw Error(message);
-    };
+    if (append(bytes, magic.size()) < magic.size() || std::memcmp(bytes.data(), magic.data(), magic.size()) != 0)
+        throw Error(fmt::format("{}: not a {} file (wrong signature)", path_, kind));
+    return bytes;
+}
+
+std::uint64_t InputFile::append(std::vector<std::uint8_t>& bytes, std::uint64_t n) {
+    // In steps of at most 1 MiB: a length claimed by a header costs only what arrives.
+    std::uint64_t done = 0;
+    while (done < n) {
+        const std::size_t step = std::size_t(std::min<std::uint64_t>(n - done, std::uint64_t(1) << 20));
+        const std::size_t from = bytes.size();
+        bytes.resize(from + step);
+        const std::size_t got = std::fread(bytes.data() + from, 1, step, file_);
+        bytes.resize(from + got);
+        done += got;
+        if (got < step) break;
+    }
+    return done;
+}
+
+void InputFile::checkError() const {
+    if (std::ferror(file_)) throw Error(fmt::format("{}: read error", path_));
+}
+
+std::vector<std::uint8_t> readFile(const std::string& path, std::uint64_t maxBytes, const char* kind,
+                                   std::span<const std::uint8_t> signature) {
+    InputFile f(path, kind);
     // The signature first: a wrong file is refused after its first few bytes.
-    if (!signature.empty()) {
-        n = std::fread(buf, 1, signature.size(), f);
-        if (n < signature.size() || std::memcmp(buf, signature.data(), signature.size()) != 0)
-            fail(fmt::format("{}: not a {} file (wrong signature)", path, kind));
-        bytes.assign(buf, buf + n);
-    }
-    while ((n = std::fread(buf, 1, sizeof buf, f)) > 0) {
-        if (bytes.size() + n > maxBytes)
-            fail(fmt::format("{}: more than {} bytes, the limit for a {} file", path, maxBytes, kind));
-        bytes.insert(bytes.end(), buf, buf + n);
-    }
-    const bool failed = std::ferror(f) != 0;
-    std::fclose(f);
-    if (failed) throw Error(fmt::format("{}: read error", path));
+    std::vector<std::uint8_t> bytes = signature.empty() ? std::vector<std::uint8_t>() : f.signature(signature, kind);
+    while (f.append(bytes, 1 << 16) > 0)
+        if (bytes.size() > maxBytes)
+            throw Error(fmt::format("{}: more than {} bytes, the limit for a {} file", path, maxBytes, kind));
+    f.checkError();
     return bytes;
 }
 
@@ -124,18 +158,49 @@ void unregisterTemp(int slot) {
     gTempUsed[slot].store(false);
 }
 
+// The descriptor of this process that `path` names by its form: /dev/stdout (1),
+// /dev/stderr (2), /dev/stdin (0), /dev/fd/N, /proc/self/fd/N, /proc/thread-self/fd/N and
+// /proc/PID/fd/N with our own PID; -1 for any other path. Such a name is a view of an open
+// descriptor (a file opened by the shell with >>, a pipe, a terminal), not a file to replace.
+int descriptorNamed(const fs::path& path) {
+    const std::string s = path.lexically_normal().string();
+    if (s == "/dev/stdin") return 0;
+    if (s == "/dev/stdout") return 1;
+    if (s == "/dev/stderr") return 2;
+    for (const std::string& dir : {std::string("/dev/fd/"), std::string("/proc/self/fd/"),
+                                   std::string("/proc/thread-self/fd/"), fmt::format("/proc/{}/fd/", ::getpid())}) {
+        if (s.size() <= dir.size() || s.compare(0, dir.size(), dir) != 0) continue;
+        int fd = 0;
+        const char* first = s.data() + dir.size();
+        const auto [end, ec] = std::from_chars(first, s.data() + s.size(), fd);
+        if (ec == std::errc() && end == s.data() + s.size() && fd >= 0) return fd;
+    }
+    return -1;
+}
+
 // `path` with every symbolic link along it followed (a dangling link gives its target: the
-// file to create), so that the target is what gets replaced, in the target's directory.
+// file to create), so that the target is what gets replaced, in the target's directory. The
+// walk stops at a name of one of our descriptors (descriptorNamed; its links, such as
+// /proc/self/fd/1 -> pipe:[123], do not name files).
 fs::path followLinks(const fs::path& path) {
     fs::path p = path;
     for (int depth = 0; depth < 40; ++depth) {
         std::error_code ec;
-        if (!fs::is_symlink(fs::symlink_status(p, ec))) return p;
+        if (descriptorNamed(p) >= 0 || !fs::is_symlink(fs::symlink_status(p, ec))) return p;
         const fs::path to = fs::read_symlink(p, ec);
         if (ec) throw Error(fmt::format("{}: cannot read the symbolic link ({})", path.string(), ec.message()));
         p = to.is_absolute() ? to : p.parent_path() / to;
     }
     throw Error(fmt::format("{}: too many levels of symbolic links", path.string()));
+}
+
+// Our standard output or error when `info` is the same file (the shell's `-o log >> log`).
+int standardStreamOf(const struct stat& info) {
+    for (int fd : {1, 2}) {
+        struct stat s {};
+        if (::fstat(fd, &s) == 0 && s.st_dev == info.st_dev && s.st_ino == info.st_ino) return fd;
+    }
+    return -1;
 }
 
 }  // namespace
@@ -146,7 +211,12 @@ AtomicFile::AtomicFile(const std::string& path) : path_(path) {
         direct_ = true;
         return;
     }
+    checkPath(path);
     const fs::path target = followLinks(fs::path(path));
+    if (const int fd = descriptorNamed(target); fd >= 0) {
+        openDescriptor(fd);
+        return;
+    }
     std::error_code ec;
     const fs::file_status st = fs::status(target, ec);
     if (fs::is_directory(st)) throw Error(fmt::format("{}: is a directory", path));
@@ -159,10 +229,14 @@ AtomicFile::AtomicFile(const std::string& path) : path_(path) {
     }
     target_ = target.string();
     mode_t mode = 0666;  // a new file: 0666 less the umask, as open(2) gives it
+    struct stat info {};
     if (fs::exists(st)) {
-        struct stat info {};
         if (::stat(target.c_str(), &info) != 0)
             throw Error(fmt::format("{}: cannot stat ({})", path, std::strerror(errno)));
+        if (const int fd = standardStreamOf(info); fd >= 0) {  // written where the shell points it
+            openDescriptor(fd);
+            return;
+        }
         // Read-only: no write permission bit at all, or none for us (root passes access()).
         if ((info.st_mode & 0222) == 0 || ::access(target.c_str(), W_OK) != 0)
             throw Error(fmt::format("{}: is read-only; not overwritten", path));
@@ -178,6 +252,18 @@ AtomicFile::AtomicFile(const std::string& path) : path_(path) {
         if (fd < 0 && errno != EEXIST) break;
     }
     if (fd < 0) throw Error(fmt::format("{}: cannot create output file ({})", path, std::strerror(errno)));
+    if (keepMode_) {
+        // The replacement is ours (owner and group of this process), as with cp and install:
+        // a set-user-ID or set-group-ID bit stays only where its owner (group) is unchanged,
+        // so running as root over another user's setuid file never makes a root-owned one.
+        struct stat now {};
+        if (::fstat(fd, &now) == 0) {
+            if (now.st_uid != info.st_uid) mode &= ~mode_t(S_ISUID | S_ISGID);
+            if (now.st_gid != info.st_gid) mode &= ~mode_t(S_ISGID);
+        } else {
+            mode &= ~mode_t(S_ISUID | S_ISGID);
+        }
+    }
     if (keepMode_ && ::fchmod(fd, mode) != 0) {
         const int e = errno;
         ::close(fd), ::unlink(tmp_.c_str());
@@ -192,10 +278,26 @@ AtomicFile::AtomicFile(const std::string& path) : path_(path) {
     }
 }
 
+void AtomicFile::openDescriptor(int fd) {
+    direct_ = true;
+    if (fd == 1 || fd == 2) {  // through the stream, in order with what else goes there
+        file_ = fd == 1 ? stdout : stderr;
+        return;
+    }
+    // A copy of the descriptor: it writes at the descriptor's offset (appends where the
+    // shell opened it with >>) and closing it leaves the original open.
+    const int copy = ::fcntl(fd, F_DUPFD_CLOEXEC, 3);
+    if (copy < 0 || !(file_ = ::fdopen(copy, "wb"))) {
+        const int e = errno;
+        if (copy >= 0) ::close(copy);
+        throw Error(fmt::format("{}: descriptor {} cannot be written ({})", path_, fd, std::strerror(e)));
+    }
+}
+
 AtomicFile::~AtomicFile() {
     if (!file_) return;
     if (direct_) {
-        if (file_ != stdout) std::fclose(file_);
+        if (file_ != stdout && file_ != stderr) std::fclose(file_);
         return;
     }
     std::fclose(file_);
@@ -251,7 +353,8 @@ void OutputSet::commit() {
 void AtomicFile::commit() {
     if (!file_) throw Error(fmt::format("{}: committed twice", path_));
     if (direct_) {
-        const bool ok = std::fflush(file_) == 0 && (file_ == stdout || std::fclose(file_) == 0);
+        const bool ok =
+            std::fflush(file_) == 0 && (file_ == stdout || file_ == stderr || std::fclose(file_) == 0);
         file_ = nullptr;
         if (!ok) throw Error(fmt::format("{}: write failed ({})", path_, std::strerror(errno)));
         return;
@@ -279,12 +382,31 @@ void AtomicFile::commit() {
 }
 
 void makeDirectories(const std::string& dir) {
+    checkPath(dir);
     std::error_code ec;
     const fs::path p(dir);
     if (fs::exists(p, ec) && !fs::is_directory(p, ec))
         throw Error(fmt::format("{}: exists and is not a directory (an output directory was expected)", dir));
     fs::create_directories(p, ec);
     if (ec) throw Error(fmt::format("{}: cannot create the output directory ({})", dir, ec.message()));
+}
+
+OutputFolder::OutputFolder(const std::string& dir) {
+    checkPath(dir);
+    std::error_code ec;
+    for (fs::path p = fs::path(dir).lexically_normal(); !p.empty() && !fs::exists(p, ec); p = p.parent_path()) {
+        created_.insert(created_.begin(), p.string());
+        if (p == p.parent_path()) break;
+    }
+    makeDirectories(dir);
+}
+
+OutputFolder::~OutputFolder() {
+    for (auto it = created_.rbegin(); it != created_.rend(); ++it) {
+        std::error_code ec;
+        if (!fs::is_directory(*it, ec) || !fs::is_empty(*it, ec) || ec) break;  // holds something: kept
+        fs::remove(*it, ec);
+    }
 }
 
 void writeFileAtomic(const std::string& path, std::span<const std::uint8_t> bytes) {

@@ -140,8 +140,32 @@ std::vector<std::uint8_t> encodePng(ImageView<const Rgba8> image) {
     return out;
 }
 
+std::vector<std::uint8_t> readPngFile(const std::string& path) {
+    // Chunk by chunk (PNG spec, section 5.3: length, type, data, CRC) until IEND; the CRCs
+    // and the chunks' order are the decoder's to check.
+    const std::uint64_t limit = pngFileLimit();
+    InputFile f(path, "PNG");
+    std::vector<std::uint8_t> bytes = f.signature(kPngMagic, "PNG");
+    while (true) {
+        const std::size_t at = bytes.size();
+        if (f.append(bytes, 8) < 8) break;  // truncated: the decoder says so
+        const std::uint64_t len = (std::uint64_t(bytes[at]) << 24) | (std::uint64_t(bytes[at + 1]) << 16) |
+                                  (std::uint64_t(bytes[at + 2]) << 8) | bytes[at + 3];
+        if (len > 0x7FFFFFFFu) break;  // corrupt: the decoder names it
+        if (at + 12 + len > limit)
+            throw Error(fmt::format("{}: more than {} bytes before the PNG's end (IEND), the limit for a PNG file{}",
+                                    path, limit,
+                                    maxPixels() < kMaxPixels ? fmt::format(" at --max-pixels {}", maxPixels()) : ""));
+        const bool end = std::memcmp(&bytes[at + 4], "IEND", 4) == 0;
+        if (f.append(bytes, len + 4) < len + 4) break;
+        if (end) break;
+    }
+    f.checkError();
+    return bytes;
+}
+
 ImageRgba8 readPng(const std::string& path) {
-    const auto bytes = readFile(path, kMaxImageFileBytes, "PNG", kPngMagic);
+    const auto bytes = readPngFile(path);
     return decodePng(bytes, path);
 }
 

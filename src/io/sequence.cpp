@@ -58,6 +58,8 @@ bool FramePattern::isPattern(std::string_view path) {
     return false;
 }
 
+std::string FramePattern::plain(std::string_view path) { return unescape(path); }
+
 FramePattern::FramePattern(std::string pattern) : pattern_(std::move(pattern)) {
     std::size_t at = std::string::npos, length = 0;
     for (std::size_t i = 0; i < pattern_.size(); ++i) {
@@ -86,26 +88,65 @@ FramePattern::FramePattern(std::string pattern) : pattern_(std::move(pattern)) {
 
 std::string FramePattern::path(int frame) const { return fmt::format("{}{:0{}d}{}", prefix_, frame, width_, suffix_); }
 
+int FramePattern::frameOf(std::string_view name) const {
+    // prefix_ may hold folders; the file name's own prefix is what follows the last '/'.
+    const std::size_t slash = prefix_.rfind('/');
+    const std::string_view stem = slash == std::string::npos ? std::string_view(prefix_)
+                                                             : std::string_view(prefix_).substr(slash + 1);
+    if (name.size() <= stem.size() + suffix_.size() || name.substr(0, stem.size()) != stem ||
+        name.substr(name.size() - suffix_.size()) != suffix_)
+        return -1;
+    const std::string_view digits = name.substr(stem.size(), name.size() - stem.size() - suffix_.size());
+    if (digits.size() > 9 ||
+        !std::all_of(digits.begin(), digits.end(), [](unsigned char c) { return std::isdigit(c); }))
+        return -1;
+    int n = 0;
+    for (char c : digits) n = n * 10 + (c - '0');
+    return fmt::format("{:0{}d}", n, width_) == digits ? n : -1;  // %04d: "0007", not "7"
+}
+
 std::vector<int> FramePattern::existing() const {
-    // prefix_ = folder/ + stem: "in/frame." -> "in" and "frame.", "frame." -> "." and "frame.".
+    // prefix_ = folder/ + stem: "in/frame." -> "in", "frame." -> ".".
     const std::size_t slash = prefix_.rfind('/');
     const std::string dir = slash == std::string::npos ? "." : slash == 0 ? "/" : prefix_.substr(0, slash);
-    const std::string stem = slash == std::string::npos ? prefix_ : prefix_.substr(slash + 1);
+    checkPath(dir);
     std::vector<int> frames;
     std::error_code ec;
-    for (const auto& entry : fs::directory_iterator(dir, ec)) {
-        const std::string name = entry.path().filename().string();
-        if (name.size() <= stem.size() + suffix_.size() || name.compare(0, stem.size(), stem) != 0 ||
-            name.compare(name.size() - suffix_.size(), suffix_.size(), suffix_) != 0)
-            continue;
-        const std::string digits = name.substr(stem.size(), name.size() - stem.size() - suffix_.size());
-        if (digits.size() > 9 ||
-            !std::all_of(digits.begin(), digits.end(), [](unsigned char c) { return std::isdigit(c); }))
-            continue;
-        const int n = std::stoi(digits);
-        if (fmt::format("{:0{}d}", n, width_) == digits) frames.push_back(n);  // %04d: "0007", not "7"
-    }
+    for (const auto& entry : fs::directory_iterator(dir, ec))
+        if (const int n = frameOf(entry.path().filename().string()); n >= 0) frames.push_back(n);
     std::sort(frames.begin(), frames.end());
+    return frames;
+}
+
+std::vector<int> FramePattern::select(const FrameRange* range) const {
+    std::vector<int> frames = existing();
+    if (range) {
+        // The frames of the range that exist, then the first gap: no list of the range itself.
+        const auto lo = std::lower_bound(frames.begin(), frames.end(), range->first);
+        const auto hi = std::upper_bound(frames.begin(), frames.end(), range->last);
+        frames = std::vector<int>(lo, hi);
+        if (std::int64_t(frames.size()) < range->count()) {
+            int missing = range->first;
+            for (int n : frames) {
+                if (n != missing) break;
+                ++missing;
+            }
+            throw Error(fmt::format("{} of {} frames are missing, the first: {}", range->count() - std::int64_t(frames.size()),
+                                    range->count(), path(missing)));
+        }
+    }
+    if (frames.empty()) throw Error(fmt::format("{}: no files match the frame pattern", pattern_));
+    for (int n : frames) {
+        std::error_code ec;
+        const fs::file_status st = fs::status(path(n), ec);
+        if (!fs::is_regular_file(st))
+            throw Error(fmt::format("{}: {}, not a regular file; every frame must be a PNG file", path(n),
+                                    fs::is_fifo(st)        ? "a FIFO"
+                                    : fs::is_directory(st) ? "a folder"
+                                    : fs::is_socket(st)    ? "a socket"
+                                    : fs::exists(st)       ? "a device"
+                                                           : "a dangling link"));
+    }
     return frames;
 }
 
@@ -127,13 +168,8 @@ FrameRange FrameRange::parse(const std::string& text) {
     return r;
 }
 
-std::vector<int> FrameRange::frames() const {
-    std::vector<int> f;
-    for (int i = first; i <= last; ++i) f.push_back(i);
-    return f;
-}
-
 std::vector<std::string> pngFilesIn(const std::string& dir) {
+    checkPath(dir);
     std::error_code ec;
     if (!fs::is_directory(dir, ec)) throw Error(fmt::format("{}: not a folder", dir));
     std::vector<std::string> files;
@@ -150,7 +186,7 @@ std::vector<std::string> pngFilesIn(const std::string& dir) {
 
 RawFrameReader::RawFrameReader(std::FILE* stream, int width, int height, std::string name)
     : stream_(stream), width_(width), height_(height), name_(std::move(name)) {
-    checkDimensions(width, height, "raw frame");
+    checkInputDimensions(width, height, fmt::format("{}: raw frame", name_));
 }
 
 bool RawFrameReader::read(ImageRgba8& frame) {
@@ -168,8 +204,7 @@ bool RawFrameReader::read(ImageRgba8& frame) {
         if (std::ferror(stream_))
             throw Error(fmt::format("{}: reading raw frame {} failed: {}", name_, frames_, std::strerror(errno)));
         throw Error(
-            fmt::format("{}: raw frame {} is cut short: {} of {} bytes ({}x{} RGBA8); the {} frame(s) before "
-                        "it are complete",
+            fmt::format("{}: raw frame {} is cut short: {} of {} bytes ({}x{} RGBA8), after {} whole frame(s)",
                         name_, frames_, got, want, width_, height_, frames_));
     }
     ++frames_;

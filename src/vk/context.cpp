@@ -188,6 +188,11 @@ Context::Context(const ContextOptions& options) : context(makeLoader()) {
                     chosen = d.index;
             if (chosen < 0) throw Error(fmt::format("no device with {}; devices:{}", need, listing));
         } else {
+            // Blank text is a substring of every name with a space: it would pick any device.
+            if (std::all_of(options.device.begin(), options.device.end(),
+                            [](unsigned char c) { return std::isspace(c); }))
+                throw Error(fmt::format("device '{}' is blank: give an index or part of a name; devices:{}",
+                                        options.device, listing));
             const bool isIndex = std::all_of(options.device.begin(), options.device.end(),
                                              [](unsigned char c) { return std::isdigit(c); });
             for (const auto& d : infos)

@@ -26,8 +26,11 @@ int resolvedThreads(const Exec& exec);
 //! the caller keeps them, e.g. in `inFlight` slots indexed by i % inFlight):
 //! produce(i) for i = 0, 1, ... in order on one thread at a time, until it returns false;
 //! work(i) on several items in parallel; consume(i) in order on one thread at a time. An
-//! exception from any stage stops the pipeline and is rethrown (a producer that wants the
-//! items before it finished first returns false and reports its error afterwards).
+//! exception from any stage stops the pipeline and is rethrown. One from work(i) is
+//! rethrown when item i's turn to be consumed comes, so that exactly the items before it
+//! have been consumed, for any thread count and timing (a sequence with a bad frame k
+//! writes frames 0..k-1). A producer that wants the items before it finished first
+//! returns false and reports its error afterwards.
 void orderedPipeline(int inFlight, const Exec& exec, const std::function<bool(int)>& produce,
                      const std::function<void(int)>& work, const std::function<void(int)>& consume);
 

@@ -47,6 +47,37 @@ inline constexpr std::uint8_t kExrMagic[4] = {0x76, 0x2F, 0x31, 0x01};
 //! a file above the cap.
 std::vector<std::uint8_t> readFile(const std::string& path, std::uint64_t maxBytes, const char* kind,
                                    std::span<const std::uint8_t> signature = {});
+//! A file opened for reading, closed at the end of its scope: the checks and messages of
+//! readFile() (a NUL in the path, a directory, a missing file), then reads of known sizes.
+class InputFile {
+public:
+    InputFile(const std::string& path, const char* kind);
+    ~InputFile();
+    InputFile(const InputFile&) = delete;
+    InputFile& operator=(const InputFile&) = delete;
+    //! The file's first magic.size() bytes, which must be `magic` ("not a KIND file" otherwise).
+    std::vector<std::uint8_t> signature(std::span<const std::uint8_t> magic, const char* kind);
+    //! Appends up to n bytes to `bytes` (fewer at the end of the file); returns how many.
+    std::uint64_t append(std::vector<std::uint8_t>& bytes, std::uint64_t n);
+    //! Throws ssfx::Error when a read failed (as opposed to reaching the end).
+    void checkError() const;
+
+private:
+    std::string path_;
+    std::FILE* file_ = nullptr;
+};
+
+//! Refuses a path with a NUL byte in it (the C library would read it as a shorter path and
+//! open another file): an ssfx::Error. Every function here that takes a path checks it.
+void checkPath(const std::string& path);
+//! A PNG or APNG file's bytes up to and including its IEND chunk: what follows IEND is not
+//! read and is ignored (a stream that goes on after the image, `(cat a.png; cat /dev/zero)`,
+//! costs one image). The read stops with an error past pngFileLimit() bytes; a file that
+//! ends before IEND is returned as it is, for the decoder to report as truncated.
+std::vector<std::uint8_t> readPngFile(const std::string& path);
+//! The most bytes readPngFile() reads: 5 a pixel at maxPixels() (below) plus 16 MiB for
+//! ancillary chunks, at most kMaxImageFileBytes; so --max-pixels lowers it too.
+std::uint64_t pngFileLimit();
 //! Writes through an AtomicFile (below): `path` is never left half-written, an existing file
 //! stays intact on failure, links are followed, devices and FIFOs written into, "-" is stdout.
 void writeFileAtomic(const std::string& path, std::span<const std::uint8_t> bytes);
@@ -56,6 +87,23 @@ void writeTextAtomic(const std::string& path, std::string_view text);
 //! Creates the output directory `dir` (and its parents) unless it exists; an ssfx::Error
 //! naming it when it is a file or cannot be created (a user's mistake: exit 2, not 1).
 void makeDirectories(const std::string& dir);
+
+//! The output folder of a run that may fail: the constructor creates `dir` and its missing
+//! parents (as makeDirectories); unless keep() is called, the destructor removes the
+//! folders it created that are still empty, deepest first. A failed run so leaves no empty
+//! folder behind, and never removes a file it wrote (frames before a bad one stay) or
+//! anything that was there before.
+class OutputFolder {
+public:
+    explicit OutputFolder(const std::string& dir);
+    ~OutputFolder();
+    OutputFolder(const OutputFolder&) = delete;
+    OutputFolder& operator=(const OutputFolder&) = delete;
+    void keep() { created_.clear(); }
+
+private:
+    std::vector<std::string> created_;  //!< outermost first
+};
 
 //! Outputs that belong together (a render's depth.exr, z.exr, camera.json, color.png,
 //! gbuffer.exr): while a set is open on this thread, each AtomicFile's commit() finishes
@@ -87,11 +135,18 @@ private:
 //! `path` names decides how:
 //!  - a regular file (or none yet): replaced atomically; an existing file keeps its mode, a
 //!    new one gets 0666 less the umask; a read-only one (no write bit, or not writable by
-//!    us) is refused with an ssfx::Error and left alone;
+//!    us) is refused with an ssfx::Error and left alone. The replacement is a new file owned
+//!    by this process's user and group (ownership is not kept; a set-user-ID or set-group-ID
+//!    bit is dropped where the owner or group changes), and a hard link to the old file is
+//!    split: its other names keep the old content;
 //!  - a symbolic link: followed, and its target replaced in the target's directory (the
 //!    link stays a link);
 //!  - a device, FIFO or socket: written into directly (never replaced by a regular file);
-//!  - "-": standard output.
+//!  - one of this process's descriptors: "-" (standard output), /dev/stdout, /dev/stderr,
+//!    /dev/fd/N, /proc/self/fd/N (or a link to one of these), and a regular file that is
+//!    our standard output or error (`-o log >> log`): written into through the descriptor,
+//!    at its offset (appending where the shell opened it with >>), never truncated or
+//!    replaced.
 //! The temporary is named .ssfx-XXXXXXXX.tmp (any name that fits the directory fits it) and
 //! is removed on SIGINT and SIGTERM too (the signal then ends the program as before).
 class AtomicFile {
@@ -105,8 +160,11 @@ public:
     void flush();
     void commit();
     const std::string& path() const { return path_; }
+    //! Written into as it comes (a descriptor, a device, a FIFO), not replaced at commit().
+    bool direct() const { return direct_; }
 
 private:
+    void openDescriptor(int fd);  //!< direct writes into this process's descriptor fd
     std::string path_, target_, tmp_;
     std::FILE* file_ = nullptr;
     bool direct_ = false;    //!< written into (stdout, a device, a FIFO): no temporary
