@@ -52,8 +52,8 @@ out.append("def resample(image: NDArray[np.uint8], factor: int, threads: int = 0
 with open(os.path.join(pkg, "__init__.pyi"), "w") as f:
     f.write("".join(out))
 
-ao = [head, "import numpy as np\nfrom numpy.typing import NDArray\nfrom typing import Literal\n\n",
-      "Camera = dict | str\n\n"]
+ao = [head, "import os\n\nimport numpy as np\nfrom numpy.typing import NDArray\nfrom typing import Literal\n\n",
+      "Camera = dict | str | os.PathLike[str]\n\n"]
 for m in ssfx.methods("ao"):
     if m["id"] not in ("sao", "alchemy"):
         continue
@@ -65,13 +65,14 @@ for m in ssfx.methods("ao"):
 with open(os.path.join(pkg, "ao.pyi"), "w") as f:
     f.write("".join(ao))
 with open(os.path.join(pkg, "io.pyi"), "w") as f:
-    f.write(head + "import numpy as np\nfrom numpy.typing import NDArray\n\n"
-            "def read_png(path: str) -> NDArray[np.uint8]: ...\n"
-            "def write_png(path: str, image: NDArray[np.uint8]) -> None: ...\n"
-            "def read_apng(path: str) -> list[tuple[NDArray[np.uint8], float]]: ...\n"
-            "def write_apng(path: str, frames: list[NDArray[np.uint8]], fps: float = 25.0) -> None: ...\n"
-            "def read_exr(path: str, channel: str = '') -> NDArray[np.float32]: ...\n"
-            "def write_exr(path: str, image: NDArray[np.float32], channel: str = 'Y') -> None: ...\n")
+    f.write(head + "import os\n\nimport numpy as np\nfrom numpy.typing import NDArray\n\n"
+            "Path = str | os.PathLike[str]\n\n"
+            "def read_png(path: Path) -> NDArray[np.uint8]: ...\n"
+            "def write_png(path: Path, image: NDArray[np.uint8]) -> None: ...\n"
+            "def read_apng(path: Path) -> list[tuple[NDArray[np.uint8], float]]: ...\n"
+            "def write_apng(path: Path, frames: list[NDArray[np.uint8]], fps: float = 25.0) -> None: ...\n"
+            "def read_exr(path: Path, channel: str = '') -> NDArray[np.float32]: ...\n"
+            "def write_exr(path: Path, image: NDArray[np.float32], channel: str = 'Y') -> None: ...\n")
 with open(os.path.join(pkg, "metrics.pyi"), "w") as f:
     f.write(head + "import numpy as np\nfrom numpy.typing import NDArray\n\n"
             "def psnr(a: NDArray[np.uint8], b: NDArray[np.uint8]) -> float: ...\n"

@@ -1,15 +1,19 @@
 // The Python module ssfx._ssfx (pybind11): the library on numpy arrays. The package
 // python/ssfx/ re-exports it as ssfx, ssfx.ao, ssfx.io and ssfx.metrics (docs/python.md).
 //
-// Every argument is checked here, before anything reaches the library, so that a bad dtype,
-// shape, size or parameter raises ssfx.Error (a ValueError) naming the argument; the
-// library's own errors (ssfx::Error) become ssfx.Error too. Nothing can abort the
-// interpreter. The GIL is released while a method runs.
+// Every argument is taken as a Python object and checked here, before anything reaches the
+// library, with Python's split: a wrong type raises TypeError, a bad value (dtype, shape,
+// size, range, a parameter) ssfx.Error (a ValueError); both short, in ssfx's words, naming
+// the argument (never pybind11's signature dump or a RuntimeError). numpy scalars are
+// numbers; paths are str or os.PathLike. The library's own errors (ssfx::Error) become
+// ssfx.Error too. Nothing can abort the interpreter. The GIL is released while a method runs.
 #include <fmt/format.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <optional>
 #include <string>
@@ -28,6 +32,89 @@ namespace py = pybind11;
 using namespace ssfx;
 
 namespace {
+
+// ---- arguments ------------------------------------------------------------------------------
+std::string typeName(const py::handle& v) { return py::str(py::type::handle_of(v).attr("__name__")); }
+
+[[noreturn]] void wrongType(const std::string& arg, const char* expected, const py::handle& v) {
+    throw py::type_error(fmt::format("{}: expected {}, not {}", arg, expected, typeName(v)));
+}
+
+std::string strArg(const py::handle& v, const std::string& arg) {
+    if (!py::isinstance<py::str>(v)) wrongType(arg, "a str", v);
+    return v.cast<std::string>();
+}
+
+std::optional<std::string> optionalStrArg(const py::handle& v, const std::string& arg) {
+    if (v.is_none()) return std::nullopt;
+    return strArg(v, arg);
+}
+
+// A file path: str or os.PathLike (pathlib.Path); a NUL byte in it is refused by the io layer.
+std::string pathArg(const py::handle& v, const std::string& arg) {
+    if (py::isinstance<py::str>(v)) return v.cast<std::string>();
+    if (py::hasattr(v, "__fspath__")) {
+        const py::object p = py::module_::import("os").attr("fspath")(v);
+        if (py::isinstance<py::str>(p)) return p.cast<std::string>();
+        if (py::isinstance<py::bytes>(p)) return p.cast<std::string>();
+    }
+    if (py::isinstance<py::bytes>(v)) return v.cast<std::string>();
+    wrongType(arg, "a path (str or os.PathLike)", v);
+}
+
+bool isNumpyScalar(const py::handle& v, const char* kind) {
+    return py::isinstance(v, py::module_::import("numpy").attr(kind));
+}
+
+// A whole number: int or a numpy integer (not bool, not float: 2.5 threads is a type error).
+std::int64_t intArg(const py::handle& v, const std::string& arg, std::int64_t lo, std::int64_t hi) {
+    if (PyBool_Check(v.ptr()) || isNumpyScalar(v, "bool_") || !PyIndex_Check(v.ptr())) wrongType(arg, "an int", v);
+    const py::object i = py::reinterpret_steal<py::object>(PyNumber_Index(v.ptr()));
+    if (!i) throw py::error_already_set();
+    int overflow = 0;
+    const long long n = PyLong_AsLongLongAndOverflow(i.ptr(), &overflow);
+    if (overflow != 0 || n < lo || n > hi)
+        throw Error(fmt::format("{}: {} is not in [{}, {}]", arg, std::string(py::str(i)), lo, hi));
+    return n;
+}
+
+// A number: bool, int, float or a numpy scalar of those kinds; nullopt for any other type.
+// An int too large for a double (10**400) is a bad value, not a type error.
+std::optional<double> numberOf(const py::handle& v, const std::string& arg) {
+    PyObject* o = v.ptr();
+    if (PyBool_Check(o) || isNumpyScalar(v, "bool_")) return PyObject_IsTrue(o) ? 1.0 : 0.0;
+    if (PyIndex_Check(o)) {
+        const py::object i = py::reinterpret_steal<py::object>(PyNumber_Index(o));
+        if (!i) throw py::error_already_set();
+        const double d = PyLong_AsDouble(i.ptr());
+        if (d == -1.0 && PyErr_Occurred()) {
+            PyErr_Clear();
+            const std::string digits = py::str(i);
+            throw Error(fmt::format("{}: {} ({} digits) is too large", arg, digits.substr(0, 12) + "...", digits.size()));
+        }
+        return d;
+    }
+    if (PyFloat_Check(o) || isNumpyScalar(v, "floating")) {
+        const double d = PyFloat_AsDouble(o);
+        if (d == -1.0 && PyErr_Occurred()) throw py::error_already_set();
+        return d;
+    }
+    return std::nullopt;
+}
+
+double floatArg(const py::handle& v, const std::string& arg) {
+    if (PyBool_Check(v.ptr())) wrongType(arg, "a number", v);
+    const std::optional<double> d = numberOf(v, arg);
+    if (!d) wrongType(arg, "a number", v);
+    return *d;
+}
+
+py::array arrayArg(const py::handle& v, const std::string& arg) {
+    if (!py::isinstance<py::array>(v)) wrongType(arg, "a numpy array", v);
+    return py::reinterpret_borrow<py::array>(v);
+}
+
+int threadsArg(const py::handle& v) { return int(intArg(v, "threads", 0, 1024)); }
 
 // ---- arrays <-> image views ---------------------------------------------------------------
 // An (H, W, C) uint8 array seen as RGBA8 rows: a view without a copy when C is 4, the
@@ -122,11 +209,10 @@ py::array_t<std::uint8_t> toArray(ImageView<const Rgba8> img, int channels) {
 // A keyword argument as the method's table takes it: a number, a bool, or a string (a
 // Choice's name, "true"/"false", a number as text).
 double paramValue(const ParamInfo& row, const py::handle& v, std::string_view id) {
-    if (py::isinstance<py::bool_>(v)) return v.cast<bool>() ? 1.0 : 0.0;
-    if (py::isinstance<py::int_>(v) || py::isinstance<py::float_>(v)) return v.cast<double>();
+    const std::string arg = fmt::format("{}: parameter {}", id, row.name);
     if (py::isinstance<py::str>(v)) return parseParamValue(row, v.cast<std::string>(), id);
-    throw Error(fmt::format("{}: parameter {} must be a number, a bool or a string, not {}", id, row.name,
-                            std::string(py::str(v.get_type().attr("__name__")))));
+    if (const std::optional<double> d = numberOf(v, arg)) return *d;
+    wrongType(arg, "a number, a bool or a str", v);
 }
 
 std::vector<std::pair<std::string, double>> paramList(std::span<const ParamInfo> table, std::string_view id,
@@ -142,15 +228,33 @@ std::vector<std::pair<std::string, double>> paramList(std::span<const ParamInfo>
     return out;
 }
 
-int threadCount(int threads) {
-    if (threads < 0 || threads > 1024) throw Error(fmt::format("threads: {} is not in [0, 1024] (0 = all)", threads));
-    return threads;
+// ---- ssfx.aa ------------------------------------------------------------------------------
+// An array whose elements do not overlap one another: sorted by stride, each dimension's
+// stride must step past everything the smaller ones span (as_strided's (4, 4, 1) or
+// (0, 0, 1) would have several output pixels share bytes, and their writes would race).
+bool selfOverlapping(const py::array& a) {
+    std::vector<std::pair<py::ssize_t, py::ssize_t>> dims;  // |stride|, extent
+    for (py::ssize_t d = 0; d < a.ndim(); ++d)
+        if (a.shape(d) > 1) dims.emplace_back(a.strides(d) < 0 ? -a.strides(d) : a.strides(d), a.shape(d));
+    std::sort(dims.begin(), dims.end());
+    py::ssize_t span = a.itemsize();  // bytes covered by the dimensions so far
+    for (const auto& [stride, extent] : dims) {
+        if (stride < span) return true;
+        span = stride * (extent - 1) + span;
+    }
+    return false;
 }
 
-// ---- ssfx.aa ------------------------------------------------------------------------------
-py::object runAa(const py::array& image, const std::string& method, const std::optional<std::string>& preset,
-                 int threads, const std::string& filtering, const std::optional<py::array>& out,
+py::object runAa(const py::handle& imageArg, const py::handle& methodArg, const py::handle& presetArg,
+                 const py::handle& threadsArg_, const py::handle& filteringArg, const py::handle& outArg,
                  const py::kwargs& kwargs) {
+    const py::array image = arrayArg(imageArg, "image");
+    const std::string method = strArg(methodArg, "method");
+    const std::optional<std::string> preset = optionalStrArg(presetArg, "preset");
+    const int threads = threadsArg(threadsArg_);
+    const std::string filtering = strArg(filteringArg, "filtering");
+    const std::optional<py::array> out =
+        outArg.is_none() ? std::nullopt : std::optional<py::array>(arrayArg(outArg, "out"));
     const MethodInfo& m = methodById(method);
     MethodSettings s;
     if (preset) {
@@ -164,7 +268,7 @@ py::object runAa(const py::array& image, const std::string& method, const std::o
     else if (filtering != "gpu")
         throw Error(fmt::format("filtering: '{}' is not gpu or exact", filtering));
     s.params = paramList(m.params, method, kwargs);
-    const Exec exec{threadCount(threads)};
+    const Exec exec{threads};
     RgbaInput in = rgbaInput(image, "image");
     const int scale = m.inputScale;
     if (in.view.width() % scale != 0 || in.view.height() % scale != 0)
@@ -180,8 +284,10 @@ py::object runAa(const py::array& image, const std::string& method, const std::o
             throw Error(fmt::format("out: shape ({}, {}, {}) is not ({}, {}, {}), the output's", result.shape(0),
                                     result.shape(1), result.shape(2), oh, ow, in.channels));
         if (!result.writeable()) throw Error("out: the array is read-only");
+        if (selfOverlapping(result))
+            throw Error("out: its elements overlap one another (strides that step back into the array)");
         if (overlaps(result, image))  // the methods read neighbours of what they write
-            throw Error("out: must not overlap the image");
+            throw Error("out: must not overlap the image (not even be the image: give a new array)");
     } else {
         result = newImageArray(ow, oh, in.channels);
     }
@@ -241,7 +347,8 @@ py::dict methodDict(const MethodDesc& m) {
     return d;
 }
 
-py::list listMethods(const std::optional<std::string>& family) {
+py::list listMethods(const py::handle& familyArg) {
+    const std::optional<std::string> family = optionalStrArg(familyArg, "family");
     if (family && *family != "aa" && *family != "ao") throw Error(fmt::format("family: '{}' is not aa or ao", *family));
     py::list out;
     if (!family || *family == "aa")
@@ -279,16 +386,34 @@ ImageView<const float> floatView(const py::array& a, const char* arg, ImageF& co
     return copy.view();
 }
 Camera cameraFrom(const py::handle& camera) {
-    if (py::isinstance<py::str>(camera)) return io::readCameraJson(camera.cast<std::string>());
+    if (py::isinstance<py::str>(camera) || py::hasattr(camera, "__fspath__"))
+        return io::readCameraJson(pathArg(camera, "camera"));
     if (!py::isinstance<py::dict>(camera))
-        throw Error("camera: a dict {'fov_y_deg': ..., 'z_near': ..., 'z_far': ...} or a camera .json path");
-    // The same keys, checks and messages as a camera file (io/camera.hpp).
-    const std::string text = py::module_::import("json").attr("dumps")(camera).cast<std::string>();
+        wrongType("camera", "a dict {'fov_y_deg': ..., 'z_near': ..., 'z_far': ...} or a camera .json path", camera);
+    // The same keys, checks and messages as a camera file (io/camera.hpp), from a dict of
+    // plain values: numbers (numpy's too) as finite floats, None, and str.
+    py::dict plain;
+    for (const auto& [k, v] : py::reinterpret_borrow<py::dict>(camera)) {
+        const std::string key = strArg(k, "camera key");
+        const std::string arg = fmt::format("camera: '{}'", key);
+        if (v.is_none() || py::isinstance<py::str>(v)) {
+            plain[k] = v;
+        } else if (const std::optional<double> d = PyBool_Check(v.ptr()) ? std::nullopt : numberOf(v, arg)) {
+            if (!std::isfinite(*d)) throw Error(fmt::format("{} is {}, not a finite number", arg, *d));
+            plain[k] = *d;
+        } else {
+            wrongType(arg, "a number", v);
+        }
+    }
+    const std::string text = py::module_::import("json").attr("dumps")(plain).cast<std::string>();
     return io::parseCameraJson(text, "camera");
 }
 
-py::array_t<float> runAo(const char* id, const py::array& depth, const py::handle& camera,
-                         const std::optional<std::string>& preset, int threads, const py::kwargs& kwargs) {
+py::array_t<float> runAo(const char* id, const py::handle& depthArg, const py::handle& camera,
+                         const py::handle& presetArg, const py::handle& threadsArg_, const py::kwargs& kwargs) {
+    const py::array depth = arrayArg(depthArg, "depth");
+    const std::optional<std::string> preset = optionalStrArg(presetArg, "preset");
+    const int threads = threadsArg(threadsArg_);
     const ao::AoMethodInfo& m = ao::aoMethodById(id);
     ImageF copy;
     const ImageView<const float> view = floatView(depth, "depth", copy);
@@ -296,7 +421,7 @@ py::array_t<float> runAo(const char* id, const py::array& depth, const py::handl
     ao::AoParams params = m.defaults(preset.value_or(""));
     for (const auto& [name, value] : paramList(m.params, id, kwargs)) ao::setParam(m, params, name, value);
     m.validate(params);
-    const Exec exec{threadCount(threads)};
+    const Exec exec{threads};
     ImageF a;
     {
         py::gil_scoped_release release;
@@ -307,21 +432,25 @@ py::array_t<float> runAo(const char* id, const py::array& depth, const py::handl
 
 // ---- ssfx.io ----------------------------------------------------------------------------------
 
-py::list readApngFrames(const std::string& path) {
-    const io::Animation anim = io::readApng(path);
+py::list readApngFrames(const py::handle& pathArg_) {
+    const io::Animation anim = io::readApng(pathArg(pathArg_, "path"));
     py::list frames;
     for (const io::Frame& f : anim.frames) frames.append(py::make_tuple(toArray(f.image.view(), 4), f.delaySeconds()));
     return frames;
 }
 
-void writeApngFrames(const std::string& path, const py::list& frames, double fps) {
+void writeApngFrames(const py::handle& pathArg_, const py::handle& framesArg, const py::handle& fpsArg) {
+    const std::string path = pathArg(pathArg_, "path");
+    if (!py::isinstance<py::list>(framesArg) && !py::isinstance<py::tuple>(framesArg))
+        wrongType("frames", "a list of arrays", framesArg);
+    const py::sequence frames = py::reinterpret_borrow<py::sequence>(framesArg);
+    const double fps = floatArg(fpsArg, "fps");
     // Delays are stored in milliseconds (16 bits): 1000 fps down to one frame a minute.
     if (!(fps >= 1.0 / 60.0 && fps <= 1000)) throw Error(fmt::format("fps: {} is not in [1/60, 1000]", fps));
-    if (frames.empty()) throw Error("frames: empty (an APNG needs a frame)");
+    if (frames.size() == 0) throw Error("frames: empty (an APNG needs a frame)");
     io::Animation anim;
     for (std::size_t i = 0; i < frames.size(); ++i) {
-        const py::array a = py::array::ensure(frames[i]);
-        if (!a) throw Error(fmt::format("frames[{}]: not an array", i));
+        const py::array a = arrayArg(frames[i], fmt::format("frames[{}]", i));
         const RgbaInput in = rgbaInput(a, fmt::format("frames[{}]", i).c_str());
         io::Frame f;
         f.image = ImageRgba8(in.view.width(), in.view.height());
@@ -339,9 +468,9 @@ void writeApngFrames(const std::string& path, const py::list& frames, double fps
 }
 
 // A metric of two images of one size (3 or 4 channels each; RGB compared).
-double pairMetric(const py::array& a, const py::array& b,
+double pairMetric(const py::handle& a, const py::handle& b,
                   double (*metric)(ImageView<const Rgba8>, ImageView<const Rgba8>, const Exec&)) {
-    const RgbaInput x = rgbaInput(a, "a"), y = rgbaInput(b, "b");
+    const RgbaInput x = rgbaInput(arrayArg(a, "a"), "a"), y = rgbaInput(arrayArg(b, "b"), "b");
     if (x.view.width() != y.view.width() || x.view.height() != y.view.height())
         throw Error(fmt::format("a and b: not the same size ({}x{} and {}x{})", x.view.width(), x.view.height(),
                                 y.view.width(), y.view.height()));
@@ -372,9 +501,10 @@ PYBIND11_MODULE(_ssfx, m) {
           py::arg("threads") = 0, py::arg("filtering") = "gpu", py::arg("out") = py::none(), methodsDoc().c_str());
     m.def(
         "resample",
-        [](const py::array& image, int factor, int threads) {
-            const RgbaInput in = rgbaInput(image, "image");
-            const Exec exec{threadCount(threads)};
+        [](const py::handle& image, const py::handle& factorArg, const py::handle& threads) {
+            const RgbaInput in = rgbaInput(arrayArg(image, "image"), "image");
+            const int factor = int(intArg(factorArg, "factor", -64, 64));
+            const Exec exec{threadsArg(threads)};
             ImageRgba8 out;
             {
                 py::gil_scoped_release release;
@@ -390,7 +520,7 @@ PYBIND11_MODULE(_ssfx, m) {
           "(name, kind, unit, default, min/max or choices, range, doc), presets.");
     m.def(
         "sao",
-        [](const py::array& d, const py::handle& c, const std::optional<std::string>& preset, int threads,
+        [](const py::handle& d, const py::handle& c, const py::handle& preset, const py::handle& threads,
            const py::kwargs& kw) { return runAo("sao", d, c, preset, threads, kw); },
         py::arg("depth"), py::arg("camera"), py::arg("preset") = py::none(), py::arg("threads") = 0,
         "Scalable Ambient Obscurance: depth (H, W) float32 depth-buffer values in [0, 1], camera a dict "
@@ -398,50 +528,57 @@ PYBIND11_MODULE(_ssfx, m) {
         "(g = guardBand). preset: 'released' for the authors' released shaders' configuration.");
     m.def(
         "alchemy",
-        [](const py::array& d, const py::handle& c, const std::optional<std::string>& preset, int threads,
+        [](const py::handle& d, const py::handle& c, const py::handle& preset, const py::handle& threads,
            const py::kwargs& kw) { return runAo("alchemy", d, c, preset, threads, kw); },
         py::arg("depth"), py::arg("camera"), py::arg("preset") = py::none(), py::arg("threads") = 0,
         "The AlchemyAO baseline, as sao().");
     m.def(
-        "read_png", [](const std::string& path) { return toArray(io::readPng(path).view(), 4); }, py::arg("path"),
+        "read_png", [](const py::handle& path) { return toArray(io::readPng(pathArg(path, "path")).view(), 4); },
+        py::arg("path"),
         "A PNG as (H, W, 4) uint8.");
     m.def(
         "write_png",
-        [](const std::string& path, const py::array& image) {
-            const RgbaInput in = rgbaInput(image, "image");
-            io::writePng(path, in.view);
+        [](const py::handle& path, const py::handle& image) {
+            const std::string file = pathArg(path, "path");
+            const RgbaInput in = rgbaInput(arrayArg(image, "image"), "image");
+            io::writePng(file, in.view);
         },
         py::arg("path"), py::arg("image"), "Writes (H, W, 3|4) uint8 as RGBA PNG, atomically.");
     m.def(
         "read_exr",
-        [](const std::string& path, const std::string& channel) { return floatArray(io::readExr(path, channel)); },
+        [](const py::handle& path, const py::handle& channel) {
+            return floatArray(io::readExr(pathArg(path, "path"), strArg(channel, "channel")));
+        },
         py::arg("path"), py::arg("channel") = "",
         "One channel of an OpenEXR file as (H, W) float32 (channel '' = the only one, or Z, Y, R).");
     m.def(
         "write_exr",
-        [](const std::string& path, const py::array& image, const std::string& channel) {
+        [](const py::handle& path, const py::handle& image, const py::handle& channel) {
+            const std::string file = pathArg(path, "path");
             ImageF copy;
-            io::writeExr(path, floatView(image, "image", copy), channel);
+            const ImageView<const float> view = floatView(arrayArg(image, "image"), "image", copy);
+            io::writeExr(file, view, strArg(channel, "channel"));
         },
         py::arg("path"), py::arg("image"), py::arg("channel") = "Y", "Writes (H, W) float32 as a one-channel OpenEXR.");
     m.def("read_apng", &readApngFrames, py::arg("path"), "An APNG's frames: a list of ((H, W, 4) uint8, delay s).");
     m.def("write_apng", &writeApngFrames, py::arg("path"), py::arg("frames"), py::arg("fps") = 25.0,
           "Writes frames (a list of (H, W, 3|4) uint8 of one size) as a looping APNG, atomically.");
     m.def(
-        "psnr", [](const py::array& a, const py::array& b) { return pairMetric(a, b, eval::psnr); }, py::arg("a"),
+        "psnr", [](const py::handle& a, const py::handle& b) { return pairMetric(a, b, eval::psnr); }, py::arg("a"),
         py::arg("b"), "PSNR in dB over RGB in [0, 1] (inf when equal).");
     m.def(
-        "ssim", [](const py::array& a, const py::array& b) { return pairMetric(a, b, eval::ssim); }, py::arg("a"),
+        "ssim", [](const py::handle& a, const py::handle& b) { return pairMetric(a, b, eval::ssim); }, py::arg("a"),
         py::arg("b"), "SSIM on non-overlapping 8x8 windows, mean over RGB (docs/evaluation.md).");
     m.def(
         "score_x8",
-        [](const py::array& output, const py::array& render8x, int threads) {
-            const RgbaInput x = rgbaInput(output, "output"), y = rgbaInput(render8x, "render8x");
+        [](const py::handle& output, const py::handle& render8x, const py::handle& threadsArg_) {
+            const RgbaInput x = rgbaInput(arrayArg(output, "output"), "output"),
+                            y = rgbaInput(arrayArg(render8x, "render8x"), "render8x");
             if (std::int64_t(x.view.width()) * 8 != y.view.width() ||
                 std::int64_t(x.view.height()) * 8 != y.view.height())
                 throw Error(fmt::format("render8x: {}x{}, not 8 times the output's {}x{}", y.view.width(),
                                         y.view.height(), x.view.width(), x.view.height()));
-            const Exec exec{threadCount(threads)};
+            const Exec exec{threadsArg(threadsArg_)};
             eval::Score sc;
             {
                 py::gil_scoped_release release;

@@ -142,7 +142,6 @@ def test_threads_do_not_change_the_bytes():
         (lambda: ssfx.aa(np.zeros((8, 8, 4), np.uint8), "ddaa2", searchRounds=2.5), ["searchRounds"]),
         (lambda: ssfx.aa(np.zeros((8, 8, 4), np.uint8), "ddaa2", texture="linear"), ["texture", "linear"]),
         (lambda: ssfx.aa(np.zeros((8, 8, 4), np.uint8), "ddaa2", bogus=1), ["bogus"]),
-        (lambda: ssfx.aa(np.zeros((8, 8, 4), np.uint8), "ddaa2", strength=[1]), ["strength"]),
         (lambda: ssfx.aa(np.zeros((8, 8, 4), np.uint8), "ddaa2", preset="max"), ["preset", "max"]),
         (lambda: ssfx.aa(np.zeros((8, 8, 4), np.uint8), "blur", preset="high"), ["presets"]),
         (lambda: ssfx.aa(np.zeros((8, 8, 4), np.uint8), "ddaa2", filtering="fast"), ["filtering"]),

@@ -33,9 +33,10 @@ std::int64_t maxPixels() { return gMaxPixels.load(); }
 
 void checkPath(const std::string& path) {
     // The C library stops a path at its first NUL: 'victim\0.png' would name 'victim'.
-    if (path.find('\0') != std::string::npos)
-        throw Error(fmt::format("path '{}': contains a NUL byte (\\0), which no file name can hold",
-                                std::string_view(path).substr(0, path.find('\0'))));
+    if (path.find('\0') == std::string::npos) return;
+    std::string shown;
+    for (char c : path) shown += c == '\0' ? std::string("\\0") : std::string(1, c);
+    throw Error(fmt::format("path '{}' contains a NUL byte (\\0), which no file name can hold", shown));
 }
 
 std::uint64_t pngFileLimit() {
