@@ -93,7 +93,7 @@ bool anyStdout(std::initializer_list<std::string_view> paths) {
     for (auto p : paths) {
         if (p.empty() || p == "-") continue;
         std::error_code ec;
-        const auto full = std::filesystem::weakly_canonical(std::filesystem::path(p), ec);
+        const auto full = std::filesystem::weakly_canonical(std::filesystem::absolute(std::filesystem::path(p), ec), ec);
         for (const auto& [other, otherFull] : files)
             if (full == otherFull)
                 throw Error(fmt::format("'{}' and '{}' name one file: give each output its own", other, p));

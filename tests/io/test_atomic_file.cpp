@@ -3,6 +3,7 @@
 // refused, temporary names that fit, temporaries removed on SIGTERM. Every file here is one
 // the test makes (never the real /dev).
 #include <fcntl.h>
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -246,4 +247,40 @@ TEST(OutputSet, FilesOfASetAppearTogetherOrNotAtAll) {
     EXPECT_EQ(contents(d / "a.txt"), "new a");
     EXPECT_EQ(contents(d / "b.txt"), "new b");
     EXPECT_EQ(temporaries(d), 0);
+}
+
+// Issue #35 item 3: a name of one of this process's descriptors (/proc/self/fd/N, /dev/fd/N,
+// and so /dev/stdout) is written into through the descriptor, at its offset: a file the
+// shell opened with >> keeps its content, a pipe gets the bytes; never renamed over.
+TEST(AtomicFile, DescriptorNamesAreWrittenIntoNotReplaced) {
+    const fs::path d = freshDir("atomic_fd");
+    const fs::path log = d / "log.bin";
+    { std::ofstream(log) << "earlier\n"; }
+    const int fd = ::open(log.c_str(), O_WRONLY | O_APPEND);
+    ASSERT_GE(fd, 0);
+    for (const std::string name : {fmt::format("/proc/self/fd/{}", fd), fmt::format("/dev/fd/{}", fd)}) {
+        io::AtomicFile f(name);
+        EXPECT_TRUE(f.direct()) << name;
+        f.write({reinterpret_cast<const std::uint8_t*>("new\n"), 4});
+        f.commit();
+    }
+    ::close(fd);
+    EXPECT_EQ(contents(log), "earlier\nnew\nnew\n");
+    EXPECT_EQ(temporaries(d), 0);
+
+    int p[2];
+    ASSERT_EQ(::pipe(p), 0);
+    {
+        io::AtomicFile f(fmt::format("/proc/self/fd/{}", p[1]));
+        f.write({reinterpret_cast<const std::uint8_t*>("abc"), 3});
+        f.commit();
+    }
+    ::close(p[1]);
+    char buf[8] = {};
+    EXPECT_EQ(::read(p[0], buf, sizeof buf), 3);
+    EXPECT_EQ(std::string(buf), "abc");
+    ::close(p[0]);
+
+    // A descriptor that is not open is an error naming it, not a file created in /proc.
+    EXPECT_THROW(io::AtomicFile("/dev/fd/987"), Error);
 }

@@ -5,8 +5,11 @@
 
 #include <cmath>
 
+#include <fmt/format.h>
+
 #include "ssfx/io/camera.hpp"
 #include "ssfx/io/exr.hpp"
+#include "tests/support/test_support.hpp"
 
 using namespace ssfx;
 
@@ -96,4 +99,46 @@ TEST(Camera, JsonRoundTripAndErrors) {
     EXPECT_NE(message("{}").find("cam.json: missing key 'fov_y_deg'"), std::string::npos) << message("{}");
     const std::string near = message(R"({"fov_y_deg": 60, "z_near": 0.1, "z_far": null})");
     EXPECT_NE(near.find("cam.json: z_near"), std::string::npos) << near;
+}
+
+// The line offset table is written (OpenEXR writes it from the output file's destructor,
+// after the pixels): the one block of a small file is where the table says. Files written
+// before this was fixed had a zeroed table, which readers must rebuild.
+TEST(Exr, TheLineOffsetTableIsWritten) {
+    const ImageF img(8, 4, 0.25f);
+    const std::vector<std::uint8_t> b = io::encodeExr(img.view(), "Z");
+    auto le64 = [&](std::size_t at) {
+        std::uint64_t v = 0;
+        for (int i = 7; i >= 0; --i) v = v << 8 | b[at + std::size_t(i)];
+        return v;
+    };
+    bool found = false;
+    for (std::size_t at = 8; at + 16 <= b.size() && !found; ++at)
+        found = le64(at) == at + 8 && (le64(at + 8) >> 32) == b.size() - at - 16;  // y = 0, then the size
+    EXPECT_TRUE(found);
+}
+
+// Issue #35 item 8: a file whose table is whole but whose blocks claim more pixels than they
+// can hold is refused before the image is allocated (the CLI test crafts 16384^2 in 33 KB).
+TEST(Exr, BlocksThatCannotHoldTheClaimedPixelsAreRefused) {
+    const ImageF img(8, 4, 0.25f);
+    std::vector<std::uint8_t> b = io::encodeExr(img.view(), "Z");
+    const std::string key("dataWindow\0box2i\0", 17);
+    const auto at = std::search(b.begin(), b.end(), key.begin(), key.end()) - b.begin() + 17 + 4;
+    b[std::size_t(at) + 8] = 0xFF, b[std::size_t(at) + 9] = 0x0F;  // xMax = 4095: one block claims 64 KiB
+    const std::string m = test::errorOf([&] { io::decodeExr(b, "wide.exr"); });
+    EXPECT_NE(m.find("wide.exr: corrupt EXR (scan-line block 0 packs"), std::string::npos) << m;
+    b.resize(b.size() - 4);  // and cut short
+    const std::string cut = test::errorOf([&] { io::decodeExr(b, "cut.exr"); });
+    EXPECT_NE(cut.find("cut.exr"), std::string::npos) << cut;
+}
+
+TEST(Camera, TheFieldOfViewIsCheckedInTheFilesDegrees) {
+    for (const char* fov : {"180", "0", "-5", "200"}) {
+        const std::string m = test::errorOf([&] {
+            io::parseCameraJson(fmt::format(R"({{"fov_y_deg": {}, "z_near": -0.1, "z_far": null}})", fov), "c.json");
+        });
+        EXPECT_NE(m.find(fmt::format("c.json: 'fov_y_deg' {} is not in (0, 180) degrees", fov)), std::string::npos)
+            << m;
+    }
 }

@@ -1,7 +1,9 @@
 // PNG reading: the conversion rule to RGBA8 (png.hpp) for every colour type and depth.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <filesystem>
+#include <fstream>
 
 #include "ssfx/io/png.hpp"
 #include "tests/io/png_writer.hpp"
@@ -74,4 +76,56 @@ TEST(Png, WriteIsAtomicAndReadable) {
     for (const auto& e : std::filesystem::directory_iterator(test::outDir()))
         if (e.path().filename().string().find("atomic.png") != std::string::npos) ++files;
     EXPECT_EQ(files, 1);
+}
+
+// Issue #35 item 8: a PNG is read up to its IEND chunk and no further, so that a stream that
+// goes on after the image (a FIFO fed by `cat a.png /dev/zero`) costs one image; the read's
+// cap follows --max-pixels.
+TEST(Png, AFileIsReadUpToItsEndChunkAndNoFurther) {
+    const std::string dir = test::outDir();
+    ImageRgba8 img(5, 3);
+    for (int y = 0; y < 3; ++y)
+        for (int x = 0; x < 5; ++x) img(x, y) = {std::uint8_t(x * 40), std::uint8_t(y * 70), 9, 255};
+    const std::vector<std::uint8_t> png = io::encodePng(img.view());
+    const std::string path = dir + "/trailing.png";
+    {
+        std::FILE* f = std::fopen(path.c_str(), "wb");
+        std::fwrite(png.data(), 1, png.size(), f);
+        const std::vector<std::uint8_t> junk(1 << 20, 0);
+        std::fwrite(junk.data(), 1, junk.size(), f);
+        std::fclose(f);
+    }
+    EXPECT_EQ(io::readPngFile(path), png);
+    EXPECT_EQ(io::readPng(path), img);
+    // A cut file comes back as it is, for the decoder to name.
+    {
+        std::FILE* f = std::fopen(path.c_str(), "wb");
+        std::fwrite(png.data(), 1, png.size() - 5, f);
+        std::fclose(f);
+    }
+    EXPECT_EQ(io::readPngFile(path).size(), png.size() - 5);
+    EXPECT_NE(test::errorOf([&] { io::readPng(path); }).find("trailing.png"), std::string::npos);
+}
+
+TEST(Png, TheReadLimitFollowsMaxPixels) {
+    EXPECT_EQ(io::pngFileLimit(), io::kMaxImageFileBytes);
+    io::setMaxPixels(1000);
+    EXPECT_EQ(io::pngFileLimit(), 5000u + (16u << 20));
+    io::setMaxPixels(kMaxPixels);
+    EXPECT_EQ(io::pngFileLimit(), io::kMaxImageFileBytes);
+}
+
+TEST(Png, APathWithANulByteIsRefusedNotCut) {
+    const std::string dir = test::outDir();
+    const std::string victim = dir + "/victim";
+    { std::ofstream(victim) << "keep"; }
+    const std::string withNul = victim + std::string(1, '\0') + ".png";
+    const std::string m = test::errorOf([&] { io::writePng(withNul, ImageRgba8(2, 2).view()); });
+    EXPECT_NE(m.find("victim\\0.png' contains a NUL byte"), std::string::npos) << m;
+    EXPECT_NE(test::errorOf([&] { io::readPng(withNul); }).find("NUL byte"), std::string::npos);
+    EXPECT_NE(test::errorOf([&] { io::makeDirectories(withNul); }).find("NUL byte"), std::string::npos);
+    std::ifstream in(victim);
+    std::string text;
+    in >> text;
+    EXPECT_EQ(text, "keep");
 }

@@ -11,6 +11,8 @@
 #include <fstream>
 #include <thread>
 
+#include <sys/stat.h>
+
 #include "ssfx/core/error.hpp"
 #include "ssfx/core/parallel.hpp"
 #include "ssfx/io/png.hpp"
@@ -50,6 +52,47 @@ TEST(FramePattern, FindsTheExistingFramesItNames) {
     const io::FramePattern p((dir / "f.%04d.png").string());
     EXPECT_EQ(p.existing(), (std::vector<int>{1, 3, 10}));  // not f.3 or f.00002: other widths
     EXPECT_TRUE(io::FramePattern((dir / "none.%04d.png").string()).existing().empty());
+}
+
+TEST(FramePattern, NamesTheFrameOfAFileName) {
+    const io::FramePattern p("in/f.%04d.png");
+    EXPECT_EQ(p.frameOf("f.0007.png"), 7);
+    EXPECT_EQ(p.frameOf("f.12345.png"), 12345);
+    for (const char* other : {"f.7.png", "f.+007.png", "f.00007.png", "g.0007.png", "f.0007.png.bak", "f..png"})
+        EXPECT_EQ(p.frameOf(other), -1) << other;
+    EXPECT_EQ(io::FramePattern("%d").frameOf("42"), 42);
+    EXPECT_EQ(io::FramePattern("%d").frameOf("042"), -1);
+    for (int n : {0, 9, 10, 999999999}) EXPECT_EQ(p.frameOf(fs::path(p.path(n)).filename().string()), n);
+}
+
+// Issue #35 items 6 and 7: the frames of a range are checked against the folder's listing
+// (no list of a billion numbers), and a frame that is not a regular file is refused by name
+// before anything opens it (a FIFO would block the run).
+TEST(FramePattern, SelectsFramesLazilyAndRefusesWhatIsNotAFile) {
+    const fs::path dir = fs::path(test::outDir()) / "select";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    for (const char* name : {"f.0001.png", "f.0002.png", "f.0003.png", "f.0005.png"}) std::ofstream(dir / name) << "x";
+    const io::FramePattern p((dir / "f.%04d.png").string());
+    EXPECT_EQ(p.select(nullptr), (std::vector<int>{1, 2, 3, 5}));
+    const io::FrameRange two = io::FrameRange::parse("2-3"), all = io::FrameRange::parse("0-999999999"),
+                         gap = io::FrameRange::parse("1-5");
+    EXPECT_EQ(p.select(&two), (std::vector<int>{2, 3}));
+    const std::string m = test::errorOf([&] { p.select(&all); });
+    EXPECT_NE(m.find("999999996 of 1000000000 frames are missing, the first: " + p.path(0)), std::string::npos) << m;
+    const std::string g = test::errorOf([&] { p.select(&gap); });
+    EXPECT_NE(g.find("1 of 5 frames are missing, the first: " + p.path(4)), std::string::npos) << g;
+    const io::FramePattern none((dir / "none.%d.png").string());
+    EXPECT_NE(test::errorOf([&] { none.select(nullptr); }).find("no files match"), std::string::npos);
+
+    ASSERT_EQ(::mkfifo((dir / "f.0004.png").c_str(), 0600), 0);
+    fs::create_directories(dir / "f.0006.png");
+    const std::string fifo = test::errorOf([&] { p.select(&gap); });
+    EXPECT_NE(fifo.find(p.path(4) + ": a FIFO, not a regular file"), std::string::npos) << fifo;
+    const std::string folder = test::errorOf([&] { p.select(nullptr); });  // the FIFO first
+    EXPECT_NE(folder.find("a FIFO"), std::string::npos) << folder;
+    fs::remove(dir / "f.0004.png");
+    EXPECT_NE(test::errorOf([&] { p.select(nullptr); }).find(p.path(6) + ": a folder"), std::string::npos);
 }
 
 TEST(FrameRange, ParsesRangesAndRefusesTheRest) {
