@@ -11,7 +11,8 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::string text(reinterpret_cast<const char*>(data), size);
     const std::size_t newline = text.find('\n');
-    const std::string pattern = text.substr(0, newline), range = newline == std::string::npos ? "" : text.substr(newline + 1);
+    const std::string pattern = text.substr(0, newline),
+                      range = newline == std::string::npos ? "" : text.substr(newline + 1);
     try {
         const ssfx::io::FramePattern p(pattern);
         if (!ssfx::io::FramePattern::isPattern(pattern)) __builtin_trap();  // a pattern holds a conversion

@@ -90,7 +90,8 @@ std::optional<double> numberOf(const py::handle& v, const std::string& arg) {
         if (d == -1.0 && PyErr_Occurred()) {
             PyErr_Clear();
             const std::string digits = py::str(i);
-            throw Error(fmt::format("{}: {} ({} digits) is too large", arg, digits.substr(0, 12) + "...", digits.size()));
+            throw Error(
+                fmt::format("{}: {} ({} digits) is too large", arg, digits.substr(0, 12) + "...", digits.size()));
         }
         return d;
     }
@@ -534,8 +535,7 @@ PYBIND11_MODULE(_ssfx, m) {
         "The AlchemyAO baseline, as sao().");
     m.def(
         "read_png", [](const py::handle& path) { return toArray(io::readPng(pathArg(path, "path")).view(), 4); },
-        py::arg("path"),
-        "A PNG as (H, W, 4) uint8.");
+        py::arg("path"), "A PNG as (H, W, 4) uint8.");
     m.def(
         "write_png",
         [](const py::handle& path, const py::handle& image) {

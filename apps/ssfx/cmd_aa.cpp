@@ -127,7 +127,8 @@ Frames openFrames(const AaOptions& o, std::pair<int, int> rawSize, bool outPatte
     if (!o.frames.empty()) throw Error("--frames goes with a numbered input (frame.%04d.png)");
     const std::string input = io::FramePattern::plain(o.input);
     if (input != "-" && isFolder(input)) {
-        for (const auto& name : io::pngFilesIn(input)) f.files.push_back((std::filesystem::path(input) / name).string());
+        for (const auto& name : io::pngFilesIn(input))
+            f.files.push_back((std::filesystem::path(input) / name).string());
         return f;
     }
     if (rawSize.first == 0) {
@@ -158,8 +159,7 @@ void runFrames(const AaOptions& o, const Applier& method, const Exec& exec) {
     Frames in = openFrames(o, rawSize, outPattern);
     const std::string output = outPattern ? o.output : io::FramePattern::plain(o.output);
     // Without --raw a plain output path is a folder; with it, a raw file unless it is a folder.
-    const bool outFolder =
-        !outPattern && output != "-" && (isFolder(output) || output.back() == '/' || o.raw.empty());
+    const bool outFolder = !outPattern && output != "-" && (isFolder(output) || output.back() == '/' || o.raw.empty());
     const bool outRaw = !outPattern && !outFolder;
     // Folders made here are removed again if the run fails before writing into them.
     std::optional<io::OutputFolder> made;
@@ -254,7 +254,7 @@ void runFrames(const AaOptions& o, const Applier& method, const Exec& exec) {
         // What became of the whole frames before the cut, said as the help says it.
         const bool held = rawFile && !rawFile->direct();
         throw Error(fmt::format("{}; {}", stopped->what(),
-                                held      ? fmt::format("{} is not written (a raw output file appears only whole)", output)
+                                held ? fmt::format("{} is not written (a raw output file appears only whole)", output)
                                 : written ? fmt::format("the {} frame(s) before it were written", written)
                                           : "nothing was written"));
     }

@@ -1,7 +1,7 @@
 #include "apps/ssfx/console.hpp"
 
-#include <fmt/format.h>
 #include <fcntl.h>
+#include <fmt/format.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -53,8 +53,9 @@ bool finishStdout() {
     errno = 0;
     if (std::fflush(stdout) == 0 && !std::ferror(stdout)) return true;
     const int e = errno;
-    reportError(fmt::format("cannot write to standard output ({})",
-                            gStdoutClosed ? "it is closed" : e ? std::strerror(e) : "write error"));
+    reportError(fmt::format("cannot write to standard output ({})", gStdoutClosed ? "it is closed"
+                                                                    : e           ? std::strerror(e)
+                                                                                  : "write error"));
     return false;
 }
 
@@ -81,8 +82,8 @@ void reportProgress(const Progress& p) {
 void writeOutput(const std::string& path, const std::string& text) {
     if (path != "-") return io::writeTextAtomic(path, text);
     if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0)
-        throw Error(fmt::format("cannot write to standard output ({})",
-                                gStdoutClosed ? "it is closed" : std::strerror(errno)));
+        throw Error(
+            fmt::format("cannot write to standard output ({})", gStdoutClosed ? "it is closed" : std::strerror(errno)));
 }
 
 bool anyStdout(std::initializer_list<std::string_view> paths) {
@@ -93,7 +94,8 @@ bool anyStdout(std::initializer_list<std::string_view> paths) {
     for (auto p : paths) {
         if (p.empty() || p == "-") continue;
         std::error_code ec;
-        const auto full = std::filesystem::weakly_canonical(std::filesystem::absolute(std::filesystem::path(p), ec), ec);
+        const auto full =
+            std::filesystem::weakly_canonical(std::filesystem::absolute(std::filesystem::path(p), ec), ec);
         for (const auto& [other, otherFull] : files)
             if (full == otherFull)
                 throw Error(fmt::format("'{}' and '{}' name one file: give each output its own", other, p));

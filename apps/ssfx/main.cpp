@@ -78,4 +78,3 @@ int main(int argc, char** argv) {
     if (!ssfx::cli::finishStdout()) status = status == 0 ? 2 : status;
     return status;
 }
-

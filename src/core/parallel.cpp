@@ -7,11 +7,11 @@
 
 #include <algorithm>
 #include <exception>
-#include <utility>
-#include <vector>
 #include <map>
 #include <memory>
 #include <mutex>
+#include <utility>
+#include <vector>
 
 namespace ssfx {
 

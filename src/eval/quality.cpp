@@ -34,8 +34,8 @@ bool isStillPng(const std::string& path) {
 ImageRgba8 readStill(const std::string& path) {
     const auto bytes = io::readPngFile(path);
     if (io::isApng(bytes))
-        throw Error(fmt::format("{}: an animated PNG, where a still image is expected (animations: ssfx eval temporal)",
-                                path));
+        throw Error(
+            fmt::format("{}: an animated PNG, where a still image is expected (animations: ssfx eval temporal)", path));
     return io::decodePng(bytes, path);
 }
 

@@ -60,9 +60,9 @@ private:
 
 // What checkHeader() learns of a single-part scanline file for checkChunks().
 struct HeaderFacts {
-    std::size_t end = 0;        // the first byte after the header: the line offset table
-    bool scanlines = false;     // single part, not tiled, not deep: the table is checkable
-    int compression = -1;       // the "compression" attribute (OpenEXR's enum order)
+    std::size_t end = 0;     // the first byte after the header: the line offset table
+    bool scanlines = false;  // single part, not tiled, not deep: the table is checkable
+    int compression = -1;    // the "compression" attribute (OpenEXR's enum order)
     std::int64_t width = 0, height = 0;
     std::int64_t bytesPerPixel = 0;  // full-resolution channels only (a lower bound)
 };
@@ -148,9 +148,10 @@ void checkChunks(std::span<const std::uint8_t> b, const HeaderFacts& h, const st
     const std::int64_t blocks = (h.height + lines - 1) / lines;
     const std::uint64_t tableBytes = std::uint64_t(blocks) * 8;
     if (h.end > b.size() || tableBytes > b.size() - h.end)
-        throw Error(fmt::format("{}: file is truncated ({} scan-line blocks of {}x{} pixels need an offset table of {} "
-                                "bytes; the file has {} after its header)",
-                                name, blocks, h.width, h.height, tableBytes, b.size() - std::min(b.size(), h.end)));
+        throw Error(
+            fmt::format("{}: file is truncated ({} scan-line blocks of {}x{} pixels need an offset table of {} "
+                        "bytes; the file has {} after its header)",
+                        name, blocks, h.width, h.height, tableBytes, b.size() - std::min(b.size(), h.end)));
     // The table's offsets, or, where an entry is unset (a file whose writer stopped early, or
     // one written before ssfx's table fix), the blocks one after another from the table's
     // end, as OpenEXR reconstructs such a table.
@@ -168,16 +169,18 @@ void checkChunks(std::span<const std::uint8_t> b, const HeaderFacts& h, const st
         const bool inside = at <= b.size() && b.size() - at >= 8;
         const std::int32_t packed = inside ? le32(&b[at + 4]) : -1;
         if (!inside || packed < 0 || std::uint64_t(packed) > b.size() - at - 8)
-            throw Error(fmt::format("{}: file is truncated or corrupt (scan-line block {} of {} lies past the end of "
-                                    "the file's {} bytes)",
-                                    name, k, blocks, b.size()));
+            throw Error(
+                fmt::format("{}: file is truncated or corrupt (scan-line block {} of {} lies past the end of "
+                            "the file's {} bytes)",
+                            name, k, blocks, b.size()));
         next = at + 8 + std::uint64_t(packed);
         const std::int64_t rows = std::min<std::int64_t>(lines, h.height - k * lines);
         const std::int64_t raw = h.width * rows * h.bytesPerPixel;
         if (kRatio[h.compression] > 0 && std::int64_t(packed) * kRatio[h.compression] < raw)
-            throw Error(fmt::format("{}: corrupt EXR (scan-line block {} packs {} bytes of pixels into {}, more than "
-                                    "its compression can)",
-                                    name, k, raw, packed));
+            throw Error(
+                fmt::format("{}: corrupt EXR (scan-line block {} packs {} bytes of pixels into {}, more than "
+                            "its compression can)",
+                            name, k, raw, packed));
     }
 }
 

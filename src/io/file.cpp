@@ -7,8 +7,8 @@
 
 #include <algorithm>
 #include <atomic>
-#include <charconv>
 #include <cerrno>
+#include <charconv>
 #include <csignal>
 #include <cstdio>
 #include <cstring>
@@ -354,8 +354,7 @@ void OutputSet::commit() {
 void AtomicFile::commit() {
     if (!file_) throw Error(fmt::format("{}: committed twice", path_));
     if (direct_) {
-        const bool ok =
-            std::fflush(file_) == 0 && (file_ == stdout || file_ == stderr || std::fclose(file_) == 0);
+        const bool ok = std::fflush(file_) == 0 && (file_ == stdout || file_ == stderr || std::fclose(file_) == 0);
         file_ = nullptr;
         if (!ok) throw Error(fmt::format("{}: write failed ({})", path_, std::strerror(errno)));
         return;

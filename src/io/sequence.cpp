@@ -91,8 +91,8 @@ std::string FramePattern::path(int frame) const { return fmt::format("{}{:0{}d}{
 int FramePattern::frameOf(std::string_view name) const {
     // prefix_ may hold folders; the file name's own prefix is what follows the last '/'.
     const std::size_t slash = prefix_.rfind('/');
-    const std::string_view stem = slash == std::string::npos ? std::string_view(prefix_)
-                                                             : std::string_view(prefix_).substr(slash + 1);
+    const std::string_view stem =
+        slash == std::string::npos ? std::string_view(prefix_) : std::string_view(prefix_).substr(slash + 1);
     if (name.size() <= stem.size() + suffix_.size() || name.substr(0, stem.size()) != stem ||
         name.substr(name.size() - suffix_.size()) != suffix_)
         return -1;
@@ -131,8 +131,8 @@ std::vector<int> FramePattern::select(const FrameRange* range) const {
                 if (n != missing) break;
                 ++missing;
             }
-            throw Error(fmt::format("{} of {} frames are missing, the first: {}", range->count() - std::int64_t(frames.size()),
-                                    range->count(), path(missing)));
+            throw Error(fmt::format("{} of {} frames are missing, the first: {}",
+                                    range->count() - std::int64_t(frames.size()), range->count(), path(missing)));
         }
     }
     if (frames.empty()) throw Error(fmt::format("{}: no files match the frame pattern", pattern_));
@@ -203,9 +203,8 @@ bool RawFrameReader::read(ImageRgba8& frame) {
     if (got < want) {
         if (std::ferror(stream_))
             throw Error(fmt::format("{}: reading raw frame {} failed: {}", name_, frames_, std::strerror(errno)));
-        throw Error(
-            fmt::format("{}: raw frame {} is cut short: {} of {} bytes ({}x{} RGBA8), after {} whole frame(s)",
-                        name_, frames_, got, want, width_, height_, frames_));
+        throw Error(fmt::format("{}: raw frame {} is cut short: {} of {} bytes ({}x{} RGBA8), after {} whole frame(s)",
+                                name_, frames_, got, want, width_, height_, frames_));
     }
     ++frames_;
     return true;
