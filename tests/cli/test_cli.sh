@@ -7,12 +7,8 @@ OUT=$2
 SRC=$(cd "$(dirname "$0")/../.." && pwd)
 rm -rf "$OUT" && mkdir -p "$OUT"
 fail=0
-check() {  # check NAME EXPECTED_EXIT CMD...
-  local name=$1 want=$2; shift 2
-  "$@" >"$OUT/$name.out" 2>"$OUT/$name.err"
-  local got=$?
-  if [ "$got" != "$want" ]; then echo "FAIL $name: exit $got, expected $want"; cat "$OUT/$name.err"; fail=1; fi
-}
+# shellcheck source=tests/cli/lib.sh
+. "$SRC/tests/cli/lib.sh"  # check NAME EXPECTED_EXIT CMD...
 # Commands that load Vulkan: no leak checking in sanitizer builds (the loader unloads the
 # driver before LeakSanitizer reports; see tests/CMakeLists.txt). No effect otherwise.
 VK="env ASAN_OPTIONS=detect_leaks=0"

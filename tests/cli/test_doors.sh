@@ -8,13 +8,10 @@ OUT=$2
 SRC=$(cd "$(dirname "$0")/../.." && pwd)
 MAKE="python3 $SRC/tests/cli/make_inputs.py"
 rm -rf "$OUT" && mkdir -p "$OUT" && cd "$OUT" || exit 1
+OUT=$PWD
 fail=0
-check() {  # check NAME EXPECTED_EXIT CMD...
-  local name=$1 want=$2; shift 2
-  "$@" >"$name.out" 2>"$name.err"
-  local got=$?
-  if [ "$got" != "$want" ]; then echo "FAIL $name: exit $got, expected $want"; cat "$name.err"; fail=1; fi
-}
+# shellcheck source=tests/cli/lib.sh
+. "$SRC/tests/cli/lib.sh"  # check NAME EXPECTED_EXIT CMD...
 contains() {  # contains NAME FILE TEXT
   grep -qF -- "$3" "$2" || { echo "FAIL $1: '$3' not in $2:"; cat "$2"; fail=1; }
 }
