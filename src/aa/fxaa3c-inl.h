@@ -10,6 +10,10 @@
 
 #include <hwy/highway.h>
 
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
 #include "src/aa/ppaa-inl.h"
 #include "ssfx/aa/fxaa.hpp"
 
@@ -28,34 +32,50 @@ HWY_INLINE VF ClampTwo(VF q) {
     return hn::IfThenElse(hn::Ne(q, q), m2, hn::Min(hn::Max(q, m2), hn::Set(df, 2.0f)));
 }
 
-// fxaa3c for pixels [x, x + N) of row y, 1 <= x, x + N <= W - 1; diagonals at +-1 pixel.
-HWY_INLINE void Fxaa3cChunk(const Texture& tex, const LumaRows& L, int x, int y, const Fxaa3cParams& p,
-                            const Rgba8* src, Rgba8* dst) {
+// The early exit of pixels [x, x + N) of row y (1 <= x, x + N <= W - 1): true where the
+// diagonal contrast is below the threshold (the pixel is copied).
+HWY_INLINE hn::Mask<DF> Fxaa3cExit(const LumaRows& L, int x, int y, const Fxaa3cParams& p) {
     const DF df;
-    const DU du;
     const float* ra = L.row(y - 1);
     const float* rc = L.row(y);
     const float* rb = L.row(y + 1);
-    // Lottes' names (y down): NW = (-1, -1), NE = (+1, -1), SW = (-1, +1), SE = (+1, +1).
     const VF lumaNW = hn::LoadU(df, ra + x - 1), lumaSW = hn::LoadU(df, rb + x - 1);
     const VF lumaSE = hn::LoadU(df, rb + x + 1);
     const VF lumaNE = hn::Add(hn::LoadU(df, ra + x + 1), hn::Set(df, 1.0f / 384.0f));
     const VF lumaM = hn::LoadU(df, rc + x);
     const VF lumaMax = hn::Max(hn::Max(lumaNE, lumaSE), hn::Max(lumaNW, lumaSW));
     const VF lumaMin = hn::Min(hn::Min(lumaNE, lumaSE), hn::Min(lumaNW, lumaSW));
-    const auto exit = hn::Lt(hn::Sub(hn::Max(lumaMax, lumaM), hn::Min(lumaMin, lumaM)),
-                             hn::Max(hn::Set(df, p.edgeThresholdMin), hn::Mul(lumaMax, hn::Set(df, p.edgeThreshold))));
-    if (hn::AllTrue(df, exit)) {
-        std::memcpy(dst + x, src + x, hn::Lanes(df) * sizeof(Rgba8));
-        return;
-    }
+    return hn::Lt(hn::Sub(hn::Max(lumaMax, lumaM), hn::Min(lumaMin, lumaM)),
+                  hn::Max(hn::Set(df, p.edgeThresholdMin), hn::Mul(lumaMax, hn::Set(df, p.edgeThreshold))));
+}
+
+// fxaa3c for the pixels xv (N columns of row y, each 1 <= x <= W - 2, repeats allowed) that
+// do not exit early; diagonals at +-1 pixel, so the diagonal lumas are luma-plane lookups.
+// Lumas are gathered, the result scattered: the pixels need not be adjacent.
+HWY_INLINE void Fxaa3cPixels(const Texture& tex, const LumaRows& L, VI xv, int y, const Fxaa3cParams& p,
+                             const Rgba8* src, Rgba8* dst) {
+    const DF df;
+    const DI di;
+    const DU du;
+    const float* ra = L.row(y - 1);
+    const float* rb = L.row(y + 1);
+    const VI one = hn::Set(di, 1);
+    const VI west = hn::Sub(xv, one), east = hn::Add(xv, one);
+    // Lottes' names (y down): NW = (-1, -1), NE = (+1, -1), SW = (-1, +1), SE = (+1, +1).
+    const VF lumaNW = hn::GatherIndex(df, ra, west), lumaSW = hn::GatherIndex(df, rb, west);
+    const VF lumaSE = hn::GatherIndex(df, rb, east);
+    const VF lumaNE = hn::Add(hn::GatherIndex(df, ra, east), hn::Set(df, 1.0f / 384.0f));
+    const VF lumaMax = hn::Max(hn::Max(lumaNE, lumaSE), hn::Max(lumaNW, lumaSW));
+    const VF lumaMin = hn::Min(hn::Min(lumaNE, lumaSE), hn::Min(lumaNW, lumaSW));
     const VF swMinusNe = hn::Sub(lumaSW, lumaNE), seMinusNw = hn::Sub(lumaSE, lumaNW);
     const VF dirX = hn::Add(swMinusNe, seMinusNw), dirY = hn::Sub(swMinusNe, seMinusNw);
     const VF len = hn::Sqrt(hn::Add(hn::Mul(dirX, dirX), hn::Mul(dirY, dirY)));
-    const auto keep = hn::Or(exit, hn::Not(hn::Gt(len, hn::Zero(df))));  // no direction: unchanged
+    const auto keep = hn::Not(hn::Gt(len, hn::Zero(df)));  // no direction: unchanged
     const VF d1x = hn::Div(dirX, len), d1y = hn::Div(dirY, len);
 
-    const VF u = CentreU(tex, x), v = hn::Set(df, tex.centreV(y));
+    // The pixel centre (x + 0.5) / W, the same float operations as Texture::centreU.
+    const VF u = hn::Div(hn::Add(hn::ConvertTo(df, xv), hn::Set(df, 0.5f)), hn::Set(df, float(tex.width())));
+    const VF v = hn::Set(df, tex.centreV(y));
     const VF invW = hn::Set(df, tex.invW()), invH = hn::Set(df, tex.invH());
     const VF half = hn::Set(df, 0.5f), two = hn::Set(df, 2.0f), quarter = hn::Set(df, 0.25f);
     const VF s1x = hn::Mul(hn::Mul(d1x, half), invW), s1y = hn::Mul(hn::Mul(d1y, half), invH);
@@ -76,22 +96,43 @@ HWY_INLINE void Fxaa3cChunk(const Texture& tex, const LumaRows& L, int x, int y,
     const auto twoTap = hn::Or(hn::Lt(lumaB, lumaMin), hn::Gt(lumaB, lumaMax));
     const RgbV result{hn::IfThenElse(twoTap, hn::Mul(A.r, half), B.r), hn::IfThenElse(twoTap, hn::Mul(A.g, half), B.g),
                       hn::IfThenElse(twoTap, hn::Mul(A.b, half), B.b)};
-    const VU srcV = hn::LoadU(du, reinterpret_cast<const std::uint32_t*>(src + x));
+    const auto* src32 = reinterpret_cast<const std::uint32_t*>(src);
+    const VU srcV = hn::GatherIndex(du, src32, xv);
     const VU rgb =
         hn::Or(hn::Or(hn::BitCast(du, Quantize(result.r)), hn::ShiftLeft<8>(hn::BitCast(du, Quantize(result.g)))),
                hn::ShiftLeft<16>(hn::BitCast(du, Quantize(result.b))));
     const VU out = hn::Or(rgb, hn::And(srcV, hn::Set(du, 0xFF000000u)));
-    hn::StoreU(hn::IfThenElse(hn::RebindMask(du, keep), srcV, out), du, reinterpret_cast<std::uint32_t*>(dst + x));
+    hn::ScatterIndex(hn::IfThenElse(hn::RebindMask(du, keep), srcV, out), du, reinterpret_cast<std::uint32_t*>(dst),
+                     xv);
 }
 
-// The interior chunks of row y; returns the first x not written (the caller does x = 0 and
-// [returned, W) with the scalar kernel).
+// The interior of row y, [1, returned): every pixel copied, then the pixels that do not exit
+// early listed and run N at a time. Listing first keeps the expensive part (four filtered
+// reads a pixel) off the lanes that would only copy, which on photographs, where edge pixels
+// are scattered, is most lanes of a chunk that holds one. The caller does x = 0 and
+// [returned, W) with the scalar kernel.
 inline int Fxaa3cRowSimd(const Texture& tex, const LumaRows& L, int y, const Fxaa3cParams& p, const Rgba8* src,
                          Rgba8* dst) {
-    const int n = int(hn::Lanes(DF()));
-    int x = 1;
-    for (; x + n <= L.width - 1; x += n) Fxaa3cChunk(tex, L, x, y, p, src, dst);
-    return x;
+    const DI di;
+    const int n = int(hn::Lanes(DF())), w = L.width;
+    int end = 1;
+    while (end + n <= w - 1) end += n;
+    if (end == 1) return 1;
+    std::memcpy(dst + 1, src + 1, std::size_t(end - 1) * sizeof(Rgba8));
+    thread_local std::vector<std::int32_t> listed;
+    if (listed.size() < std::size_t(w + n)) listed.resize(std::size_t(w + n));
+    std::int32_t* xs = listed.data();
+    std::size_t count = 0;
+    for (int x = 1; x < end; x += n) {
+        const auto edge = hn::RebindMask(di, hn::Not(Fxaa3cExit(L, x, y, p)));
+        count += hn::CompressStore(hn::Iota(di, x), edge, di, xs + count);
+    }
+    for (std::size_t i = 0; i < count; i += std::size_t(n)) {
+        // The last group repeats its last pixel (the same value written again).
+        for (std::size_t k = count; k < i + std::size_t(n); ++k) xs[k] = xs[count - 1];
+        Fxaa3cPixels(tex, L, hn::LoadU(di, xs + i), y, p, src, dst);
+    }
+    return end;
 }
 
 }  // namespace HWY_NAMESPACE

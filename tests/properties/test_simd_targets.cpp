@@ -77,18 +77,44 @@ TEST(SimdTargets, Fxaa3cZeroDirectionComponentMatchesTheReference) {
 }
 
 // The chunked kernels (fxaa3d, ddaa1, ddaa2) tile a row's interior with vectors; the last
-// chunk of a row overlaps the one before it and writes through a buffer. Every width from
-// 1 to 3 vectors + 2 puts the row's end at every position within a chunk, on every target.
+// chunk of a row overlaps the one before it and writes through a buffer; fxaa3c lists a
+// row's edge pixels and runs them N at a time. Every width from 1 to 3 vectors + 2 puts the
+// row's end at every position within a chunk, on every target.
 TEST(SimdTargets, EveryRowEndWithinAChunkEqualsTheReference) {
     const ResetTargets reset;
     for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
         hwy::SetSupportedTargetsForTest(target);
-        for (const char* id : {"fxaa3d", "ddaa1", "ddaa2"}) {
+        for (const char* id : {"fxaa3c", "fxaa3d", "ddaa1", "ddaa2"}) {
             const MethodInfo& m = methodById(id);
             for (int w = 1; w <= 50; ++w) {
                 const auto in = test::noise(w, 4, unsigned(w));
                 ASSERT_EQ(m.run(in.view(), {}, {}), m.reference(in.view(), {}, {}))
                     << hwy::TargetName(target) << " " << id << " width " << w;
+            }
+        }
+    }
+}
+
+// Edge pixels scattered over a flat image, as on photographs: fxaa3c's list of a row's
+// edge pixels has gaps and a last group padded with repeats; every target, every width.
+TEST(SimdTargets, ScatteredEdgePixelsEqualTheReference) {
+    const ResetTargets reset;
+    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+        hwy::SetSupportedTargetsForTest(target);
+        for (const char* id : {"fxaa3c", "fxaa3d", "ddaa2"}) {
+            const MethodInfo& m = methodById(id);
+            for (int w = 1; w <= 50; ++w) {
+                ImageRgba8 in(w, 7);
+                for (int y = 0; y < 7; ++y)
+                    for (int x = 0; x < w; ++x) {
+                        const unsigned hash =
+                            unsigned(x) * 73856093u ^ unsigned(y) * 19349663u ^ unsigned(w) * 83492791u;
+                        const std::uint8_t v = hash % 11 == 0 ? std::uint8_t(hash >> 8) : 128;
+                        in(x, y) = {v, std::uint8_t(v / 2 + 40), std::uint8_t(255 - v), 255};
+                    }
+                const ImageRgba8 expected = m.reference(in.view(), {}, {});
+                ASSERT_EQ(m.run(in.view(), {}, {}), expected) << hwy::TargetName(target) << " " << id << " width " << w;
+                if (w == 50) EXPECT_NE(expected, in) << id;  // the dots are processed, not all copied
             }
         }
     }
