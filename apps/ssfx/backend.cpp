@@ -72,7 +72,14 @@ Applier makeApplier(const BackendOptions& o, const MethodInfo& m, const MethodSe
                 std::lock_guard guard(*lock);
                 return pass->lastMilliseconds();
             },
-            fmt::format("vulkan: {}, sampling={}", device, gpu::samplingName(sampling)), device};
+            fmt::format("vulkan: {}, sampling={}", device, gpu::samplingName(sampling)), device,
+            [pass, lock] {
+                std::lock_guard guard(*lock);
+                DispatchProfile p;
+                for (const auto& d : pass->lastDispatches()) p.dispatches.emplace_back(d.stage, d.milliseconds);
+                p.edgeShare = pass->lastEdgeShare();
+                return p;
+            }};
 #else
     (void)settings;
     (void)exec;

@@ -35,11 +35,20 @@ void takeSamplingParam(std::vector<std::string>& params, BackendOptions& o);
 //! ("cpu", or "vulkan: DEVICE, sampling=MODE"). Safe to call from several threads (the GPU
 //! runs one image at a time). Throws ssfx::Error: no Vulkan device (naming what was looked
 //! for), a setting the GPU passes lack, a build without the GPU backend.
+//! The last GPU apply()'s dispatches (stage, milliseconds) and the share of pixels its
+//! classify dispatch listed (-1: no list); see gpu::AaPass::lastDispatches().
+struct DispatchProfile {
+    std::vector<std::pair<std::string, double>> dispatches;
+    double edgeShare = -1;
+};
+
 struct Applier {
     std::function<ImageRgba8(ImageView<const Rgba8>)> apply;
     //! GPU milliseconds of the last apply() (timestamps), or a negative value on the cpu backend.
     std::function<double()> lastGpuMs;
     std::string name, device;
+    //! vulkan: the last apply()'s profile; cpu: an empty one.
+    std::function<DispatchProfile()> lastProfile = [] { return DispatchProfile{}; };
 };
 Applier makeApplier(const BackendOptions& o, const MethodInfo& m, const MethodSettings& settings, const Exec& exec);
 

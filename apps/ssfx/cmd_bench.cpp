@@ -29,17 +29,42 @@ struct BenchOptions {
     BackendOptions backend;
 };
 
+// A method's GPU profile over the timed rounds: each dispatch's median time, in dispatch
+// order, and the median share of pixels its classify dispatch listed (-1: no list).
+struct MethodProfile {
+    std::vector<std::pair<std::string, double>> stages;
+    double edgeShare = -1;
+};
+
+MethodProfile profileOf(const std::vector<DispatchProfile>& rounds) {
+    MethodProfile m;
+    if (rounds.empty()) return m;
+    for (std::size_t k = 0; k < rounds.front().dispatches.size(); ++k) {
+        std::vector<double> ms;
+        for (const auto& r : rounds)
+            if (k < r.dispatches.size()) ms.push_back(r.dispatches[k].second);
+        m.stages.emplace_back(rounds.front().dispatches[k].first, eval::median(ms));
+    }
+    std::vector<double> shares;
+    for (const auto& r : rounds) shares.push_back(r.edgeShare);
+    m.edgeShare = eval::median(shares);
+    return m;
+}
+
 // The GPU protocol: the same interleaved rounds, each repetition one submit of one method,
-// its time from the GPU timestamps around the pass's dispatches.
+// its time from the GPU timestamps around the pass's dispatches; each repetition's
+// per-dispatch times and listed share go to `profiles` (one per method, in ids' order).
 std::vector<eval::TimingResult> timeOnBackend(std::vector<std::string>& ids,
                                               const std::function<ImageRgba8(int)>& input, const BenchOptions& o,
                                               const Exec& exec, std::string* device,
-                                              const std::function<void(int, int)>& rounds) {
+                                              const std::function<void(int, int)>& rounds,
+                                              std::vector<MethodProfile>* profiles) {
     if (std::find(ids.begin(), ids.end(), "blur") == ids.end()) ids.insert(ids.begin(), "blur");
     std::vector<ImageRgba8> inputs(5);
     std::vector<eval::TimedMethod> timed;
     std::vector<Applier> appliers;
     appliers.reserve(ids.size());
+    std::vector<std::vector<DispatchProfile>> perRound(ids.size());
     for (const auto& id : ids) {
         const MethodInfo& m = methodById(id);
         if (inputs[std::size_t(m.inputScale)].width() == 0) inputs[std::size_t(m.inputScale)] = input(m.inputScale);
@@ -47,9 +72,44 @@ std::vector<eval::TimingResult> timeOnBackend(std::vector<std::string>& ids,
         *device = appliers.back().device;
         const Applier* a = &appliers.back();
         const ImageRgba8* in = &inputs[std::size_t(m.inputScale)];
-        timed.push_back({id, [a, in] { (void)a->apply(in->view()); }, [a] { return a->lastGpuMs(); }});
+        auto* mine = &perRound[appliers.size() - 1];
+        timed.push_back({id, [a, in] { (void)a->apply(in->view()); },
+                         [a, mine] {
+                             mine->push_back(a->lastProfile());  // (called for the timed rounds only)
+                             return a->lastGpuMs();
+                         }});
     }
-    return eval::timeInterleaved(timed, o.reps, o.warmup, "blur", rounds);
+    auto results = eval::timeInterleaved(timed, o.reps, o.warmup, "blur", rounds);
+    for (const auto& r : perRound) profiles->push_back(profileOf(r));
+    return results;
+}
+
+// The per-dispatch table: a column per stage (in the passes' order), "-" where a method has
+// no such dispatch; the share of pixels listed as edge pixels last.
+std::string profileTable(const std::vector<eval::TimingResult>& results, const std::vector<MethodProfile>& profiles) {
+    static constexpr const char* kOrder[] = {"luma", "classify", "edges", "method", "one pass", "resolve"};
+    std::vector<std::string> columns;
+    for (const char* stage : kOrder)
+        for (const auto& p : profiles)
+            if (std::any_of(p.stages.begin(), p.stages.end(), [&](const auto& s) { return s.first == stage; })) {
+                columns.emplace_back(stage);
+                break;
+            }
+    std::string t = "\nper dispatch (median ms of the timed rounds; edge share: pixels the classify dispatch listed)\n";
+    t += fmt::format("{:<8}", "method");
+    for (const auto& c : columns) t += fmt::format(" {:>9}", c);
+    t += fmt::format(" {:>11}\n", "edge share");
+    for (std::size_t i = 0; i < results.size() && i < profiles.size(); ++i) {
+        t += fmt::format("{:<8}", results[i].id);
+        for (const auto& c : columns) {
+            const auto& st = profiles[i].stages;
+            const auto it = std::find_if(st.begin(), st.end(), [&](const auto& s) { return s.first == c; });
+            t += it == st.end() ? fmt::format(" {:>9}", "-") : fmt::format(" {:>9.3f}", it->second);
+        }
+        t += profiles[i].edgeShare < 0 ? fmt::format(" {:>11}\n", "-")
+                                       : fmt::format(" {:>10.1f}%\n", 100.0 * profiles[i].edgeShare);
+    }
+    return t;
 }
 
 void run(BenchOptions o) {
@@ -75,7 +135,8 @@ void run(BenchOptions o) {
     const auto scaled = [&](int scale) { return scale == 1 ? first : input(scale); };
     const auto rounds = [&](int r, int n) { line.report({"interleaved rounds", r, n, "rounds"}); };
     std::string device;
-    const auto results = gpu ? timeOnBackend(ids, scaled, o, exec, &device, rounds)
+    std::vector<MethodProfile> profiles;
+    const auto results = gpu ? timeOnBackend(ids, scaled, o, exec, &device, rounds, &profiles)
                              : eval::timeMethodsOn(ids, scaled, o.reps, o.warmup, exec, rounds);
     line.end();
     const eval::MachineInfo mi = eval::machineInfo(resolvedThreads(exec));
@@ -91,6 +152,7 @@ void run(BenchOptions o) {
     table += fmt::format("{:<8} {:>10} {:>12} {:>14}\n", "method", "median ms", "trimmed ms", "% of blur");
     for (const auto& r : results)
         table += fmt::format("{:<8} {:>10.3f} {:>12.3f} {:>14.0f}\n", r.id, r.medianMs, r.trimmedMeanMs, r.relative);
+    if (gpu) table += profileTable(results, profiles);
     if (o.json != "-") printResult(table);
 
     if (!o.json.empty()) {
@@ -107,9 +169,17 @@ void run(BenchOptions o) {
                          {"warmup", o.warmup},
                          {"baseline", "blur"},
                          {"relative", "trimmed mean (middle half) / blur's trimmed mean * 100"}};
-        for (const auto& r : results)
+        for (std::size_t i = 0; i < results.size(); ++i) {
+            const auto& r = results[i];
             j["methods"][r.id] = {
                 {"median_ms", r.medianMs}, {"trimmed_mean_ms", r.trimmedMeanMs}, {"relative", r.relative}};
+            if (gpu && i < profiles.size()) {
+                auto& d = j["methods"][r.id]["dispatches"] = nlohmann::json::array();
+                for (const auto& [stage, ms] : profiles[i].stages) d.push_back({{"stage", stage}, {"median_ms", ms}});
+                j["methods"][r.id]["edge_share"] =
+                    profiles[i].edgeShare < 0 ? nlohmann::json() : nlohmann::json(profiles[i].edgeShare);
+            }
+        }
         const std::string text = j.dump(2) + "\n";
         writeOutput(o.json, text);
     }
@@ -135,7 +205,11 @@ void addBenchCommand(CLI::App& app) {
     addBackendOptions(cmd, opts->backend);
     cmd->footer(
         "CPU: wall-clock time of each method call. --backend vulkan: GPU timestamps around each pass's\n"
-        "dispatches, one submit per method per round (upload and download are not timed).");
+        "dispatches, one submit per method per round (upload and download are not timed), and a second\n"
+        "table (and JSON 'dispatches', 'edge_share') with each dispatch's median time: luma, classify and\n"
+        "edges for the edge-test methods, resolve for ddaa2p's second step, method for a single dispatch;\n"
+        "edge share is the share of pixels the classify dispatch listed. scripts/bench_gpu.sh runs it on a\n"
+        "drawing, a photograph and a rendered scene.");
     cmd->callback([opts] { run(*opts); });
 }
 

@@ -253,6 +253,15 @@ struct AaPass::Impl {
     vk::raii::ImageView scratchView{nullptr};
     std::unique_ptr<vkx::GpuTimer> timer;
     double lastMs = 0;
+    // run()'s profile: while `profiling`, each dispatch is bracketed by timer interval
+    // 1 + its index and its stage named; the list's pixel count is copied for the host.
+    static constexpr std::uint32_t kMaxDispatches = 6;
+    bool profiling = false;
+    std::vector<std::string> stages;
+    std::vector<AaPass::DispatchTime> lastDispatches;
+    vk::DeviceSize listedOf = 0;  // pixels the recorded list covers (0: no list)
+    vkx::Buffer countReadback;    // the list header's pixel count, for the host
+    double lastEdgeShare = -1;
 
     // What a dispatch's invocations cover: the output's pixels, the luma plane's texels (the
     // luma and classify dispatches), or the edge list (indirect).
@@ -263,7 +272,12 @@ struct AaPass::Impl {
     // (or its stand-in) at SSFX_AA_BINDING_LUMA: the edge methods' shaders declare both.
     void dispatch(const vkx::ComputePipeline& p, const vk::raii::CommandBuffer& cmd, vk::ImageView in,
                   vk::ImageLayout inLayout, vk::ImageView out, const AaConstants& c, vk::Buffer list = {},
-                  Grid grid = Grid::Pixels) const {
+                  Grid grid = Grid::Pixels, const char* stage = "method") {
+        const bool timed = profiling && stages.size() < kMaxDispatches;
+        if (timed) {
+            stages.emplace_back(stage);
+            timer->begin(cmd, std::uint32_t(stages.size()), vk::PipelineStageFlagBits::eComputeShader);
+        }
         const vk::DescriptorImageInfo inInfo(*sampler, in, inLayout);
         const vk::DescriptorImageInfo outInfo(nullptr, out, vk::ImageLayout::eGeneral);
         const vk::DescriptorBufferInfo tableInfo(*tables.buffer, 0, VK_WHOLE_SIZE);
@@ -283,6 +297,7 @@ struct AaPass::Impl {
             p.dispatchPushed(cmd, used, &c,
                              groups(grid == Grid::LumaTexels ? lumaPlaneWidth(c.width) : std::uint32_t(c.outWidth)),
                              groups(std::uint32_t(c.outHeight)));
+        if (timed) timer->end(cmd, std::uint32_t(stages.size()), vk::PipelineStageFlagBits::eComputeShader);
     }
 
     // Records the method's own shader (not ddaa2p's resolve) from `in` to `out`: for an
@@ -301,7 +316,7 @@ struct AaPass::Impl {
             if (!*luma.image) ensureLuma(1, 1);
             cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eComputeShader,
                                 {}, {}, {}, lumaDiscarded());
-            dispatch(*onePass, cmd, in, inLayout, out, c, *tables.buffer);
+            dispatch(*onePass, cmd, in, inLayout, out, c, *tables.buffer, Grid::Pixels, "one pass");
             return;
         }
         ensureEdges(pixels);
@@ -319,15 +334,16 @@ struct AaPass::Impl {
                                               VK_WHOLE_SIZE);
         // The luma plane is written whole by the luma pass: its old contents are dropped.
         cmd.pipelineBarrier(S::eTransfer | S::eComputeShader, S::eComputeShader, {}, {}, cleared, lumaDiscarded());
-        dispatch(*lumaPass, cmd, in, inLayout, out, c, *edges.buffer, Grid::LumaTexels);
+        dispatch(*lumaPass, cmd, in, inLayout, out, c, *edges.buffer, Grid::LumaTexels, "luma");
         // The luma plane, before the classify pass reads it.
         const vk::MemoryBarrier lumaWritten(A::eShaderWrite, A::eShaderRead | A::eShaderWrite);
         cmd.pipelineBarrier(S::eComputeShader, S::eComputeShader, {}, lumaWritten, {}, {});
-        dispatch(*pipeline, cmd, in, inLayout, out, c, *edges.buffer, Grid::LumaTexels);
+        dispatch(*pipeline, cmd, in, inLayout, out, c, *edges.buffer, Grid::LumaTexels, "classify");
         // The list and the unchanged pixels, before the indirect dispatch and the edge pixels.
         const vk::MemoryBarrier listed(A::eShaderWrite, A::eIndirectCommandRead | A::eShaderRead | A::eShaderWrite);
         cmd.pipelineBarrier(S::eComputeShader, S::eDrawIndirect | S::eComputeShader, {}, listed, {}, {});
-        dispatch(edgePipeline(c.width, c.height), cmd, in, inLayout, out, c, *edges.buffer, Grid::EdgeList);
+        dispatch(edgePipeline(c.width, c.height), cmd, in, inLayout, out, c, *edges.buffer, Grid::EdgeList, "edges");
+        listedOf = pixels;
     }
 
     const vkx::ComputePipeline& edgePipeline(int w, int h) {
@@ -364,7 +380,7 @@ struct AaPass::Impl {
         if (*edges.buffer && edgeCapacity >= pixels) return;
         edges = ctx->createBuffer(16 + 4 * pixels,
                                   vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eIndirectBuffer |
-                                      vk::BufferUsageFlagBits::eTransferDst,
+                                      vk::BufferUsageFlagBits::eTransferDst | vk::BufferUsageFlagBits::eTransferSrc,
                                   false);
         edgeCapacity = pixels;
     }
@@ -486,7 +502,8 @@ AaPass::AaPass(std::shared_ptr<vkx::Context> ctx, std::string_view method, const
         }
         if (m.method->id == "ddaa2p")
             m.resolve = makePipeline(c, kSsaax2, detail::aaSpecialization("ssaax2", aa::Ssaax2Params{}, sampling));
-        m.timer = std::make_unique<vkx::GpuTimer>(c, 1);
+        m.timer = std::make_unique<vkx::GpuTimer>(c, 1 + Impl::kMaxDispatches);
+        m.countReadback = c.createBuffer(16, vk::BufferUsageFlagBits::eTransferDst, true);
     });
 }
 
@@ -495,6 +512,8 @@ AaPass::~AaPass() = default;
 const MethodInfo& AaPass::method() const { return *impl_->method; }
 Sampling AaPass::sampling() const { return impl_->sampling; }
 double AaPass::lastMilliseconds() const { return impl_->lastMs; }
+const std::vector<AaPass::DispatchTime>& AaPass::lastDispatches() const { return impl_->lastDispatches; }
+double AaPass::lastEdgeShare() const { return impl_->lastEdgeShare; }
 
 void AaPass::record(const vk::raii::CommandBuffer& cmd, const ImageRef& input, const ImageRef& output) {
     Impl& m = *impl_;
@@ -545,7 +564,8 @@ void AaPass::record(const vk::raii::CommandBuffer& cmd, const ImageRef& input, c
             cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eComputeShader,
                                 {}, {}, {}, written);
             m.dispatch(*m.resolve, cmd, *m.scratchView, vk::ImageLayout::eGeneral, output.view,
-                       detail::aaConstants("ssaax2", aa::Ssaax2Params{}, w, h, w / 2, h / 2));
+                       detail::aaConstants("ssaax2", aa::Ssaax2Params{}, w, h, w / 2, h / 2), {}, Impl::Grid::Pixels,
+                       "resolve");
             return;
         }
         m.dispatchMethod(cmd, input.view, input.layout, output.view,
@@ -586,9 +606,22 @@ ImageRgba8 AaPass::run(ImageView<const Rgba8> input) {
                             A::eShaderWrite);
             m.timer->reset(cmd);
             m.timer->begin(cmd, 0, S::eComputeShader);
+            m.profiling = true;
+            m.stages.clear();
+            m.listedOf = 0;
+            struct NotProfiling {  // record() may throw: later recordings are not profiled
+                Impl& m;
+                ~NotProfiling() { m.profiling = false; }
+            } notProfiling{m};
             record(cmd, ImageRef{*r.inView, kOutputFormat, Impl::RunImages::kInUsage, w, h, L::eShaderReadOnlyOptimal},
                    ImageRef{*r.resView, kOutputFormat, Impl::RunImages::kResUsage, ow, oh, L::eGeneral});
             m.timer->end(cmd, 0, S::eComputeShader);
+            if (m.listedOf > 0) {  // the list's pixel count (header word 3), for lastEdgeShare()
+                const vk::BufferMemoryBarrier listed(A::eShaderWrite, A::eTransferRead, VK_QUEUE_FAMILY_IGNORED,
+                                                     VK_QUEUE_FAMILY_IGNORED, *m.edges.buffer, 0, 16);
+                cmd.pipelineBarrier(S::eComputeShader, S::eTransfer, {}, {}, listed, {});
+                cmd.copyBuffer(*m.edges.buffer, *m.countReadback.buffer, vk::BufferCopy(0, 0, 16));
+            }
             vkx::transition(cmd, r.res, L::eGeneral, L::eTransferSrcOptimal, S::eComputeShader, A::eShaderWrite,
                             S::eTransfer, A::eTransferRead);
             const vk::BufferImageCopy outCopy(0, 0, 0, {vk::ImageAspectFlagBits::eColor, 0, 0, 1}, {0, 0, 0},
@@ -597,8 +630,17 @@ ImageRgba8 AaPass::run(ImageView<const Rgba8> input) {
             const vk::MemoryBarrier toHost(A::eTransferWrite, A::eHostRead);
             cmd.pipelineBarrier(S::eTransfer, S::eHost, {}, toHost, {}, {});
         });
-        const auto ms = m.timer->milliseconds();
+        const auto ms = m.timer->milliseconds(1 + std::uint32_t(m.stages.size()));
         m.lastMs = ms.empty() ? 0.0 : ms[0];
+        m.lastDispatches.clear();
+        for (std::size_t k = 0; k < m.stages.size(); ++k)
+            m.lastDispatches.push_back({m.stages[k], k + 1 < ms.size() ? ms[k + 1] : 0.0});
+        m.lastEdgeShare = -1;
+        if (m.listedOf > 0) {
+            std::uint32_t header[4];
+            std::memcpy(header, m.countReadback.mapped, sizeof header);
+            m.lastEdgeShare = double(header[3]) / double(m.listedOf);
+        }
         for (std::uint32_t y = 0; y < oh; ++y)
             std::memcpy(out.view().row(int(y)),
                         static_cast<const std::uint8_t*>(r.download.mapped) + std::size_t(y) * ow * 4,

@@ -316,6 +316,15 @@ if "$SSFX" --help 2>/dev/null | grep -qE '^ +render '; then
     contains bench_vulkan "$OUT/bench_vk.json" '"backend": "vulkan"'
     contains bench_vulkan "$OUT/bench_vk.json" '"device"'
     contains bench_vulkan "$OUT/bench_vk.json" '"ddaa2"'
+    # The per-dispatch profile (issue #34): ddaa2's three dispatches and its listed share, blur's one.
+    python3 - "$OUT/bench_vk.json" <<'PY' || { echo "FAIL bench_vulkan: no per-dispatch profile in the JSON"; fail=1; }
+import json, sys
+m = json.load(open(sys.argv[1]))["methods"]
+assert [d["stage"] for d in m["ddaa2"]["dispatches"]] == ["luma", "classify", "edges"], m["ddaa2"]
+assert 0 <= m["ddaa2"]["edge_share"] <= 1 and m["blur"]["edge_share"] is None, m
+assert all(d["median_ms"] >= 0 for d in m["ddaa2"]["dispatches"] + m["blur"]["dispatches"])
+PY
+    contains bench_vulkan "$OUT/bench_vulkan.out" "per dispatch"
     check methods_vulkan 0 "$SSFX" methods
     contains methods_vulkan "$OUT/methods_vulkan.out" "cpu,vulkan"
   fi

@@ -380,5 +380,48 @@ TEST(GpuAa, BadInputGivesClearErrors) {
     expectNoValidationMessages();
 }
 
+// The profile of run() (issue #34 item 1, ssfx bench --backend vulkan): each dispatch named
+// in order, and the share of pixels the classify dispatch listed, which on a black/white
+// split at column 16 of a 32-wide image is the two columns beside it (2/32) for every edge
+// test (contrast 1 is above every threshold), none on a flat image, and no list for blur.
+TEST(GpuAa, RunReportsItsDispatchesAndTheListedShare) {
+    REQUIRE_DEVICE();
+    ImageRgba8 split(32, 8), flat(32, 8);
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 32; ++x) {
+            const std::uint8_t v = x < 16 ? 0 : 255;
+            split(x, y) = {v, v, v, 255};
+            flat(x, y) = {90, 90, 90, 255};
+        }
+    for (const char* id : {"fxaa3c", "fxaa3d", "ddaa1", "ddaa2"}) {
+        gpu::AaPass pass(context(), id);
+        (void)pass.run(split.view());
+        std::vector<std::string> stages;
+        for (const auto& d : pass.lastDispatches()) {
+            stages.push_back(d.stage);
+            EXPECT_GE(d.milliseconds, 0.0) << id;
+        }
+        EXPECT_EQ(stages, (std::vector<std::string>{"luma", "classify", "edges"})) << id;
+        EXPECT_DOUBLE_EQ(pass.lastEdgeShare(), 2.0 / 32.0) << id;
+        (void)pass.run(flat.view());
+        EXPECT_DOUBLE_EQ(pass.lastEdgeShare(), 0.0) << id;
+    }
+    gpu::AaPass blur(context(), "blur");
+    (void)blur.run(split.view());
+    ASSERT_EQ(blur.lastDispatches().size(), 1u);
+    EXPECT_EQ(blur.lastDispatches()[0].stage, "method");
+    EXPECT_EQ(blur.lastEdgeShare(), -1.0);
+    ImageRgba8 split2(64, 16);
+    for (int y = 0; y < 16; ++y)
+        for (int x = 0; x < 64; ++x) split2(x, y) = x < 32 ? Rgba8{0, 0, 0, 255} : Rgba8{255, 255, 255, 255};
+    gpu::AaPass ddaa2p(context(), "ddaa2p");
+    (void)ddaa2p.run(split2.view());
+    std::vector<std::string> stages;
+    for (const auto& d : ddaa2p.lastDispatches()) stages.push_back(d.stage);
+    EXPECT_EQ(stages, (std::vector<std::string>{"luma", "classify", "edges", "resolve"}));
+    EXPECT_DOUBLE_EQ(ddaa2p.lastEdgeShare(), 2.0 / 64.0);  // of the 2x image
+    expectNoValidationMessages();
+}
+
 }  // namespace
 }  // namespace ssfx

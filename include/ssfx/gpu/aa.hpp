@@ -32,6 +32,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "ssfx/core/image.hpp"
 #include "ssfx/registry.hpp"
@@ -83,6 +84,20 @@ public:
     //! GPU time of the last run() in milliseconds (timestamps around the dispatches), or
     //! 0 when the queue has no timestamps.
     double lastMilliseconds() const;
+
+    //! One dispatch of the last run(): its stage and its GPU time (timestamps around it).
+    struct DispatchTime {
+        std::string stage;  //!< luma, classify, edges (the edge-test methods), resolve (ddaa2p's second
+                            //!< step), method (a single dispatch), one pass (an image too large for the list)
+        double milliseconds = 0;
+    };
+    //! The last run()'s dispatches in order, for profiles (ssfx bench --backend vulkan). The
+    //! barriers between them are in no dispatch's time, so the sum can differ from
+    //! lastMilliseconds(). record() into a caller's command buffer writes no timestamps.
+    const std::vector<DispatchTime>& lastDispatches() const;
+    //! The share of pixels (0..1) that the last run()'s classify dispatch listed as edge
+    //! pixels (of the 2x image for ddaa2p), or -1 when it made no list (no edge test, or one pass).
+    double lastEdgeShare() const;
 
 private:
     struct Impl;

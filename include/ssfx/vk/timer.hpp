@@ -19,9 +19,10 @@ public:
                vk::PipelineStageFlagBits stage = vk::PipelineStageFlagBits::eTopOfPipe) const;
     void end(const vk::raii::CommandBuffer& cmd, std::uint32_t interval = 0,
              vk::PipelineStageFlagBits stage = vk::PipelineStageFlagBits::eBottomOfPipe) const;
-    //! Milliseconds of each interval after the submission completed; all 0 when the queue
-    //! has no timestamps.
-    std::vector<double> milliseconds() const;
+    //! Milliseconds of the first `used` intervals (0: all) after the submission completed;
+    //! all 0 when the queue has no timestamps. Waits for their queries: every interval read
+    //! must have been begun and ended in the submission.
+    std::vector<double> milliseconds(std::uint32_t used = 0) const;
     bool available() const { return periodNs_ > 0; }
 
 private:
