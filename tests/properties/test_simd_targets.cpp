@@ -114,7 +114,9 @@ TEST(SimdTargets, ScatteredEdgePixelsEqualTheReference) {
                     }
                 const ImageRgba8 expected = m.reference(in.view(), {}, {});
                 ASSERT_EQ(m.run(in.view(), {}, {}), expected) << hwy::TargetName(target) << " " << id << " width " << w;
-                if (w == 50) EXPECT_NE(expected, in) << id;  // the dots are processed, not all copied
+                if (w == 50) {
+                    EXPECT_NE(expected, in) << id;  // the dots are processed, not all copied
+                }
             }
         }
     }
