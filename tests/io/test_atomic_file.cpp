@@ -258,7 +258,8 @@ TEST(AtomicFile, DescriptorNamesAreWrittenIntoNotReplaced) {
     { std::ofstream(log) << "earlier\n"; }
     const int fd = ::open(log.c_str(), O_WRONLY | O_APPEND);
     ASSERT_GE(fd, 0);
-    for (const std::string name : {fmt::format("/proc/self/fd/{}", fd), fmt::format("/dev/fd/{}", fd)}) {
+    const std::string names[] = {fmt::format("/proc/self/fd/{}", fd), fmt::format("/dev/fd/{}", fd)};
+    for (const std::string& name : names) {
         io::AtomicFile f(name);
         EXPECT_TRUE(f.direct()) << name;
         f.write({reinterpret_cast<const std::uint8_t*>("new\n"), 4});
