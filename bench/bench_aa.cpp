@@ -3,9 +3,9 @@
 // `blur` as baselines in the same binary. Unit: Mpix/s of output.
 #include <benchmark/benchmark.h>
 
+#include "ssfx/aa/registry.hpp"
 #include "ssfx/core/memory.hpp"
 #include "ssfx/eval/synthetic.hpp"
-#include "ssfx/registry.hpp"
 
 namespace {
 

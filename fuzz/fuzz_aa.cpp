@@ -4,9 +4,9 @@
 #include <cstdint>
 #include <cstring>
 
+#include "ssfx/aa/registry.hpp"
 #include "ssfx/core/error.hpp"
 #include "ssfx/io/png.hpp"
-#include "ssfx/registry.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     if (size < 6) return 0;

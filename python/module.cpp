@@ -19,6 +19,7 @@
 #include <string>
 
 #include "ssfx/aa/presets.hpp"
+#include "ssfx/aa/registry.hpp"
 #include "ssfx/aa/resolve.hpp"
 #include "ssfx/ao/registry.hpp"
 #include "ssfx/eval/metrics.hpp"
@@ -26,7 +27,6 @@
 #include "ssfx/io/camera.hpp"
 #include "ssfx/io/exr.hpp"
 #include "ssfx/io/png.hpp"
-#include "ssfx/registry.hpp"
 
 namespace py = pybind11;
 using namespace ssfx;

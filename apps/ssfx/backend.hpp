@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
+#include "ssfx/aa/registry.hpp"
 #include "ssfx/core/image.hpp"
 #include "ssfx/core/parallel.hpp"
-#include "ssfx/registry.hpp"
 
 namespace ssfx::cli {
 

@@ -14,10 +14,10 @@
 #include "apps/ssfx/commands.hpp"
 #include "apps/ssfx/console.hpp"
 #include "ssfx/aa/presets.hpp"
+#include "ssfx/aa/registry.hpp"
 #include "ssfx/core/parallel.hpp"
 #include "ssfx/io/png.hpp"
 #include "ssfx/io/sequence.hpp"
-#include "ssfx/registry.hpp"
 
 namespace ssfx::cli {
 

@@ -9,13 +9,13 @@
 #include "apps/ssfx/backend.hpp"
 #include "apps/ssfx/commands.hpp"
 #include "apps/ssfx/console.hpp"
+#include "ssfx/aa/registry.hpp"
 #include "ssfx/aa/resolve.hpp"
 #include "ssfx/eval/machine.hpp"
 #include "ssfx/eval/speed.hpp"
 #include "ssfx/eval/synthetic.hpp"
 #include "ssfx/eval/timing.hpp"
 #include "ssfx/io/png.hpp"
-#include "ssfx/registry.hpp"
 
 namespace ssfx::cli {
 

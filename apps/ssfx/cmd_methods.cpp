@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "apps/ssfx/commands.hpp"
+#include "ssfx/aa/registry.hpp"
 #include "ssfx/ao/registry.hpp"
 #include "ssfx/core/error.hpp"
-#include "ssfx/registry.hpp"
 #ifdef SSFX_HAVE_RENDER
 #include "ssfx/deferred/registry.hpp"
 #endif

@@ -14,6 +14,7 @@
 #include <optional>
 
 #include "src/eval/report_html.hpp"
+#include "ssfx/aa/registry.hpp"
 #include "ssfx/aa/resolve.hpp"
 #include "ssfx/eval/ao_experiments.hpp"
 #include "ssfx/eval/kernels.hpp"
@@ -25,7 +26,6 @@
 #include "ssfx/eval/temporal.hpp"
 #include "ssfx/eval/test_images.hpp"
 #include "ssfx/io/png.hpp"
-#include "ssfx/registry.hpp"
 
 namespace ssfx::eval {
 

@@ -7,9 +7,9 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "ssfx/aa/registry.hpp"
 #include "ssfx/eval/quality.hpp"
 #include "ssfx/io/png.hpp"
-#include "ssfx/registry.hpp"
 
 namespace ssfx::eval {
 

@@ -1,8 +1,8 @@
 // The opt-in colour-aware contrast (chromaWeight, spec ppaa.md section 4).
 #include <gtest/gtest.h>
 
+#include "ssfx/aa/registry.hpp"
 #include "ssfx/core/color.hpp"
-#include "ssfx/registry.hpp"
 #include "tests/support/test_support.hpp"
 
 using namespace ssfx;

@@ -5,7 +5,7 @@
 #include "ssfx/aa/blur.hpp"
 #include "ssfx/aa/ddaa.hpp"
 #include "ssfx/aa/fxaa.hpp"
-#include "ssfx/registry.hpp"
+#include "ssfx/aa/registry.hpp"
 
 using namespace ssfx;
 

@@ -5,9 +5,9 @@
 
 #include <cmath>
 
+#include "ssfx/aa/registry.hpp"
 #include "ssfx/core/color.hpp"
 #include "ssfx/core/sample.hpp"
-#include "ssfx/registry.hpp"
 #include "tests/support/test_support.hpp"
 
 using namespace ssfx;

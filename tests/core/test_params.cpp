@@ -5,11 +5,11 @@
 #include "ssfx/aa/blur.hpp"
 #include "ssfx/aa/ddaa.hpp"
 #include "ssfx/aa/fxaa.hpp"
+#include "ssfx/aa/registry.hpp"
 #include "ssfx/aa/resolve.hpp"
 #include "ssfx/ao/alchemy.hpp"
 #include "ssfx/ao/raytraced.hpp"
 #include "ssfx/ao/sao.hpp"
-#include "ssfx/registry.hpp"
 #include "tests/support/param_tables.hpp"
 #include "tests/support/test_support.hpp"
 

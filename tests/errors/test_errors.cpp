@@ -8,9 +8,9 @@
 #include "ssfx/aa/blur.hpp"
 #include "ssfx/aa/ddaa.hpp"
 #include "ssfx/aa/fxaa.hpp"
+#include "ssfx/aa/registry.hpp"
 #include "ssfx/aa/resolve.hpp"
 #include "ssfx/io/png.hpp"
-#include "ssfx/registry.hpp"
 #include "tests/support/test_support.hpp"
 
 using namespace ssfx;

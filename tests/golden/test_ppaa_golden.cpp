@@ -9,8 +9,8 @@
 
 #include <fmt/format.h>
 
+#include "ssfx/aa/registry.hpp"
 #include "ssfx/io/png.hpp"
-#include "ssfx/registry.hpp"
 #include "tests/support/test_support.hpp"
 
 using namespace ssfx;

@@ -15,10 +15,10 @@
 #include <cstring>
 #include <initializer_list>
 
+#include "ssfx/aa/registry.hpp"
 #include "ssfx/core/error.hpp"
 #include "ssfx/gpu/aa.hpp"
 #include "ssfx/io/png.hpp"
-#include "ssfx/registry.hpp"
 #include "ssfx/vk/resources.hpp"
 #include "tests/support/test_support.hpp"
 

@@ -1,6 +1,6 @@
 // A user of the installed library: anti-alias a small drawing with ddaa2.
 #include <ssfx/aa/ddaa.hpp>
-#include <ssfx/registry.hpp>
+#include <ssfx/aa/registry.hpp>
 
 #include <cstdio>
 

@@ -1,9 +1,9 @@
 // A user of the installed GPU backend: ddaa2 as a Vulkan compute pass on a small image,
 // compared with the CPU's bytes. Without a Vulkan device it says so and passes (linking
 // and the installed headers are what this checks then).
+#include <ssfx/aa/registry.hpp>
 #include <ssfx/core/error.hpp>
 #include <ssfx/gpu/aa.hpp>
-#include <ssfx/registry.hpp>
 
 #include <cstdio>
 

@@ -2,8 +2,8 @@
 // covered automatically through the registry.
 #include <gtest/gtest.h>
 
+#include "ssfx/aa/registry.hpp"
 #include "ssfx/eval/synthetic.hpp"
-#include "ssfx/registry.hpp"
 #include "tests/support/test_support.hpp"
 
 using namespace ssfx;

@@ -7,8 +7,8 @@
 #include "src/aa/ppaa_hooks.hpp"
 #include "ssfx/aa/ddaa.hpp"
 #include "ssfx/aa/fxaa.hpp"
+#include "ssfx/aa/registry.hpp"
 #include "ssfx/eval/synthetic.hpp"
-#include "ssfx/registry.hpp"
 #include "tests/support/test_support.hpp"
 
 using namespace ssfx;

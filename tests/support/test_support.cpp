@@ -3,7 +3,7 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "ssfx/registry.hpp"
+#include "ssfx/aa/registry.hpp"
 
 namespace ssfx {
 void PrintTo(const MethodInfo* m, std::ostream* os) { *os << (m ? m->id : "null"); }

@@ -23,10 +23,10 @@
 #include <string>
 #include <vector>
 
+#include "ssfx/aa/registry.hpp"
 #include "ssfx/core/image.hpp"
 #include "ssfx/core/parallel.hpp"
 #include "ssfx/core/progress.hpp"
-#include "ssfx/registry.hpp"
 
 namespace ssfx::eval {
 

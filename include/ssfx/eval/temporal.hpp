@@ -22,11 +22,11 @@
 #include <utility>
 #include <vector>
 
+#include "ssfx/aa/registry.hpp"
 #include "ssfx/core/image.hpp"
 #include "ssfx/core/parallel.hpp"
 #include "ssfx/core/progress.hpp"
 #include "ssfx/eval/quality.hpp"
-#include "ssfx/registry.hpp"
 
 namespace ssfx::eval {
 

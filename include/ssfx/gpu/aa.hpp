@@ -34,8 +34,8 @@
 #include <string_view>
 #include <vector>
 
+#include "ssfx/aa/registry.hpp"
 #include "ssfx/core/image.hpp"
-#include "ssfx/registry.hpp"
 #include "ssfx/vk/context.hpp"
 
 namespace ssfx::gpu {

@@ -1,7 +1,7 @@
 // The one explicit table of methods (STYLE.md section 2). Adding a method: header, source,
 // registry line here, doc note in docs/methods/<id>.md, unit test, golden, bench entry; the
 // property tests and the CLI pick it up from this table.
-#include "ssfx/registry.hpp"
+#include "ssfx/aa/registry.hpp"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-// The explicit method registry (STYLE.md section 2): one table in src/registry.cpp lists
+// The explicit method registry (STYLE.md section 2): one table in src/aa/registry.cpp lists
 // every method with its stable id, parameters and run functions. The CLI, benchmarks,
 // evaluation and property tests iterate methods(); --help text is generated from the parameter tables
 // (core/params.hpp).
