@@ -44,7 +44,8 @@ int reportError(std::string_view message) {
 void guardStdout() {
     if (::fcntl(STDOUT_FILENO, F_GETFD) != -1 || errno != EBADF) return;
     // /dev/full takes descriptor 1 and fails every write (ENOSPC), which finishStdout() reports.
-    const int fd = ::open("/dev/full", O_WRONLY | O_CLOEXEC);
+    // Not close-on-exec: open() returns 1 itself when 0 is open, and descriptor 1 is inherited.
+    const int fd = ::open("/dev/full", O_WRONLY);
     if (fd >= 0 && fd != STDOUT_FILENO) ::dup2(fd, STDOUT_FILENO), ::close(fd);
     gStdoutClosed = true;
 }
