@@ -16,7 +16,8 @@ namespace ssfx::cli {
 void addBackendOptions(CLI::App* cmd, BackendOptions& o) {
     cmd->add_option("--backend", o.backend,
                     "cpu (default) or vulkan: the methods as Vulkan compute passes (-p sampling=model, the default, "
-                    "gives the CPU's bytes; -p sampling=hardware uses the device's texture filtering)")
+                    "gives the CPU's bytes; -p sampling=hardware uses the device's texture filtering and arithmetic; "
+                    "-p edges=list|one-pass chooses the edge-test methods' path, default auto)")
         ->check(CLI::IsMember({"cpu", "vulkan"}));
     cmd->add_option("--device", o.device,
                     "With --backend vulkan: a device index or part of its name ('ssfx devices' lists them; default: "
@@ -36,6 +37,11 @@ void takeSamplingParam(std::vector<std::string>& params, BackendOptions& o) {
                 throw Error("-p sampling=... is a parameter of the vulkan backend (on the cpu: --filtering gpu|exact)");
             if (o.sampling != "model" && o.sampling != "hardware")
                 throw Error(fmt::format("sampling '{}': expected model or hardware", o.sampling));
+        } else if (p.rfind("edges=", 0) == 0) {
+            o.edges = p.substr(6);
+            if (o.backend != "vulkan") throw Error("-p edges=... is a parameter of the vulkan backend");
+            if (o.edges != "auto" && o.edges != "list" && o.edges != "one-pass")
+                throw Error(fmt::format("edges '{}': expected auto, list or one-pass", o.edges));
         } else {
             rest.push_back(p);
         }
@@ -61,7 +67,8 @@ Applier makeApplier(const BackendOptions& o, const MethodInfo& m, const MethodSe
                                 o.device.empty() ? "" : fmt::format(" matching '{}'", o.device), e.what()));
     }
     const gpu::Sampling sampling = o.sampling.empty() ? gpu::Sampling::Model : gpu::parseSampling(o.sampling);
-    auto pass = std::make_shared<gpu::AaPass>(ctx, m.id, settings, sampling);
+    const gpu::EdgePath edges = o.edges.empty() ? gpu::EdgePath::Auto : gpu::parseEdgePath(o.edges);
+    auto pass = std::make_shared<gpu::AaPass>(ctx, m.id, settings, sampling, edges);
     auto lock = std::make_shared<std::mutex>();
     const std::string device = ctx->info.name;
     return {[pass, lock](ImageView<const Rgba8> in) {
@@ -72,7 +79,9 @@ Applier makeApplier(const BackendOptions& o, const MethodInfo& m, const MethodSe
                 std::lock_guard guard(*lock);
                 return pass->lastMilliseconds();
             },
-            fmt::format("vulkan: {}, sampling={}", device, gpu::samplingName(sampling)), device,
+            fmt::format("vulkan: {}, sampling={}, edges={}", device, gpu::samplingName(sampling),
+                        gpu::edgePathName(pass->edgePath())),
+            device,
             [pass, lock] {
                 std::lock_guard guard(*lock);
                 DispatchProfile p;

@@ -116,7 +116,9 @@ void run(BenchOptions o) {
     const Exec exec{o.threads};
     checkBackendOptions(o.backend);
     takeSamplingParam(o.params, o.backend);
-    if (!o.params.empty()) throw Error(fmt::format("bench: -p takes sampling=model|hardware only ('{}')", o.params[0]));
+    if (!o.params.empty())
+        throw Error(fmt::format("bench: -p takes sampling=model|hardware and edges=auto|list|one-pass only ('{}')",
+                                o.params[0]));
     const bool gpu = o.backend.backend == "vulkan";
     // Inputs at scale 1, 2 and 4 (the resolves take the supersampled render).
     const std::string source = o.image.empty() ? "synthetic" : o.image;
@@ -144,8 +146,10 @@ void run(BenchOptions o) {
         fmt::format("image: {} ({}x{}); {} repetitions, methods interleaved, fastest and slowest quarter dropped\n",
                     source, first.width(), first.height(), o.reps);
     if (gpu)
-        table += fmt::format("backend: vulkan on {}, sampling={}; times from GPU timestamps around each pass\n\n",
-                             device, o.backend.sampling.empty() ? "model" : o.backend.sampling);
+        table +=
+            fmt::format("backend: vulkan on {}, sampling={}, edges={}; times from GPU timestamps around each pass\n\n",
+                        device, o.backend.sampling.empty() ? "model" : o.backend.sampling,
+                        o.backend.edges.empty() ? "auto" : o.backend.edges);
     else
         table += fmt::format("machine: {}, {} threads used of {}, SIMD target {}\n\n", mi.cpu, mi.threads,
                              mi.hardwareThreads, mi.simdTarget);
@@ -163,7 +167,10 @@ void run(BenchOptions o) {
                         {"simd_target", mi.simdTarget}};
         j["backend"] = o.backend.backend;
         j["device"] = gpu ? device : mi.cpu;
-        if (gpu) j["sampling"] = o.backend.sampling.empty() ? "model" : o.backend.sampling;
+        if (gpu) {
+            j["sampling"] = o.backend.sampling.empty() ? "model" : o.backend.sampling;
+            j["edges"] = o.backend.edges.empty() ? "auto" : o.backend.edges;
+        }
         j["image"] = {{"path", source}, {"width", first.width()}, {"height", first.height()}};
         j["protocol"] = {{"repetitions", o.reps},
                          {"warmup", o.warmup},
@@ -201,7 +208,10 @@ void addBenchCommand(CLI::App& app) {
     cmd->add_option("--threads", opts->threads, "Worker threads (0 = all)")->check(CLI::Range(0, 1024));
     cmd->add_option("--size", opts->width, "Width of the synthetic image (height = width * 9 / 16; default 1920)")
         ->check(CLI::Range(16, 16384));
-    cmd->add_option("-p,--param", opts->params, "With --backend vulkan: sampling=model (default) or sampling=hardware");
+    cmd->add_option(
+        "-p,--param", opts->params,
+        "With --backend vulkan: sampling=model (default) or sampling=hardware; edges=auto (default), list or "
+        "one-pass");
     addBackendOptions(cmd, opts->backend);
     cmd->footer(
         "CPU: wall-clock time of each method call. --backend vulkan: GPU timestamps around each pass's\n"

@@ -131,43 +131,70 @@ namespace {
 
 using detail::AaConstants;
 
+// Each method's shader twice: the model (exact arithmetic) and the hardware mode (the same
+// source with SSFX_DEVICE_ARITHMETIC: the device's arithmetic; ppaa.glsl).
 const std::uint32_t kNoaa[] = {
 #include "shaders/noaa.comp.inc"
+};
+const std::uint32_t kNoaaDevice[] = {
+#include "shaders/noaa.comp.device.inc"
 };
 const std::uint32_t kBlur[] = {
 #include "shaders/blur.comp.inc"
 };
+const std::uint32_t kBlurDevice[] = {
+#include "shaders/blur.comp.device.inc"
+};
 const std::uint32_t kFxaa3c[] = {
 #include "shaders/fxaa3c.comp.inc"
+};
+const std::uint32_t kFxaa3cDevice[] = {
+#include "shaders/fxaa3c.comp.device.inc"
 };
 const std::uint32_t kFxaa3d[] = {
 #include "shaders/fxaa3d.comp.inc"
 };
+const std::uint32_t kFxaa3dDevice[] = {
+#include "shaders/fxaa3d.comp.device.inc"
+};
 const std::uint32_t kDdaa1[] = {
 #include "shaders/ddaa1.comp.inc"
+};
+const std::uint32_t kDdaa1Device[] = {
+#include "shaders/ddaa1.comp.device.inc"
 };
 const std::uint32_t kDdaa2[] = {
 #include "shaders/ddaa2.comp.inc"
 };
+const std::uint32_t kDdaa2Device[] = {
+#include "shaders/ddaa2.comp.device.inc"
+};
 const std::uint32_t kSsaax2[] = {
 #include "shaders/ssaax2.comp.inc"
+};
+const std::uint32_t kSsaax2Device[] = {
+#include "shaders/ssaax2.comp.device.inc"
 };
 const std::uint32_t kSsaax4[] = {
 #include "shaders/ssaax4.comp.inc"
 };
+const std::uint32_t kSsaax4Device[] = {
+#include "shaders/ssaax4.comp.device.inc"
+};
 
 struct Shader {
     std::string_view id;
-    std::span<const std::uint32_t> spirv;
+    std::span<const std::uint32_t> model, device;
 };
 // ddaa2p is ddaa2's shader followed by ssaax2's (spec ppaa.md "ddaa2p").
-const Shader kShaders[] = {{"noaa", kNoaa},     {"blur", kBlur},     {"fxaa3c", kFxaa3c},
-                           {"fxaa3d", kFxaa3d}, {"ddaa1", kDdaa1},   {"ddaa2", kDdaa2},
-                           {"ssaax2", kSsaax2}, {"ssaax4", kSsaax4}, {"ddaa2p", kDdaa2}};
+const Shader kShaders[] = {
+    {"noaa", kNoaa, kNoaaDevice},       {"blur", kBlur, kBlurDevice},       {"fxaa3c", kFxaa3c, kFxaa3cDevice},
+    {"fxaa3d", kFxaa3d, kFxaa3dDevice}, {"ddaa1", kDdaa1, kDdaa1Device},    {"ddaa2", kDdaa2, kDdaa2Device},
+    {"ssaax2", kSsaax2, kSsaax2Device}, {"ssaax4", kSsaax4, kSsaax4Device}, {"ddaa2p", kDdaa2, kDdaa2Device}};
 
-std::span<const std::uint32_t> shaderFor(std::string_view id) {
+std::span<const std::uint32_t> shaderFor(std::string_view id, Sampling sampling) {
     for (const Shader& s : kShaders)
-        if (s.id == id) return s.spirv;
+        if (s.id == id) return sampling == Sampling::Hardware ? s.device : s.model;
     throw Error(fmt::format("{}: no GPU pass", id));
 }
 
@@ -189,6 +216,9 @@ std::unique_ptr<vkx::ComputePipeline> makePipeline(const vkx::Context& c, std::s
 
 // The edge pass's most work groups on a CPU device (aa_constants.h: edgeGroups).
 constexpr std::int32_t kCpuEdgeGroups = 256;
+// EdgePath::Auto's choice per kind of device (docs/gpu.md: measured on lavapipe and an H200).
+constexpr EdgePath kCpuEdgePath = EdgePath::List;
+constexpr EdgePath kGpuEdgePath = EdgePath::OnePass;
 
 // The methods whose shaders have an edge test and run as three dispatches (edge_list.glsl).
 bool hasEdgePass(std::string_view id) {
@@ -214,6 +244,17 @@ Sampling parseSampling(std::string_view name) {
     throw Error(fmt::format("sampling '{}': expected model or hardware", name));
 }
 
+std::string_view edgePathName(EdgePath p) {
+    return p == EdgePath::List ? "list" : p == EdgePath::OnePass ? "one-pass" : "auto";
+}
+
+EdgePath parseEdgePath(std::string_view name) {
+    if (name == "auto") return EdgePath::Auto;
+    if (name == "list") return EdgePath::List;
+    if (name == "one-pass") return EdgePath::OnePass;
+    throw Error(fmt::format("edges '{}': expected auto, list or one-pass", name));
+}
+
 bool hasGpuPass(std::string_view method) {
     for (const Shader& s : kShaders)
         if (s.id == method) return true;
@@ -225,6 +266,7 @@ struct AaPass::Impl {
     const MethodInfo* method = nullptr;
     AaParams params;
     Sampling sampling = Sampling::Model;
+    EdgePath edgePath = EdgePath::List;  // resolved: List or OnePass
     vk::raii::Sampler sampler{nullptr};
     vkx::Buffer tables;
     std::unique_ptr<vkx::ComputePipeline> pipeline, resolve;  // resolve: ddaa2p's ssaax2
@@ -301,7 +343,8 @@ struct AaPass::Impl {
     }
 
     // Records the method's own shader (not ddaa2p's resolve) from `in` to `out`: for an
-    // edge-test method its two passes, or its one pass when the list would not fit.
+    // edge-test method its three dispatches, or its one pass (EdgePath::OnePass, or an image
+    // whose list would not fit).
     void dispatchMethod(const vk::raii::CommandBuffer& cmd, vk::ImageView in, vk::ImageLayout inLayout,
                         vk::ImageView out, const AaConstants& c) {
         if (!edgePass) {
@@ -309,8 +352,8 @@ struct AaPass::Impl {
             return;
         }
         const vk::DeviceSize pixels = vk::DeviceSize(c.outWidth) * vk::DeviceSize(c.outHeight);
-        if (pixels > maxListPixels) {
-            if (!onePass) onePass = makePipeline(*ctx, shaderFor(method->id), spec);  // stage 0
+        if (edgePath == EdgePath::OnePass || pixels > maxListPixels) {
+            if (!onePass) onePass = makePipeline(*ctx, shaderFor(method->id, sampling), spec);  // stage 0
             // Stand-ins for the list and the luma plane, which stage 0 declares but does not use
             // (its lumas are in the work group's tile).
             if (!*luma.image) ensureLuma(1, 1);
@@ -353,7 +396,7 @@ struct AaPass::Impl {
         if (!edgePassCoords) {
             detail::AaSpecialization coords = edgeSpec;
             coords.pairReads = 0;
-            edgePassCoords = makePipeline(*ctx, shaderFor(method->id), coords);
+            edgePassCoords = makePipeline(*ctx, shaderFor(method->id, sampling), coords);
         }
         return *edgePassCoords;
     }
@@ -435,7 +478,7 @@ struct AaPass::Impl {
 };
 
 AaPass::AaPass(std::shared_ptr<vkx::Context> ctx, std::string_view method, const MethodSettings& settings,
-               Sampling sampling)
+               Sampling sampling, EdgePath edges)
     : impl_(std::make_unique<Impl>()) {
     Impl& m = *impl_;
     if (!ctx) throw Error("gpu::AaPass: no Vulkan context");
@@ -473,10 +516,15 @@ AaPass::AaPass(std::shared_ptr<vkx::Context> ctx, std::string_view method, const
             // runs few groups that loop over the list; a GPU gets one pixel per invocation.
             // (lavapipe at 1920x1080: fxaa3c's edge pass about half as long with 256 groups
             // as with one group per 64 listed pixels; docs/gpu.md.)
-            if (c.physical.getProperties().deviceType == vk::PhysicalDeviceType::eCpu)
-                first.edgeGroups = kCpuEdgeGroups;
+            const bool cpuDevice = c.physical.getProperties().deviceType == vk::PhysicalDeviceType::eCpu;
+            if (cpuDevice) first.edgeGroups = kCpuEdgeGroups;
+            // Auto: the list where a driver runs shaders as masked SIMD code on a CPU (it runs
+            // the edge computation for every lane group holding one edge pixel), one pass on a
+            // GPU (no atomics, no plane, no barriers between dispatches). docs/gpu.md gives the
+            // measurements behind both.
+            m.edgePath = edges != EdgePath::Auto ? edges : cpuDevice ? kCpuEdgePath : kGpuEdgePath;
         }
-        m.pipeline = makePipeline(c, shaderFor(m.method->id), first);
+        m.pipeline = makePipeline(c, shaderFor(m.method->id, sampling), first);
         if (hasEdgePass(m.method->id)) {
             m.spec = spec;
             const vk::DeviceSize range = c.physical.getProperties().limits.maxStorageBufferRange;
@@ -495,13 +543,14 @@ AaPass::AaPass(std::shared_ptr<vkx::Context> ctx, std::string_view method, const
             if (const char* v = std::getenv("SSFX_GPU_COORDINATE_READS"); v && std::string_view(v) == "1")
                 second.pairReads = 0;
             m.edgeSpec = second;
-            m.edgePass = makePipeline(c, shaderFor(m.method->id), second);
+            m.edgePass = makePipeline(c, shaderFor(m.method->id, sampling), second);
             detail::AaSpecialization lumaSpec = spec;
             lumaSpec.stage = SSFX_AA_STAGE_LUMA;
-            m.lumaPass = makePipeline(c, shaderFor(m.method->id), lumaSpec);
+            m.lumaPass = makePipeline(c, shaderFor(m.method->id, sampling), lumaSpec);
         }
         if (m.method->id == "ddaa2p")
-            m.resolve = makePipeline(c, kSsaax2, detail::aaSpecialization("ssaax2", aa::Ssaax2Params{}, sampling));
+            m.resolve = makePipeline(c, shaderFor("ssaax2", sampling),
+                                     detail::aaSpecialization("ssaax2", aa::Ssaax2Params{}, sampling));
         m.timer = std::make_unique<vkx::GpuTimer>(c, 1 + Impl::kMaxDispatches);
         m.countReadback = c.createBuffer(16, vk::BufferUsageFlagBits::eTransferDst, true);
     });
@@ -511,6 +560,7 @@ AaPass::~AaPass() = default;
 
 const MethodInfo& AaPass::method() const { return *impl_->method; }
 Sampling AaPass::sampling() const { return impl_->sampling; }
+EdgePath AaPass::edgePath() const { return impl_->edgePath; }
 double AaPass::lastMilliseconds() const { return impl_->lastMs; }
 const std::vector<AaPass::DispatchTime>& AaPass::lastDispatches() const { return impl_->lastDispatches; }
 double AaPass::lastEdgeShare() const { return impl_->lastEdgeShare; }

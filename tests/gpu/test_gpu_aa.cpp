@@ -100,20 +100,25 @@ ImageRgba8 inputFor(const Case& c, int scale, unsigned seed) {
 
 class GpuModelParity : public ::testing::TestWithParam<const MethodInfo*> {};
 
+// Both paths of the edge-test methods (gpu::EdgePath: the list and one pass; Auto picks one
+// per kind of device) on every generated image.
 TEST_P(GpuModelParity, GeneratedImagesGiveTheCpuBytes) {
     REQUIRE_DEVICE();
     const MethodInfo& m = *GetParam();
-    gpu::AaPass pass(context(), m.id);
-    unsigned seed = 7;
-    for (const Case& c : kCases) {
-        const ImageRgba8 in = inputFor(c, m.inputScale, seed++);
-        const ImageRgba8 cpu = m.run(in.view(), {}, Exec{});
-        const ImageRgba8 gpu = pass.run(in.view());
-        ASSERT_EQ(gpu.width(), cpu.width());
-        ASSERT_EQ(gpu.height(), cpu.height());
-        const Diff d = compare(gpu, cpu);
-        EXPECT_EQ(d.pixels, 0) << m.id << " on " << c.name << ": " << d.pixels << " pixels differ, by up to "
-                               << d.largest;
+    for (const gpu::EdgePath path : {gpu::EdgePath::List, gpu::EdgePath::OnePass}) {
+        gpu::AaPass pass(context(), m.id, {}, gpu::Sampling::Model, path);
+        if (pass.edgePath() != path) continue;  // no edge test: one path
+        unsigned seed = 7;
+        for (const Case& c : kCases) {
+            const ImageRgba8 in = inputFor(c, m.inputScale, seed++);
+            const ImageRgba8 cpu = m.run(in.view(), {}, Exec{});
+            const ImageRgba8 gpu = pass.run(in.view());
+            ASSERT_EQ(gpu.width(), cpu.width());
+            ASSERT_EQ(gpu.height(), cpu.height());
+            const Diff d = compare(gpu, cpu);
+            EXPECT_EQ(d.pixels, 0) << m.id << " (edges=" << gpu::edgePathName(path) << ") on " << c.name << ": "
+                                   << d.pixels << " pixels differ, by up to " << d.largest;
+        }
     }
     expectNoValidationMessages();
 }
@@ -123,13 +128,16 @@ TEST_P(GpuModelParity, ReferenceDrawingsGiveTheCpuBytes) {
     const auto dir = test::sharedDir("reference/ppaa");
     if (!dir) GTEST_SKIP() << "../shared/reference/ppaa is absent";
     const MethodInfo& m = *GetParam();
-    gpu::AaPass pass(context(), m.id);
     const char* suffix = m.inputScale == 4 ? "x4" : m.inputScale == 2 ? "x2" : "";
-    for (const char* name : {"lines", "circles"}) {
-        const ImageRgba8 in = io::readPng(fmt::format("{}/{}{}.png", *dir, name, suffix));
-        const Diff d = compare(pass.run(in.view()), m.run(in.view(), {}, Exec{}));
-        EXPECT_EQ(d.pixels, 0) << m.id << " on " << name << ": " << d.pixels << " pixels differ, by up to "
-                               << d.largest;
+    for (const gpu::EdgePath path : {gpu::EdgePath::List, gpu::EdgePath::OnePass}) {
+        gpu::AaPass pass(context(), m.id, {}, gpu::Sampling::Model, path);
+        if (pass.edgePath() != path) continue;  // no edge test: one path
+        for (const char* name : {"lines", "circles"}) {
+            const ImageRgba8 in = io::readPng(fmt::format("{}/{}{}.png", *dir, name, suffix));
+            const Diff d = compare(pass.run(in.view()), m.run(in.view(), {}, Exec{}));
+            EXPECT_EQ(d.pixels, 0) << m.id << " (edges=" << gpu::edgePathName(path) << ") on " << name << ": "
+                                   << d.pixels << " pixels differ, by up to " << d.largest;
+        }
     }
     expectNoValidationMessages();
 }
@@ -394,7 +402,8 @@ TEST(GpuAa, RunReportsItsDispatchesAndTheListedShare) {
             flat(x, y) = {90, 90, 90, 255};
         }
     for (const char* id : {"fxaa3c", "fxaa3d", "ddaa1", "ddaa2"}) {
-        gpu::AaPass pass(context(), id);
+        gpu::AaPass pass(context(), id, {}, gpu::Sampling::Model, gpu::EdgePath::List);
+        EXPECT_EQ(pass.edgePath(), gpu::EdgePath::List);
         (void)pass.run(split.view());
         std::vector<std::string> stages;
         for (const auto& d : pass.lastDispatches()) {
@@ -405,7 +414,16 @@ TEST(GpuAa, RunReportsItsDispatchesAndTheListedShare) {
         EXPECT_DOUBLE_EQ(pass.lastEdgeShare(), 2.0 / 32.0) << id;
         (void)pass.run(flat.view());
         EXPECT_DOUBLE_EQ(pass.lastEdgeShare(), 0.0) << id;
+        // The one-pass path: one dispatch, no list.
+        gpu::AaPass one(context(), id, {}, gpu::Sampling::Model, gpu::EdgePath::OnePass);
+        (void)one.run(split.view());
+        ASSERT_EQ(one.lastDispatches().size(), 1u) << id;
+        EXPECT_EQ(one.lastDispatches()[0].stage, "one pass") << id;
+        EXPECT_EQ(one.lastEdgeShare(), -1.0) << id;
     }
+    // Auto: the list on a CPU device, one pass on a GPU.
+    const bool cpuDevice = context()->physical.getProperties().deviceType == vk::PhysicalDeviceType::eCpu;
+    EXPECT_EQ(gpu::AaPass(context(), "ddaa2").edgePath(), cpuDevice ? gpu::EdgePath::List : gpu::EdgePath::OnePass);
     gpu::AaPass blur(context(), "blur");
     (void)blur.run(split.view());
     ASSERT_EQ(blur.lastDispatches().size(), 1u);
@@ -414,7 +432,7 @@ TEST(GpuAa, RunReportsItsDispatchesAndTheListedShare) {
     ImageRgba8 split2(64, 16);
     for (int y = 0; y < 16; ++y)
         for (int x = 0; x < 64; ++x) split2(x, y) = x < 32 ? Rgba8{0, 0, 0, 255} : Rgba8{255, 255, 255, 255};
-    gpu::AaPass ddaa2p(context(), "ddaa2p");
+    gpu::AaPass ddaa2p(context(), "ddaa2p", {}, gpu::Sampling::Model, gpu::EdgePath::List);
     (void)ddaa2p.run(split2.view());
     std::vector<std::string> stages;
     for (const auto& d : ddaa2p.lastDispatches()) stages.push_back(d.stage);

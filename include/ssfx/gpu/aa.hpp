@@ -48,6 +48,17 @@ enum class Sampling {
 std::string_view samplingName(Sampling s);
 Sampling parseSampling(std::string_view name);
 
+//! How the methods with an edge test (fxaa3c, fxaa3d, ddaa1, ddaa2 and ddaa2p's ddaa2) run
+//! (docs/gpu.md, "Two paths for the edge-test methods"). Both give the same bytes in `model`.
+enum class EdgePath {
+    Auto,     //!< the list on a CPU device (lavapipe), one pass on a GPU; one pass wherever the list would not fit
+    List,     //!< three dispatches: the luma plane, an edge list, the listed pixels
+    OnePass,  //!< one dispatch, every pixel's early exit in place, the lumas in a workgroup tile
+};
+//! "auto", "list" or "one-pass"; parseEdgePath throws ssfx::Error for anything else.
+std::string_view edgePathName(EdgePath p);
+EdgePath parseEdgePath(std::string_view name);
+
 //! An image as record() takes it: the view, and what the pass checks about it.
 struct ImageRef {
     vk::ImageView view;
@@ -65,13 +76,16 @@ public:
     //! Sampling::Model). Throws ssfx::Error for an unknown method, a bad parameter, or a
     //! setting the GPU passes do not support (texture=srgb).
     AaPass(std::shared_ptr<vkx::Context> ctx, std::string_view method, const MethodSettings& settings = {},
-           Sampling sampling = Sampling::Model);
+           Sampling sampling = Sampling::Model, EdgePath edges = EdgePath::Auto);
     ~AaPass();
     AaPass(const AaPass&) = delete;
     AaPass& operator=(const AaPass&) = delete;
 
     const MethodInfo& method() const;
     Sampling sampling() const;
+    //! The path the edge-test methods take on this device (never Auto; List for a method
+    //! without an edge test). An image too large for the list runs in one pass regardless.
+    EdgePath edgePath() const;
 
     //! Records the pass into `cmd` (see the contract above). Throws ssfx::Error when an
     //! image has the wrong format, usage or size, or exceeds the device's limits.

@@ -15,8 +15,8 @@ void main() {
     const vec3 sw = texelValue(x - 1, y - 1), se = texelValue(x + 1, y - 1);
     const vec3 nw = texelValue(x - 1, y + 1), ne = texelValue(x + 1, y + 1);
     // Sum order: centre, the direct neighbours W, E, S, N, then the corners.
-    precise vec3 direct = ((w + e) + (s + n)) * pc.blurW1;
-    precise vec3 corner = ((sw + se) + (nw + ne)) * pc.blurW2;
-    precise vec3 result = ((c + direct) + corner) * pc.blurNorm;
+    EXACT vec3 direct = ((w + e) + (s + n)) * pc.blurW1;
+    EXACT vec3 corner = ((sw + se) + (nw + ne)) * pc.blurW2;
+    EXACT vec3 result = ((c + direct) + corner) * pc.blurNorm;
     store(p, result, alphaAt(x, y));
 }

@@ -18,17 +18,17 @@ float searchDelta(int x, int y, int a0, int along, bool horizontal, float cu, fl
                   float localAverage) {
     if (spec_pairReads != 0) {
         const ivec2 p = horizontal ? ivec2(x + along, y + a0) : ivec2(x + a0, y + along);
-        precise float d = edgeLuma(pairRead(p, p + (horizontal ? ivec2(0, 1) : ivec2(1, 0)))) - localAverage;
+        EXACT float d = edgeLuma(pairRead(p, p + (horizontal ? ivec2(0, 1) : ivec2(1, 0)))) - localAverage;
         return d;
     }
     // One read, its coordinates chosen by value: a branch with a read on each side would
     // cost both reads on drivers that run shaders as masked SIMD code (lavapipe).
-    precise float movedU = cu + move;
-    precise float movedV = cv + move;
+    EXACT float movedU = cu + move;
+    EXACT float movedV = cv + move;
     const float su = horizontal ? movedU : cu, sv = horizontal ? cv : movedV;
     const int ox = horizontal ? k : 0, oy = horizontal ? 0 : k;
     const vec3 c = spec_sampling != 0 ? sampleAt(su, sv, ox, oy) : sampleModel(axisU(su), axisV(sv), ox, oy);
-    precise float delta = edgeLuma(c) - localAverage;
+    EXACT float delta = edgeLuma(c) - localAverage;
     return delta;
 }
 
@@ -40,13 +40,13 @@ int roundPosition(int r, int k) { return r == 0 ? k + 2 : kBatch * r + 2 + (k - 
 float edgeSearchOffset(int x, int y, Luma3x3 n, EdgeSides s) {
     const bool steep2 = abs(s.g2) > abs(s.g1);  // ties go to side 1
     const float lumaSteep = steep2 ? s.luma2 : s.luma1;
-    precise float gradientScaled = 0.25 * maxf(abs(s.g1), abs(s.g2));
-    precise float localAverage = (lumaSteep + n.C) * 0.5;
+    EXACT float gradientScaled = 0.25 * maxf(abs(s.g1), abs(s.g2));
+    EXACT float localAverage = (lumaSteep + n.C) * 0.5;
     const int across = steep2 ? 1 : -1;
     const int a0 = steep2 ? 0 : -1;  // the search reads between rows/columns +a0 and +a0 + 1
 
     // First positions, free: the neighbours along the edge and their diagonals on the steep side.
-    precise float first1, first2;
+    EXACT float first1, first2;
     if (s.horizontal) {
         first1 = (n.W + (steep2 ? n.NW : n.SW)) * 0.5;
         first2 = (n.E + (steep2 ? n.NE : n.SE)) * 0.5;
@@ -55,39 +55,47 @@ float edgeSearchOffset(int x, int y, Luma3x3 n, EdgeSides s) {
         first2 = (n.N + (steep2 ? n.NE : n.NW)) * 0.5;
     }
     // c: the centre moved half a pixel across, towards the steep side.
-    precise float cu = centreU(x);
-    precise float cv = centreV(y);
+    EXACT float cu = centreU(x);
+    EXACT float cv = centreV(y);
     if (s.horizontal)
         cv += float(across) * 0.5 * pc.invH;
     else
         cu += float(across) * 0.5 * pc.invW;
     const float invAlong = s.horizontal ? pc.invW : pc.invH;
 
-    // Both sides in step, round by round (a side whose end is found stops reading): the
-    // reads of each side, and so its result, are the CPU's; in step, the invocations of a
-    // SIMD lane group wait for the slower side once per round instead of once per side.
-    precise float delta1 = first1 - localAverage;
-    precise float delta2 = first2 - localAverage;
+    // Both sides in step, round by round: the reads of each side, and so its result, are the
+    // CPU's; in step, the invocations of a SIMD lane group wait for the slower side once per
+    // round instead of once per side. A round's reads are batched (the paper's section 2.5):
+    // every read of a side that had not found its end when the round began is issued before
+    // any of them is tested, so a GPU overlaps their latencies; reads past the end found in
+    // the round are ignored (they change nothing: the CPU stops there). On lavapipe, which
+    // runs every branch anyway, it costs no extra reads.
+    EXACT float delta1 = first1 - localAverage;
+    EXACT float delta2 = first2 - localAverage;
     bool done1 = abs(delta1) >= gradientScaled, done2 = abs(delta2) >= gradientScaled;
     float d1 = 1.0, d2 = 1.0;
     for (int r = 0; r < pc.searchRounds && !(done1 && done2); ++r) {
         const int moved = r == 0 ? 0 : kBatch * r + 2;  // pixels
-        precise float move = float(moved) * invAlong;
+        EXACT float move = float(moved) * invAlong;
+        float read1[kBatch], read2[kBatch];
         for (int k = r == 0 ? 1 : 0; k < kBatch; ++k) {
             const int offset = r == 0 ? k + 1 : k - 1;  // texel offset from the round's coordinate
+            if (!done1)
+                read1[k] = searchDelta(x, y, a0, -(moved + offset), s.horizontal, cu, cv, -move, -offset, localAverage);
+            if (!done2)
+                read2[k] = searchDelta(x, y, a0, moved + offset, s.horizontal, cu, cv, move, offset, localAverage);
+        }
+        for (int k = r == 0 ? 1 : 0; k < kBatch; ++k) {
+            const float position = float(roundPosition(r, r == 0 ? k - 1 : k));
             if (!done1) {
-                delta1 = searchDelta(x, y, a0, -(moved + offset), s.horizontal, cu, cv, -move, -offset, localAverage);
-                if (abs(delta1) >= gradientScaled) {
-                    done1 = true;
-                    d1 = float(roundPosition(r, r == 0 ? k - 1 : k));
-                }
+                delta1 = read1[k];
+                done1 = abs(delta1) >= gradientScaled;
+                d1 = done1 ? position : d1;
             }
             if (!done2) {
-                delta2 = searchDelta(x, y, a0, moved + offset, s.horizontal, cu, cv, move, offset, localAverage);
-                if (abs(delta2) >= gradientScaled) {
-                    done2 = true;
-                    d2 = float(roundPosition(r, r == 0 ? k - 1 : k));
-                }
+                delta2 = read2[k];
+                done2 = abs(delta2) >= gradientScaled;
+                d2 = done2 ? position : d2;
             }
         }
     }
@@ -95,13 +103,13 @@ float edgeSearchOffset(int x, int y, Luma3x3 n, EdgeSides s) {
     if (!done1) d1 = notFound;
     if (!done2) d2 = notFound;
 
-    precise float sum = d1 + d2;
-    precise float pixelOffset = 0.5 - crDiv(minf(d1, d2), sum);
+    EXACT float sum = d1 + d2;
+    EXACT float pixelOffset = 0.5 - divide(minf(d1, d2), sum);
     const float deltaNear = d1 < d2 ? delta1 : delta2;  // ties: side 2
     // "Correct variation": the luma at the nearer end lies on the other side of the local
     // average than the centre, so the edge really ends there.
     const bool correct = (deltaNear < 0.0) != (n.C < localAverage);
-    precise float signedOffset = pixelOffset * float(across);
+    EXACT float signedOffset = pixelOffset * float(across);
     return correct ? signedOffset : 0.0;
 }
 
@@ -114,11 +122,11 @@ vec3 edgeColour(int x, int y) {
     const float offset = edgeSearchOffset(x, y, n, s);
     // Combination (section 2.3): the search offset moves both diffusion reads, and a large
     // offset (near an edge's end) weakens the diffusion.
-    precise float edgeStrength = minf(1.0, 2.0 * abs(offset));
-    precise float st = d.strength * (1.0 - edgeStrength);
+    EXACT float edgeStrength = minf(1.0, 2.0 * abs(offset));
+    EXACT float st = d.strength * (1.0 - edgeStrength);
     d.strength = st;
-    precise float offU = s.horizontal ? 0.0 : offset * pc.invW;
-    precise float offV = s.horizontal ? offset * pc.invH : 0.0;
+    EXACT float offU = s.horizontal ? 0.0 : offset * pc.invW;
+    EXACT float offV = s.horizontal ? offset * pc.invH : 0.0;
     return diffuse(x, y, d, offU, offV);
 }
 

@@ -9,8 +9,8 @@
 float diagonal(int x, int y, int sx, int sy, float atCentre) {
     if (spec_diagonalsAtCentres != 0) return atCentre;
     const float u = centreU(x), v = centreV(y);
-    precise float du = u + float(sx) * pc.diagonalU;
-    precise float dv = v + float(sy) * pc.diagonalV;
+    EXACT float du = u + float(sx) * pc.diagonalU;
+    EXACT float dv = v + float(sy) * pc.diagonalV;
     return edgeLuma(sampleUV(du, dv));
 }
 
@@ -29,13 +29,13 @@ Lumas lumas(int x, int y, Luma3x3 n) {
     l.NW = diagonal(x, y, -1, -1, n.SW);
     l.SW = diagonal(x, y, -1, +1, n.NW);
     l.SE = diagonal(x, y, +1, +1, n.NE);
-    precise float ne = diagonal(x, y, +1, -1, n.SE) + 1.0 / 384.0;  // FXAA: keeps dir from being 0
+    EXACT float ne = diagonal(x, y, +1, -1, n.SE) + 1.0 / 384.0;  // FXAA: keeps dir from being 0
     l.NE = ne;
     const float lumaM = n.C;
     l.lumaMax = maxf(maxf(l.NE, l.SE), maxf(l.NW, l.SW));
     l.lumaMin = minf(minf(l.NE, l.SE), minf(l.NW, l.SW));
-    precise float contrast = maxf(l.lumaMax, lumaM) - minf(l.lumaMin, lumaM);
-    precise float relative = l.lumaMax * pc.edgeThreshold;
+    EXACT float contrast = maxf(l.lumaMax, lumaM) - minf(l.lumaMin, lumaM);
+    EXACT float relative = l.lumaMax * pc.edgeThreshold;
     l.edge = !(contrast < maxf(pc.edgeThresholdMin, relative));
     return l;
 }
@@ -45,33 +45,33 @@ bool edgeAt(int x, int y, Luma3x3 n) { return lumas(x, y, n).edge; }
 // The colour of an edge pixel: two short and two long taps along the direction.
 vec3 edgeColour(int x, int y) {
     const Lumas l = lumas(x, y, neighbourhood(x, y));
-    precise float swMinusNe = l.SW - l.NE;
-    precise float seMinusNw = l.SE - l.NW;
-    precise float dirX = swMinusNe + seMinusNw;
-    precise float dirY = swMinusNe - seMinusNw;
-    precise float len2 = dirX * dirX + dirY * dirY;
-    const float len = crSqrt(len2);
+    EXACT float swMinusNe = l.SW - l.NE;
+    EXACT float seMinusNw = l.SE - l.NW;
+    EXACT float dirX = swMinusNe + seMinusNw;
+    EXACT float dirY = swMinusNe - seMinusNw;
+    EXACT float len2 = dirX * dirX + dirY * dirY;
+    const float len = squareRoot(len2);
     // No direction at all (exact float ties only): leave the pixel, as the CPU does.
     if (!(len > 0.0)) return texelValue(x, y);
     const float u = centreU(x), v = centreV(y);
-    const float d1x = crDiv(dirX, len), d1y = crDiv(dirY, len);
+    const float d1x = divide(dirX, len), d1y = divide(dirY, len);
     const float hs = 0.5;  // first pair of taps at +-0.5 px along the edge
-    precise float n1u = u - d1x * hs * pc.invW;
-    precise float n1v = v - d1y * hs * pc.invH;
-    precise float p1u = u + d1x * hs * pc.invW;
-    precise float p1v = v + d1y * hs * pc.invH;
+    EXACT float n1u = u - d1x * hs * pc.invW;
+    EXACT float n1v = v - d1y * hs * pc.invH;
+    EXACT float p1u = u + d1x * hs * pc.invW;
+    EXACT float p1v = v + d1y * hs * pc.invH;
     const vec3 n1 = sampleUV(n1u, n1v), p1 = sampleUV(p1u, p1v);
-    precise float minAbs = minf(abs(d1x), abs(d1y)) * pc.edgeSharpness;
-    const float d2x = clampTwo(crDiv(d1x, minAbs)), d2y = clampTwo(crDiv(d1y, minAbs));
-    precise float n2u = u - d2x * 2.0 * pc.invW;
-    precise float n2v = v - d2y * 2.0 * pc.invH;
-    precise float p2u = u + d2x * 2.0 * pc.invW;
-    precise float p2v = v + d2y * 2.0 * pc.invH;
+    EXACT float minAbs = minf(abs(d1x), abs(d1y)) * pc.edgeSharpness;
+    const float d2x = clampTwo(divide(d1x, minAbs)), d2y = clampTwo(divide(d1y, minAbs));
+    EXACT float n2u = u - d2x * 2.0 * pc.invW;
+    EXACT float n2v = v - d2y * 2.0 * pc.invH;
+    EXACT float p2u = u + d2x * 2.0 * pc.invW;
+    EXACT float p2v = v + d2y * 2.0 * pc.invH;
     const vec3 n2 = sampleUV(n2u, n2v), p2 = sampleUV(p2u, p2v);
-    precise vec3 A = n1 + p1;
-    precise vec3 B = (n2 + p2) * 0.25 + A * 0.25;
+    EXACT vec3 A = n1 + p1;
+    EXACT vec3 B = (n2 + p2) * 0.25 + A * 0.25;
     const float lumaB = edgeLuma(B);
-    precise vec3 halfA = A * 0.5;
+    EXACT vec3 halfA = A * 0.5;
     return (lumaB < l.lumaMin || lumaB > l.lumaMax) ? halfA : B;
 }
 

@@ -12,7 +12,7 @@ const float kSteps[12] = float[12](1.0, 1.0, 1.0, 1.0, 1.0, 1.5, 2.0, 2.0, 2.0, 
 
 float walkLuma(bool horizontal, float wu, float wv, float localAverage) {
     const vec3 c = sampleUV(wu, wv);
-    precise float d = edgeLuma(c) - localAverage;
+    EXACT float d = edgeLuma(c) - localAverage;
     return d;
 }
 
@@ -26,14 +26,14 @@ vec3 edgeColour(int x, int y) {
     const EdgeSides s = edgeSides(n);
     const bool pair1 = abs(s.g1) >= abs(s.g2);  // steeper side; ties go to side 1
     const float lumaSteep = pair1 ? s.luma1 : s.luma2;
-    precise float gradientScaled = 0.25 * maxf(abs(s.g1), abs(s.g2));
-    precise float localAverage = (lumaSteep + n.C) * 0.5;
+    EXACT float gradientScaled = 0.25 * maxf(abs(s.g1), abs(s.g2));
+    EXACT float localAverage = (lumaSteep + n.C) * 0.5;
     float lengthSign = s.horizontal ? pc.invH : pc.invW;
     if (pair1) lengthSign = -lengthSign;
 
     const float u = centreU(x), v = centreV(y);
     // posB: half a pixel across, towards the steep side; off: one pixel along the edge.
-    precise float bu = u, bv = v;
+    EXACT float bu = u, bv = v;
     if (s.horizontal)
         bv += lengthSign * 0.5;
     else
@@ -41,10 +41,10 @@ vec3 edgeColour(int x, int y) {
     const float offU = s.horizontal ? pc.invW : 0.0;
     const float offV = s.horizontal ? 0.0 : pc.invH;
 
-    precise float nU = bu - offU * kSteps[0], nV = bv - offV * kSteps[0];
-    precise float pU = bu + offU * kSteps[0], pV = bv + offV * kSteps[0];
-    precise float endN = walkLuma(s.horizontal, nU, nV, localAverage);
-    precise float endP = walkLuma(s.horizontal, pU, pV, localAverage);
+    EXACT float nU = bu - offU * kSteps[0], nV = bv - offV * kSteps[0];
+    EXACT float pU = bu + offU * kSteps[0], pV = bv + offV * kSteps[0];
+    EXACT float endN = walkLuma(s.horizontal, nU, nV, localAverage);
+    EXACT float endP = walkLuma(s.horizontal, pU, pV, localAverage);
     bool doneN = abs(endN) >= gradientScaled;
     bool doneP = abs(endP) >= gradientScaled;
     for (int i = 1; i < 12; ++i) {
@@ -68,28 +68,28 @@ vec3 edgeColour(int x, int y) {
         doneP = doneP || abs(endP) >= gradientScaled;
     }
 
-    precise float dstN = s.horizontal ? u - nU : v - nV;
-    precise float dstP = s.horizontal ? pU - u : pV - v;
-    precise float centreOff = n.C - localAverage;
+    EXACT float dstN = s.horizontal ? u - nU : v - nV;
+    EXACT float dstP = s.horizontal ? pU - u : pV - v;
+    EXACT float centreOff = n.C - localAverage;
     const bool centreBelow = centreOff < 0.0;
     const bool goodSpanN = (endN < 0.0) != centreBelow;
     const bool goodSpanP = (endP < 0.0) != centreBelow;
     const bool directionN = dstN < dstP;
-    precise float spanSum = dstN + dstP;
-    precise float pixelOffset = 0.5 - crDiv(minf(dstN, dstP), spanSum);
+    EXACT float spanSum = dstN + dstP;
+    EXACT float pixelOffset = 0.5 - divide(minf(dstN, dstP), spanSum);
     const bool goodSpan = directionN ? goodSpanN : goodSpanP;
 
     // Sub-pixel aliasing term (FXAA 3.11 subpix, spec step 6).
-    precise float avg = (1.0 / 12.0) * (2.0 * ((n.S + n.N) + (n.W + n.E)) + (n.SW + n.NW) + (n.SE + n.NE));
-    precise float dev = abs(avg - n.C);
-    precise float sp = range > 0.0 ? minf(maxf(crDiv(dev, range), 0.0), 1.0) : 0.0;
+    EXACT float avg = (1.0 / 12.0) * (2.0 * ((n.S + n.N) + (n.W + n.E)) + (n.SW + n.NW) + (n.SE + n.NE));
+    EXACT float dev = abs(avg - n.C);
+    EXACT float sp = range > 0.0 ? minf(maxf(divide(dev, range), 0.0), 1.0) : 0.0;
     sp = (-2.0 * sp + 3.0) * sp * sp;
-    precise float sub = sp * sp * pc.subpix;
+    EXACT float sub = sp * sp * pc.subpix;
 
     const float offset = maxf(goodSpan ? pixelOffset : 0.0, sub);
-    precise float shift = offset * lengthSign;
-    precise float ru = u + shift;
-    precise float rv = v + shift;
+    EXACT float shift = offset * lengthSign;
+    EXACT float ru = u + shift;
+    EXACT float rv = v + shift;
     return sampleUV(s.horizontal ? u : ru, s.horizontal ? rv : v);  // one read (see ddaa2's searchDelta)
 }
 

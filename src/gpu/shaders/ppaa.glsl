@@ -11,8 +11,20 @@
 //  - filtered values come from the CPU's own table of k / 4080 (no division at all);
 //  - the final byte is computed exactly from the float's bits (toUnorm8), not by the
 //    device's float-to-unorm conversion.
+// The `hardware` mode is the same source compiled with SSFX_DEVICE_ARITHMETIC (a second
+// SPIR-V module, CMake's VARIANT): the device's sampler and the device's own arithmetic,
+// the fast path an engine would enable. EXACT is then no qualifier (the compiler may fuse
+// and reorder), division and square root are the device's (divide, squareRoot), texels are
+// the device's unorm decode and the output its float-to-unorm conversion. Its promise is
+// the device's precision, not the CPU's bytes (docs/gpu.md gives the measured agreement).
 #extension GL_GOOGLE_include_directive : require
 #include "aa_constants.h"
+
+#ifdef SSFX_DEVICE_ARITHMETIC
+#define EXACT
+#else
+#define EXACT precise
+#endif
 
 // The work-group size is specialized (aa_constants.h: groupX, groupY).
 layout(local_size_x_id = 4, local_size_y_id = 5) in;
@@ -28,6 +40,23 @@ layout(push_constant, std430) uniform Push {
 
 #include "exact.glsl"
 
+// a / b and sqrt(x): correctly rounded in the model (exact.glsl), the device's own in the
+// hardware mode (Vulkan: 2.5 ulp for division, square root as 1 / inversesqrt).
+float divide(float a, float b) {
+#ifdef SSFX_DEVICE_ARITHMETIC
+    return a / b;
+#else
+    return crDiv(a, b);
+#endif
+}
+float squareRoot(float x) {
+#ifdef SSFX_DEVICE_ARITHMETIC
+    return sqrt(x);
+#else
+    return crSqrt(x);
+#endif
+}
+
 // ---- the texture ---------------------------------------------------------------------------
 
 // k / 4080 and v / 255 rounded to float32, as the CPU's tables (exact.glsl's levelOver4080).
@@ -41,21 +70,25 @@ vec4 texelRaw(int x, int y) {
 }
 // The 8-bit texel (x, y).
 uvec3 texel8(int x, int y) { return uvec3(round(texelRaw(x, y).rgb * 255.0)); }
-// A fetched texel's value (v / 255, the CPU's table).
+// A fetched texel's value (v / 255, the CPU's table; the device's decode in the hardware mode).
 vec3 texelDecoded(vec4 raw) {
+#ifdef SSFX_DEVICE_ARITHMETIC
+    return raw.rgb;
+#else
     const uvec3 t = uvec3(round(raw.rgb * 255.0));
     return vec3(unormLevel(t.r), unormLevel(t.g), unormLevel(t.b));
+#endif
 }
 vec3 fetchValue(int x, int y) { return texelDecoded(texelRaw(x, y)); }
 
 // Texture coordinate of pixel x's centre: (x + 0.5) / W in float32.
 float centreU(int x) {
-    precise float c = float(x) + 0.5;
-    return crDiv(c, pc.fw);
+    EXACT float c = float(x) + 0.5;
+    return divide(c, pc.fw);
 }
 float centreV(int y) {
-    precise float c = float(y) + 0.5;
-    return crDiv(c, pc.fh);
+    EXACT float c = float(y) + 0.5;
+    return divide(c, pc.fh);
 }
 
 // A coordinate split into texel index and 8-bit sub-texel weight (ssfx::Texture::axis).
@@ -64,12 +97,12 @@ struct AxisPos {
     int w;      // the fraction rounded half up to 1/256: 0..256
 };
 AxisPos axisPos(float coord, float size, int n) {
-    precise float t = coord * size - 0.5;
-    precise float fl = floor(t);
+    EXACT float t = coord * size - 0.5;
+    EXACT float fl = floor(t);
     const float lim = float(n) + 4.0;
     const float flc = fl >= -4.0 ? (fl < lim ? fl : lim) : -4.0;
-    precise float frac = t - fl;
-    precise float scaled = frac * 256.0 + 0.5;
+    EXACT float frac = t - fl;
+    EXACT float scaled = frac * 256.0 + 0.5;
     return AxisPos(int(flc), frac >= 0.0 ? int(scaled) : 0);
 }
 AxisPos axisU(float u) { return axisPos(u, pc.fw, pc.width); }
@@ -100,8 +133,8 @@ vec3 pairRead(ivec2 a, ivec2 b) {
 // the device's sampler (the offset added in texture units: not exact, the fast path).
 vec3 sampleAt(float u, float v, int ox, int oy) {
     if (spec_sampling != 0) {
-        precise float su = u + float(ox) * pc.invW;
-        precise float sv = v + float(oy) * pc.invH;
+        EXACT float su = u + float(ox) * pc.invW;
+        EXACT float sv = v + float(oy) * pc.invH;
         return textureLod(src, vec2(su, sv), 0.0).rgb;
     }
     return sampleModel(axisU(u), axisV(v), ox, oy);
@@ -112,8 +145,8 @@ vec3 sampleUV(float u, float v) { return sampleAt(u, v, 0, 0); }
 
 // sqrt(0.299 r + 0.587 g + 0.114 b), summed left to right (spec section 1).
 float luma(vec3 c) {
-    precise float l = 0.299 * c.r + 0.587 * c.g + 0.114 * c.b;
-    return crSqrt(l);
+    EXACT float l = 0.299 * c.r + 0.587 * c.g + 0.114 * c.b;
+    return squareRoot(l);
 }
 // ssfx::edgeLuma: luma plus chromaWeight times max - min of R, G, B.
 float edgeLuma(vec3 c) {
@@ -121,7 +154,7 @@ float edgeLuma(vec3 c) {
     if (spec_chroma == 0) return l;
     const float hi = c.r > c.g ? (c.r > c.b ? c.r : c.b) : (c.g > c.b ? c.g : c.b);
     const float lo = c.r < c.g ? (c.r < c.b ? c.r : c.b) : (c.g < c.b ? c.g : c.b);
-    precise float e = l + pc.chromaWeight * (hi - lo);
+    EXACT float e = l + pc.chromaWeight * (hi - lo);
     return e;
 }
 // ---- the lumas of the 3x3 neighbourhoods (the CPU's luma plane): shaders that read them
@@ -211,8 +244,8 @@ float minf(float a, float b) { return b < a ? b : a; }
 bool belowEdgeThreshold(Luma3x3 n, out float range) {
     const float lumaMax = maxf(maxf(maxf(n.S, n.N), maxf(n.W, n.E)), n.C);
     const float lumaMin = minf(minf(minf(n.S, n.N), minf(n.W, n.E)), n.C);
-    precise float r = lumaMax - lumaMin;
-    precise float t = lumaMax * pc.edgeThreshold;
+    EXACT float r = lumaMax - lumaMin;
+    EXACT float t = lumaMax * pc.edgeThreshold;
     range = r;
     return r < maxf(pc.edgeThresholdMin, t);
 }
@@ -229,16 +262,16 @@ struct EdgeSides {
     float g1, g2;  // luma1 - C, luma2 - C
 };
 EdgeSides edgeSides(Luma3x3 n) {
-    precise float edgeH = abs(-2.0 * n.W + (n.SW + n.NW)) + abs(-2.0 * n.C + (n.S + n.N)) * 2.0 +
+    EXACT float edgeH = abs(-2.0 * n.W + (n.SW + n.NW)) + abs(-2.0 * n.C + (n.S + n.N)) * 2.0 +
                           abs(-2.0 * n.E + (n.SE + n.NE));
-    precise float edgeV = abs(-2.0 * n.N + (n.NE + n.NW)) + abs(-2.0 * n.C + (n.W + n.E)) * 2.0 +
+    EXACT float edgeV = abs(-2.0 * n.N + (n.NE + n.NW)) + abs(-2.0 * n.C + (n.W + n.E)) * 2.0 +
                           abs(-2.0 * n.S + (n.SW + n.SE));
     EdgeSides s;
     s.horizontal = edgeH >= edgeV;
     s.luma1 = s.horizontal ? n.S : n.W;
     s.luma2 = s.horizontal ? n.N : n.E;
-    precise float g1 = s.luma1 - n.C;
-    precise float g2 = s.luma2 - n.C;
+    EXACT float g1 = s.luma1 - n.C;
+    EXACT float g2 = s.luma2 - n.C;
     s.g1 = g1;
     s.g2 = g2;
     return s;

@@ -14,13 +14,13 @@ const vec3 kTaps[12] = vec3[12](vec3(-kA, -kA, kWa), vec3(kA, -kA, kWa), vec3(-k
 void main() {
     ivec2 p;
     if (!outputPixel(p)) return;
-    precise float cx = float(p.x) + 0.5;
-    precise float cy = float(p.y) + 0.5;
-    const float u = crDiv(cx, float(pc.outWidth)), v = crDiv(cy, float(pc.outHeight));
-    precise vec3 sum = vec3(0.0);
+    EXACT float cx = float(p.x) + 0.5;
+    EXACT float cy = float(p.y) + 0.5;
+    const float u = divide(cx, float(pc.outWidth)), v = divide(cy, float(pc.outHeight));
+    EXACT vec3 sum = vec3(0.0);
     for (int i = 0; i < 12; ++i) {
-        precise float tu = u + kTaps[i].x * pc.invW;
-        precise float tv = v + kTaps[i].y * pc.invH;
+        EXACT float tu = u + kTaps[i].x * pc.invW;
+        EXACT float tv = v + kTaps[i].y * pc.invH;
         const vec3 c = sampleUV(tu, tv);
         sum = sum + c * kTaps[i].z;
     }

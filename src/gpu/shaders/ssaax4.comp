@@ -10,16 +10,16 @@ void main() {
     ivec2 p;
     if (!outputPixel(p)) return;
     const int firstX = 4 * p.x + 2 - 8, firstY = 4 * p.y + 2 - 8;
-    precise vec3 sum = vec3(0.0);
-    precise float wsum = 0.0;
+    EXACT vec3 sum = vec3(0.0);
+    EXACT float wsum = 0.0;
     for (int j = 0; j < 16; ++j) {
         for (int i = 0; i < 16; ++i) {
             if ((i == 0 || i == 15) && (j == 0 || j == 15)) continue;  // wide kernels skip their corners
-            precise float w = tables.mitchell4[i] * tables.mitchell4[j];
+            EXACT float w = tables.mitchell4[i] * tables.mitchell4[j];
             sum = sum + texelValue(firstX + i, firstY + j) * w;
             wsum = wsum + w;
         }
     }
-    const vec3 r = vec3(crDiv(sum.r, wsum), crDiv(sum.g, wsum), crDiv(sum.b, wsum));
+    const vec3 r = vec3(divide(sum.r, wsum), divide(sum.g, wsum), divide(sum.b, wsum));
     store(p, r, alphaAt(4 * p.x, 4 * p.y));
 }
