@@ -77,15 +77,20 @@ float edgeSearchOffset(int x, int y, Luma3x3 n, EdgeSides s) {
     for (int r = 0; r < pc.searchRounds && !(done1 && done2); ++r) {
         const int moved = r == 0 ? 0 : kBatch * r + 2;  // pixels
         EXACT float move = float(moved) * invAlong;
+        // Fixed trip counts (read 0 of round 0 is skipped inside), so the arrays stay in registers.
         float read1[kBatch], read2[kBatch];
-        for (int k = r == 0 ? 1 : 0; k < kBatch; ++k) {
+        for (int k = 0; k < kBatch; ++k) {
             const int offset = r == 0 ? k + 1 : k - 1;  // texel offset from the round's coordinate
-            if (!done1)
-                read1[k] = searchDelta(x, y, a0, -(moved + offset), s.horizontal, cu, cv, -move, -offset, localAverage);
-            if (!done2)
-                read2[k] = searchDelta(x, y, a0, moved + offset, s.horizontal, cu, cv, move, offset, localAverage);
+            const bool read = r > 0 || k > 0;
+            read1[k] = read && !done1 ? searchDelta(x, y, a0, -(moved + offset), s.horizontal, cu, cv, -move, -offset,
+                                                    localAverage)
+                                      : 0.0;
+            read2[k] = read && !done2
+                           ? searchDelta(x, y, a0, moved + offset, s.horizontal, cu, cv, move, offset, localAverage)
+                           : 0.0;
         }
-        for (int k = r == 0 ? 1 : 0; k < kBatch; ++k) {
+        for (int k = 0; k < kBatch; ++k) {
+            if (r == 0 && k == 0) continue;
             const float position = float(roundPosition(r, r == 0 ? k - 1 : k));
             if (!done1) {
                 delta1 = read1[k];
