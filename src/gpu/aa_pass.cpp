@@ -289,7 +289,7 @@ struct AaPass::Impl {
     // Larger images run the method in one pass (stage 0, made when first needed): the list
     // must fit in one storage-buffer descriptor (maxStorageBufferRange).
     vk::DeviceSize maxListPixels = 0;
-    std::unique_ptr<vkx::ComputePipeline> onePass;
+    std::unique_ptr<vkx::ComputePipeline> onePass, onePassPairs;  // coordinate reads; ddaa2's pair reads
     detail::AaSpecialization spec{};
     vkx::Image scratch;  // ddaa2p: ddaa2's 2x output
     vk::raii::ImageView scratchView{nullptr};
@@ -353,13 +353,13 @@ struct AaPass::Impl {
         }
         const vk::DeviceSize pixels = vk::DeviceSize(c.outWidth) * vk::DeviceSize(c.outHeight);
         if (edgePath == EdgePath::OnePass || pixels > maxListPixels) {
-            if (!onePass) onePass = makePipeline(*ctx, shaderFor(method->id, sampling), spec);  // stage 0
             // Stand-ins for the list and the luma plane, which stage 0 declares but does not use
             // (its lumas are in the work group's tile).
             if (!*luma.image) ensureLuma(1, 1);
             cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eComputeShader,
                                 {}, {}, {}, lumaDiscarded());
-            dispatch(*onePass, cmd, in, inLayout, out, c, *tables.buffer, Grid::Pixels, "one pass");
+            dispatch(onePassPipeline(c.width, c.height), cmd, in, inLayout, out, c, *tables.buffer, Grid::Pixels,
+                     "one pass");
             return;
         }
         ensureEdges(pixels);
@@ -387,6 +387,20 @@ struct AaPass::Impl {
         cmd.pipelineBarrier(S::eComputeShader, S::eDrawIndirect | S::eComputeShader, {}, listed, {}, {});
         dispatch(edgePipeline(c.width, c.height), cmd, in, inLayout, out, c, *edges.buffer, Grid::EdgeList, "edges");
         listedOf = pixels;
+    }
+
+    // Stage 0 (made when first needed), with ddaa2's pair reads where the edge pass would
+    // use them (edgePipeline).
+    const vkx::ComputePipeline& onePassPipeline(int w, int h) {
+        const bool pairs = edgeSpec.pairReads != 0 &&
+                           aa::ddaa2SearchReadsArePairReads(w, h, std::get<aa::Ddaa2Params>(params).searchRounds);
+        std::unique_ptr<vkx::ComputePipeline>& p = pairs ? onePassPairs : onePass;
+        if (!p) {
+            detail::AaSpecialization s = spec;
+            s.pairReads = pairs ? 1 : 0;
+            p = makePipeline(*ctx, shaderFor(method->id, sampling), s);
+        }
+        return *p;
     }
 
     const vkx::ComputePipeline& edgePipeline(int w, int h) {
@@ -493,8 +507,16 @@ AaPass::AaPass(std::shared_ptr<vkx::Context> ctx, std::string_view method, const
     m.params = resolveParams(m.method->id, settings);
     m.sampling = sampling;
     // Validates the params now (the constants' checks).
-    const detail::AaSpecialization spec = detail::aaSpecialization(m.method->id, m.params, sampling);
+    detail::AaSpecialization spec = detail::aaSpecialization(m.method->id, m.params, sampling);
     vkx::Context& c = *m.ctx;
+    const bool cpuDevice = c.physical.getProperties().deviceType == vk::PhysicalDeviceType::eCpu;
+    if (std::holds_alternative<aa::Ddaa2Params>(m.params)) {
+        // ddaa2's batched search rounds: faster on lavapipe, slower on the H200 (ddaa2.comp).
+        // SSFX_GPU_BATCHED_SEARCH=0|1 forces either, for tests and measurements (docs/gpu.md).
+        spec.batchedSearch = cpuDevice ? 1 : 0;
+        if (const char* v = std::getenv("SSFX_GPU_BATCHED_SEARCH"); v && (*v == '0' || *v == '1'))
+            spec.batchedSearch = *v - '0';
+    }
     vkx::guarded("creating the GPU pass", [&] {
         m.sampler = vk::raii::Sampler(
             c.device,
@@ -516,7 +538,6 @@ AaPass::AaPass(std::shared_ptr<vkx::Context> ctx, std::string_view method, const
             // runs few groups that loop over the list; a GPU gets one pixel per invocation.
             // (lavapipe at 1920x1080: fxaa3c's edge pass about half as long with 256 groups
             // as with one group per 64 listed pixels; docs/gpu.md.)
-            const bool cpuDevice = c.physical.getProperties().deviceType == vk::PhysicalDeviceType::eCpu;
             if (cpuDevice) first.edgeGroups = kCpuEdgeGroups;
             // Auto: the list where a driver runs shaders as masked SIMD code on a CPU (it runs
             // the edge computation for every lane group holding one edge pixel), one pass on a

@@ -143,21 +143,23 @@ TEST_P(GpuModelParity, ReferenceDrawingsGiveTheCpuBytes) {
 }
 
 // Runs `ids` on `cases` (random images, seeds from `seed`) with the environment variable
-// `var` set to `value` (read when a pass is made): each output must be the CPU's bytes.
+// `var` set to `value` (read when a pass is made), on both edge paths: each output must be the CPU's bytes.
 void expectCpuBytesWith(const char* var, const char* value, std::initializer_list<const char*> ids,
                         std::initializer_list<Case> cases, unsigned seed) {
     ASSERT_EQ(setenv(var, value, 1), 0);
-    for (const char* id : ids) {
-        const MethodInfo& m = methodById(id);
-        gpu::AaPass pass(context(), m.id);
-        unsigned s = seed;
-        for (const Case& c : cases) {
-            const ImageRgba8 in = inputFor(c, m.inputScale, s++);
-            const Diff d = compare(pass.run(in.view()), m.run(in.view(), {}, Exec{}));
-            EXPECT_EQ(d.pixels, 0) << m.id << " on " << c.name << " with " << var << "=" << value << ": " << d.pixels
-                                   << " pixels differ, by up to " << d.largest;
+    for (const char* id : ids)
+        for (const gpu::EdgePath path : {gpu::EdgePath::List, gpu::EdgePath::OnePass}) {
+            const MethodInfo& m = methodById(id);
+            gpu::AaPass pass(context(), m.id, {}, gpu::Sampling::Model, path);
+            unsigned s = seed;
+            for (const Case& c : cases) {
+                const ImageRgba8 in = inputFor(c, m.inputScale, s++);
+                const Diff d = compare(pass.run(in.view()), m.run(in.view(), {}, Exec{}));
+                EXPECT_EQ(d.pixels, 0) << m.id << " (edges=" << gpu::edgePathName(path) << ") on " << c.name << " with "
+                                       << var << "=" << value << ": " << d.pixels << " pixels differ, by up to "
+                                       << d.largest;
+            }
         }
-    }
     unsetenv(var);
     expectNoValidationMessages();
 }
@@ -180,6 +182,15 @@ TEST(GpuModelParityCoordinateReads, SearchReadsAtCoordinatesGiveTheCpuBytes) {
     REQUIRE_DEVICE();
     expectCpuBytesWith("SSFX_GPU_COORDINATE_READS", "1", {"ddaa2", "ddaa2p"},
                        {Case{"random 64x48", 64, 48}, Case{"random 37x23", 37, 23}}, 60);
+}
+
+// ddaa2's search issues a round's reads before testing them on a CPU device and one at a
+// time on a GPU (spec batchedSearch); SSFX_GPU_BATCHED_SEARCH forces either: the same bytes.
+TEST(GpuModelParityBatchedSearch, BothSearchOrdersGiveTheCpuBytes) {
+    REQUIRE_DEVICE();
+    for (const char* mode : {"0", "1"})
+        expectCpuBytesWith("SSFX_GPU_BATCHED_SEARCH", mode, {"ddaa2", "ddaa2p"},
+                           {Case{"random 64x48", 64, 48}, Case{"random 37x23", 37, 23}}, 80);
 }
 
 // The shaders write the paper's decimal constants as GLSL literals, which glslang reads

@@ -65,11 +65,12 @@ float edgeSearchOffset(int x, int y, Luma3x3 n, EdgeSides s) {
 
     // Both sides in step, round by round: the reads of each side, and so its result, are the
     // CPU's; in step, the invocations of a SIMD lane group wait for the slower side once per
-    // round instead of once per side. A round's reads are batched (the paper's section 2.5):
-    // every read of a side that had not found its end when the round began is issued before
-    // any of them is tested, so a GPU overlaps their latencies; reads past the end found in
-    // the round are ignored (they change nothing: the CPU stops there). On lavapipe, which
-    // runs every branch anyway, it costs no extra reads.
+    // round instead of once per side. With spec_batchedSearch a round's reads are batched
+    // (the paper's section 2.5): every read of a side that had not found its end when the
+    // round began is issued before any of them is tested, and reads past the end found in
+    // the round are ignored (the CPU stops there: they change nothing). Batched on a CPU
+    // device (lavapipe: edge dispatch 41-42 ms against 46.5-46.7 ms, paired runs), one read
+    // at a time on a GPU (the H200: 45-51 us batched 55-61 us; docs/gpu.md).
     EXACT float delta1 = first1 - localAverage;
     EXACT float delta2 = first2 - localAverage;
     bool done1 = abs(delta1) >= gradientScaled, done2 = abs(delta2) >= gradientScaled;
@@ -79,8 +80,8 @@ float edgeSearchOffset(int x, int y, Luma3x3 n, EdgeSides s) {
         EXACT float move = float(moved) * invAlong;
         // Fixed trip counts (read 0 of round 0 is skipped inside), so the arrays stay in registers.
         float read1[kBatch], read2[kBatch];
-        for (int k = 0; k < kBatch; ++k) {
-            const int offset = r == 0 ? k + 1 : k - 1;  // texel offset from the round's coordinate
+        for (int k = 0; k < kBatch && spec_batchedSearch != 0; ++k) {
+            const int offset = r == 0 ? k + 1 : k - 1;
             const bool read = r > 0 || k > 0;
             read1[k] = read && !done1 ? searchDelta(x, y, a0, -(moved + offset), s.horizontal, cu, cv, -move, -offset,
                                                     localAverage)
@@ -91,14 +92,19 @@ float edgeSearchOffset(int x, int y, Luma3x3 n, EdgeSides s) {
         }
         for (int k = 0; k < kBatch; ++k) {
             if (r == 0 && k == 0) continue;
+            const int offset = r == 0 ? k + 1 : k - 1;  // texel offset from the round's coordinate
             const float position = float(roundPosition(r, r == 0 ? k - 1 : k));
             if (!done1) {
-                delta1 = read1[k];
+                delta1 = spec_batchedSearch != 0 ? read1[k]
+                                                 : searchDelta(x, y, a0, -(moved + offset), s.horizontal, cu, cv,
+                                                               -move, -offset, localAverage);
                 done1 = abs(delta1) >= gradientScaled;
                 d1 = done1 ? position : d1;
             }
             if (!done2) {
-                delta2 = read2[k];
+                delta2 = spec_batchedSearch != 0
+                             ? read2[k]
+                             : searchDelta(x, y, a0, moved + offset, s.horizontal, cu, cv, move, offset, localAverage);
                 done2 = abs(delta2) >= gradientScaled;
                 d2 = done2 ? position : d2;
             }
