@@ -297,6 +297,15 @@ if "$SSFX" --help 2>/dev/null | grep -qE '^ +render '; then
     check aa_vulkan 0 $VK "$SSFX" aa -m ddaa2 --backend vulkan "$OUT/scene/scene.png" -o "$OUT/ddaa2_vk.png" --preset high
     cmp -s "$OUT/ddaa2.png" "$OUT/ddaa2_vk.png" || { echo "FAIL aa_vulkan: not the cpu's bytes"; fail=1; }
     check aa_vulkan_hw 0 $VK "$SSFX" aa -m ddaa2 --backend vulkan -p sampling=hardware "$OUT/scene/scene.png" -o "$OUT/ddaa2_hw.png"
+    # Both paths of the edge-test methods (issue #34): the cpu's bytes.
+    for path in list one-pass; do
+      check aa_vulkan_$path 0 $VK "$SSFX" aa -m ddaa2 --backend vulkan -p edges=$path "$OUT/scene/scene.png" -o "$OUT/ddaa2_$path.png" --preset high
+      cmp -s "$OUT/ddaa2.png" "$OUT/ddaa2_$path.png" || { echo "FAIL aa_vulkan_$path: not the cpu's bytes"; fail=1; }
+    done
+    check aa_edges_bad 2 $VK "$SSFX" aa -m ddaa2 --backend vulkan -p edges=tiles "$OUT/scene/scene.png" -o "$OUT/x.png"
+    contains aa_edges_bad "$OUT/aa_edges_bad.err" "expected auto, list or one-pass"
+    check aa_edges_cpu 2 "$SSFX" aa -m ddaa2 -p edges=list "$OUT/scene/scene.png" -o "$OUT/x.png"
+    contains aa_edges_cpu "$OUT/aa_edges_cpu.err" "vulkan backend"
     check aa_vulkan_resolve 0 $VK "$SSFX" aa -m ssaax4 --backend vulkan "$OUT/scene/scenex4.png" -o "$OUT/ssaax4_vk.png"
     cmp -s "$OUT/ssaax4.png" "$OUT/ssaax4_vk.png" || { echo "FAIL aa_vulkan_resolve: not the cpu's bytes"; fail=1; }
     check aa_vulkan_seq 0 $VK "$SSFX" aa -m ddaa2 --backend vulkan "$OUT/seq/in" -o "$OUT/seq/vk"
@@ -312,7 +321,8 @@ if "$SSFX" --help 2>/dev/null | grep -qE '^ +render '; then
     check aa_vulkan_noicd 2 env VK_ICD_FILENAMES=/nonexistent.json $VK "$SSFX" aa -m ddaa2 --backend vulkan "$OUT/scene/scene.png" -o "$OUT/x.png"
     contains aa_vulkan_noicd "$OUT/aa_vulkan_noicd.err" "looked for a Vulkan 1.3 device with a compute queue"
     [ ! -e "$OUT/x.png" ] || { echo "FAIL aa_vulkan: a failed run left x.png"; fail=1; }
-    check bench_vulkan 0 $VK "$SSFX" bench --backend vulkan --size 64 --reps 4 --warmup 0 --methods blur,ddaa2 --json "$OUT/bench_vk.json"
+    check bench_vulkan 0 $VK "$SSFX" bench --backend vulkan --size 64 --reps 4 --warmup 0 --methods blur,ddaa2 -p edges=list --json "$OUT/bench_vk.json"
+    contains bench_vulkan "$OUT/bench_vk.json" '"edges": "list"'
     contains bench_vulkan "$OUT/bench_vk.json" '"backend": "vulkan"'
     contains bench_vulkan "$OUT/bench_vk.json" '"device"'
     contains bench_vulkan "$OUT/bench_vk.json" '"ddaa2"'
