@@ -24,9 +24,11 @@
 //    of the same ddaa2p pass run at the same time (one pass per frame in flight).
 //
 // Two sampling modes (Sampling): `model` (the default) reproduces the CPU's GPU sampling
-// model in the shader, so the output bytes equal the CPU's on any device; `hardware` reads
-// with the device's texture unit (a linear sampler): faster, exact only to the device's
-// filtering precision (docs/gpu.md gives the measured agreement).
+// model in the shader, so the output bytes equal the CPU's on any device; `hardware` is the
+// fast path an engine would enable: the device's texture unit (a linear sampler) and its
+// own arithmetic and conversions, exact only to the device's precision (docs/gpu.md gives
+// the measured agreement). The edge-test methods run on one of two paths (EdgePath), the
+// same bytes either way.
 #pragma once
 
 #include <memory>
@@ -42,7 +44,7 @@ namespace ssfx::gpu {
 
 enum class Sampling {
     Model,     //!< the CPU's GPU sampling model in the shader: the CPU's bytes
-    Hardware,  //!< the device's own bilinear filtering: the fast path
+    Hardware,  //!< the device's own bilinear filtering and arithmetic: the fast path
 };
 //! "model" or "hardware"; parseSampling throws ssfx::Error for anything else.
 std::string_view samplingName(Sampling s);
