@@ -71,24 +71,26 @@ Applier makeApplier(const BackendOptions& o, const MethodInfo& m, const MethodSe
     auto pass = std::make_shared<gpu::AaPass>(ctx, m.id, settings, sampling, edges);
     auto lock = std::make_shared<std::mutex>();
     const std::string device = ctx->info.name;
-    return {[pass, lock](ImageView<const Rgba8> in) {
-                std::lock_guard guard(*lock);
-                return pass->run(in);
-            },
-            [pass, lock] {
-                std::lock_guard guard(*lock);
-                return pass->lastMilliseconds();
-            },
-            fmt::format("vulkan: {}, sampling={}, edges={}", device, gpu::samplingName(sampling),
-                        gpu::edgePathName(pass->edgePath())),
-            device,
-            [pass, lock] {
-                std::lock_guard guard(*lock);
-                DispatchProfile p;
-                for (const auto& d : pass->lastDispatches()) p.dispatches.emplace_back(d.stage, d.milliseconds);
-                p.edgeShare = pass->lastEdgeShare();
-                return p;
-            }};
+    Applier applier{[pass, lock](ImageView<const Rgba8> in) {
+                        std::lock_guard guard(*lock);
+                        return pass->run(in);
+                    },
+                    [pass, lock] {
+                        std::lock_guard guard(*lock);
+                        return pass->lastMilliseconds();
+                    },
+                    fmt::format("vulkan: {}, sampling={}, edges={}", device, gpu::samplingName(sampling),
+                                gpu::edgePathName(pass->edgePath())),
+                    device,
+                    [pass, lock] {
+                        std::lock_guard guard(*lock);
+                        DispatchProfile p;
+                        for (const auto& d : pass->lastDispatches()) p.dispatches.emplace_back(d.stage, d.milliseconds);
+                        p.edgeShare = pass->lastEdgeShare();
+                        return p;
+                    }};
+    applier.deviceDecode = pass->deviceDecode();
+    return applier;
 #else
     (void)settings;
     (void)exec;

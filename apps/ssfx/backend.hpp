@@ -51,6 +51,8 @@ struct Applier {
     std::string name, device;
     //! vulkan: the last apply()'s profile; cpu: an empty one.
     std::function<DispatchProfile()> lastProfile = [] { return DispatchProfile{}; };
+    //! vulkan, model: the device's unorm decode was probed exact and is used (gpu::AaPass::deviceDecode).
+    bool deviceDecode = false;
 };
 Applier makeApplier(const BackendOptions& o, const MethodInfo& m, const MethodSettings& settings, const Exec& exec);
 

@@ -56,7 +56,7 @@ MethodProfile profileOf(const std::vector<DispatchProfile>& rounds) {
 // per-dispatch times and listed share go to `profiles` (one per method, in ids' order).
 std::vector<eval::TimingResult> timeOnBackend(std::vector<std::string>& ids,
                                               const std::function<ImageRgba8(int)>& input, const BenchOptions& o,
-                                              const Exec& exec, std::string* device,
+                                              const Exec& exec, std::string* device, bool* deviceDecode,
                                               const std::function<void(int, int)>& rounds,
                                               std::vector<MethodProfile>* profiles) {
     if (std::find(ids.begin(), ids.end(), "blur") == ids.end()) ids.insert(ids.begin(), "blur");
@@ -70,6 +70,7 @@ std::vector<eval::TimingResult> timeOnBackend(std::vector<std::string>& ids,
         if (inputs[std::size_t(m.inputScale)].width() == 0) inputs[std::size_t(m.inputScale)] = input(m.inputScale);
         appliers.push_back(makeApplier(o.backend, m, {}, exec));
         *device = appliers.back().device;
+        *deviceDecode = *deviceDecode || appliers.back().deviceDecode;
         const Applier* a = &appliers.back();
         const ImageRgba8* in = &inputs[std::size_t(m.inputScale)];
         auto* mine = &perRound[appliers.size() - 1];
@@ -137,8 +138,9 @@ void run(BenchOptions o) {
     const auto scaled = [&](int scale) { return scale == 1 ? first : input(scale); };
     const auto rounds = [&](int r, int n) { line.report({"interleaved rounds", r, n, "rounds"}); };
     std::string device;
+    bool deviceDecode = false;
     std::vector<MethodProfile> profiles;
-    const auto results = gpu ? timeOnBackend(ids, scaled, o, exec, &device, rounds, &profiles)
+    const auto results = gpu ? timeOnBackend(ids, scaled, o, exec, &device, &deviceDecode, rounds, &profiles)
                              : eval::timeMethodsOn(ids, scaled, o.reps, o.warmup, exec, rounds);
     line.end();
     const eval::MachineInfo mi = eval::machineInfo(resolvedThreads(exec));
@@ -146,10 +148,11 @@ void run(BenchOptions o) {
         fmt::format("image: {} ({}x{}); {} repetitions, methods interleaved, fastest and slowest quarter dropped\n",
                     source, first.width(), first.height(), o.reps);
     if (gpu)
-        table +=
-            fmt::format("backend: vulkan on {}, sampling={}, edges={}; times from GPU timestamps around each pass\n\n",
-                        device, o.backend.sampling.empty() ? "model" : o.backend.sampling,
-                        o.backend.edges.empty() ? "auto" : o.backend.edges);
+        table += fmt::format(
+            "backend: vulkan on {}, sampling={}{}, edges={}; times from GPU timestamps around each pass\n\n", device,
+            o.backend.sampling.empty() ? "model" : o.backend.sampling,
+            deviceDecode ? " (the device's unorm decode, probed exact)" : "",
+            o.backend.edges.empty() ? "auto" : o.backend.edges);
     else
         table += fmt::format("machine: {}, {} threads used of {}, SIMD target {}\n\n", mi.cpu, mi.threads,
                              mi.hardwareThreads, mi.simdTarget);
@@ -170,6 +173,7 @@ void run(BenchOptions o) {
         if (gpu) {
             j["sampling"] = o.backend.sampling.empty() ? "model" : o.backend.sampling;
             j["edges"] = o.backend.edges.empty() ? "auto" : o.backend.edges;
+            j["device_decode"] = deviceDecode;
         }
         j["image"] = {{"path", source}, {"width", first.width()}, {"height", first.height()}};
         j["protocol"] = {{"repetitions", o.reps},

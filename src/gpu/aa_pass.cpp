@@ -4,14 +4,18 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <bit>
 #include <cstddef>
 #include <cstdlib>
 #include <cstring>
 #include <iterator>
+#include <map>
+#include <mutex>
 
 #include "src/gpu/shaders/aa_constants.h"
 #include "ssfx/aa/ddaa.hpp"
 #include "ssfx/core/error.hpp"
+#include "ssfx/core/sample.hpp"
 #include "ssfx/vk/compute.hpp"
 #include "ssfx/vk/timer.hpp"
 
@@ -198,6 +202,84 @@ std::span<const std::uint32_t> shaderFor(std::string_view id, Sampling sampling)
     throw Error(fmt::format("{}: no GPU pass", id));
 }
 
+const std::uint32_t kDecodeProbe[] = {
+#include "shaders/decode_probe.comp.inc"
+};
+
+// Whether the device's unorm decode of an 8-bit texel channel is v / 255 rounded to float32
+// (kUnorm8, the model's level) for every v, in both input formats, fetched as the passes
+// fetch. It is a function of 256 inputs, so checking each one decides it: where it holds,
+// the model takes a fetched value as the texel's level (spec deviceDecode) instead of
+// rounding it back to the byte and computing the level (ppaa.glsl's texelDecoded). Probed
+// once per device and driver. SSFX_GPU_DEVICE_DECODE=0 turns it off, for the test of the
+// computed path and for measurements.
+bool unormDecodeIsExact(vkx::Context& c, const vk::raii::Sampler& sampler) {
+    if (const char* v = std::getenv("SSFX_GPU_DEVICE_DECODE"); v && std::string_view(v) == "0") return false;
+    const vk::PhysicalDeviceProperties props = c.physical.getProperties();
+    const std::string key = fmt::format("{}:{}:{}:{}", props.vendorID, props.deviceID, props.driverVersion,
+                                        std::string_view(props.deviceName));
+    static std::mutex mutex;
+    static std::map<std::string, bool> known;
+    {
+        std::lock_guard lock(mutex);
+        if (const auto it = known.find(key); it != known.end()) return it->second;
+    }
+    using S = vk::PipelineStageFlagBits;
+    using A = vk::AccessFlagBits;
+    using L = vk::ImageLayout;
+    // Texel i holds (i, 255 - i, i + 85 mod 256, 255) in memory order: each channel takes every value.
+    std::uint8_t bytes[256 * 4];
+    for (int i = 0; i < 256; ++i) {
+        bytes[4 * i] = std::uint8_t(i);
+        bytes[4 * i + 1] = std::uint8_t(255 - i);
+        bytes[4 * i + 2] = std::uint8_t((i + 85) & 255);
+        bytes[4 * i + 3] = 255;
+    }
+    const vkx::ComputePipeline probe(
+        c, kDecodeProbe, {{vk::DescriptorType::eCombinedImageSampler}, {vk::DescriptorType::eStorageBuffer}}, 0,
+        nullptr, true);
+    const vkx::Buffer upload = c.uploadBuffer(bytes, sizeof bytes, vk::BufferUsageFlagBits::eTransferSrc);
+    const vkx::Buffer out = c.createBuffer(256 * 3 * sizeof(float), vk::BufferUsageFlagBits::eStorageBuffer, true);
+    bool exact = true;
+    for (const vk::Format f : {vk::Format::eR8G8B8A8Unorm, vk::Format::eB8G8R8A8Unorm}) {
+        const vkx::Image image =
+            c.createImage(f, 256, 1, vk::ImageUsageFlagBits::eSampled | vk::ImageUsageFlagBits::eTransferDst,
+                          vk::ImageAspectFlagBits::eColor);
+        const vk::raii::ImageView view(c.device,
+                                       vk::ImageViewCreateInfo({}, *image.image, vk::ImageViewType::e2D, f, {},
+                                                               {vk::ImageAspectFlagBits::eColor, 0, 1, 0, 1}));
+        c.submit([&](const vk::raii::CommandBuffer& cmd) {
+            vkx::transition(cmd, image, L::eUndefined, L::eTransferDstOptimal, S::eTopOfPipe, {}, S::eTransfer,
+                            A::eTransferWrite);
+            cmd.copyBufferToImage(
+                *upload.buffer, *image.image, L::eTransferDstOptimal,
+                vk::BufferImageCopy(0, 0, 0, {vk::ImageAspectFlagBits::eColor, 0, 0, 1}, {0, 0, 0}, {256, 1, 1}));
+            vkx::transition(cmd, image, L::eTransferDstOptimal, L::eShaderReadOnlyOptimal, S::eTransfer,
+                            A::eTransferWrite, S::eComputeShader, A::eShaderRead);
+            const vk::DescriptorImageInfo imageInfo(*sampler, *view, L::eShaderReadOnlyOptimal);
+            const vk::DescriptorBufferInfo outInfo(*out.buffer, 0, VK_WHOLE_SIZE);
+            const vk::WriteDescriptorSet writes[] = {
+                {{}, 0, 0, vk::DescriptorType::eCombinedImageSampler, imageInfo},
+                {{}, 1, 0, vk::DescriptorType::eStorageBuffer, {}, outInfo},
+            };
+            probe.dispatchPushed(cmd, writes, nullptr, 4);
+            const vk::MemoryBarrier toHost(A::eShaderWrite, A::eHostRead);
+            cmd.pipelineBarrier(S::eComputeShader, S::eHost, {}, toHost, {}, {});
+        });
+        const auto* decoded = static_cast<const float*>(out.mapped);
+        const bool bgra = f == vk::Format::eB8G8R8A8Unorm;
+        for (int i = 0; i < 256 && exact; ++i)
+            for (int k = 0; k < 3; ++k) {
+                const std::uint8_t v = bytes[4 * i + (bgra ? 2 - k : k)];  // channel k's byte in memory
+                exact = exact &&
+                        std::bit_cast<std::uint32_t>(decoded[3 * i + k]) == std::bit_cast<std::uint32_t>(kUnorm8[v]);
+            }
+    }
+    std::lock_guard lock(mutex);
+    known[key] = exact;
+    return exact;
+}
+
 const std::vector<vkx::BindingSpec> kBindings{
     {vk::DescriptorType::eCombinedImageSampler},  // SSFX_AA_BINDING_INPUT
     {vk::DescriptorType::eStorageImage},          // SSFX_AA_BINDING_OUTPUT
@@ -267,6 +349,7 @@ struct AaPass::Impl {
     AaParams params;
     Sampling sampling = Sampling::Model;
     EdgePath edgePath = EdgePath::List;  // resolved: List or OnePass
+    bool deviceDecode = false;           // model: the probe found the device's unorm decode exact
     vk::raii::Sampler sampler{nullptr};
     vkx::Buffer tables;
     std::unique_ptr<vkx::ComputePipeline> pipeline, resolve;  // resolve: ddaa2p's ssaax2
@@ -523,6 +606,8 @@ AaPass::AaPass(std::shared_ptr<vkx::Context> ctx, std::string_view method, const
             vk::SamplerCreateInfo({}, vk::Filter::eLinear, vk::Filter::eLinear, vk::SamplerMipmapMode::eNearest,
                                   vk::SamplerAddressMode::eClampToEdge, vk::SamplerAddressMode::eClampToEdge,
                                   vk::SamplerAddressMode::eClampToEdge));
+        m.deviceDecode = sampling == Sampling::Model && unormDecodeIsExact(c, m.sampler);
+        spec.deviceDecode = m.deviceDecode ? 1 : 0;
         // The tables: the x4 resolve's weights, the CPU's own floats.
         std::vector<float> t;
         aa::MitchellParams mp;
@@ -582,6 +667,7 @@ AaPass::~AaPass() = default;
 const MethodInfo& AaPass::method() const { return *impl_->method; }
 Sampling AaPass::sampling() const { return impl_->sampling; }
 EdgePath AaPass::edgePath() const { return impl_->edgePath; }
+bool AaPass::deviceDecode() const { return impl_->deviceDecode; }
 double AaPass::lastMilliseconds() const { return impl_->lastMs; }
 const std::vector<AaPass::DispatchTime>& AaPass::lastDispatches() const { return impl_->lastDispatches; }
 double AaPass::lastEdgeShare() const { return impl_->lastEdgeShare; }

@@ -193,6 +193,22 @@ TEST(GpuModelParityBatchedSearch, BothSearchOrdersGiveTheCpuBytes) {
                            {Case{"random 64x48", 64, 48}, Case{"random 37x23", 37, 23}}, 80);
 }
 
+// The model takes fetched values as the texels' levels where the pass's probe found the
+// device's unorm decode exact for all 256 values (gpu::AaPass::deviceDecode; lavapipe's is
+// not: 254 decodes one ulp off); SSFX_GPU_DEVICE_DECODE=0 forces the computed levels. On a
+// device whose decode is exact, this and the other parity tests cover both paths.
+TEST(GpuModelParityDeviceDecode, ComputedLevelsGiveTheCpuBytes) {
+    REQUIRE_DEVICE();
+    expectCpuBytesWith("SSFX_GPU_DEVICE_DECODE", "0", {"blur", "fxaa3c", "fxaa3d", "ddaa1", "ddaa2", "ssaax4"},
+                       {Case{"random 64x48", 64, 48}, Case{"random 37x23", 37, 23}}, 100);
+    ASSERT_EQ(setenv("SSFX_GPU_DEVICE_DECODE", "0", 1), 0);
+    EXPECT_FALSE(gpu::AaPass(context(), "blur").deviceDecode());
+    unsetenv("SSFX_GPU_DEVICE_DECODE");
+    EXPECT_FALSE(gpu::AaPass(context(), "blur", {}, gpu::Sampling::Hardware).deviceDecode());
+    std::printf("the device's unorm decode, probed: %s\n",
+                gpu::AaPass(context(), "blur").deviceDecode() ? "exact (used)" : "not exact (levels computed)");
+}
+
 // The shaders write the paper's decimal constants as GLSL literals, which glslang reads
 // in double and rounds to float; C++ rounds `0.299f` once. The two agree for these values.
 TEST(GpuShaders, DecimalLiteralsRoundTheSameInGlslAndCpp) {

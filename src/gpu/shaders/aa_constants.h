@@ -49,7 +49,8 @@
     X(5, groupY, SSFX_AA_GROUP)                                                                          \
     X(6, edgeGroups, SSFX_AA_EDGE_MAX_GROUPS) /* edge pass: at most this many groups (aa_pass.cpp) */    \
     X(7, pairReads, 0)     /* ddaa2's edge pass, model: search reads by texel index (aa_pass.cpp) */     \
-    X(8, batchedSearch, 0) /* ddaa2: a round's reads issued before they are tested (aa_pass.cpp) */
+    X(8, batchedSearch, 0) /* ddaa2: a round's reads issued before they are tested (aa_pass.cpp) */      \
+    X(9, deviceDecode, 0)  /* model: the device's unorm decode is exact (aa_pass.cpp's probe) */
 
 // The three dispatches of the methods with an edge test (fxaa3c, fxaa3d, ddaa1, ddaa2;
 // edge_list.glsl): the first writes the luma plane and copies every pixel to the output; the

@@ -70,11 +70,15 @@ vec4 texelRaw(int x, int y) {
 }
 // The 8-bit texel (x, y).
 uvec3 texel8(int x, int y) { return uvec3(round(texelRaw(x, y).rgb * 255.0)); }
-// A fetched texel's value (v / 255, the CPU's table; the device's decode in the hardware mode).
+// A fetched texel's value: v / 255 rounded to float32 (the CPU's table). The device's decode
+// in the hardware mode; in the model too where the pass found it to be exactly that for all
+// 256 values (spec_deviceDecode, aa_pass.cpp's probe: a function of 256 inputs, checked on
+// every one); else computed from the byte.
 vec3 texelDecoded(vec4 raw) {
 #ifdef SSFX_DEVICE_ARITHMETIC
     return raw.rgb;
 #else
+    if (spec_deviceDecode != 0) return raw.rgb;
     const uvec3 t = uvec3(round(raw.rgb * 255.0));
     return vec3(unormLevel(t.r), unormLevel(t.g), unormLevel(t.b));
 #endif
