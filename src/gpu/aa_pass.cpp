@@ -12,7 +12,7 @@
 #include <map>
 #include <mutex>
 
-#include "src/gpu/shaders/aa_constants.h"
+#include "src/gpu/shaders/aa/aa_constants.h"
 #include "ssfx/aa/ddaa.hpp"
 #include "ssfx/core/error.hpp"
 #include "ssfx/core/sample.hpp"

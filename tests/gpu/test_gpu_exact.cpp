@@ -1,4 +1,4 @@
-// The model sampling mode's exact float helpers (src/gpu/shaders/exact.glsl) on the device:
+// The model sampling mode's exact float helpers (src/gpu/shaders/common/exact.glsl) on the device:
 // crDiv and crSqrt must return the correctly rounded (IEEE) result, bit for bit as the CPU
 // computes it, whatever the device's own division and square root return; toUnorm8 must be
 // ssfx::toUnorm8. The inputs cover the values the passes divide and take roots of (texture

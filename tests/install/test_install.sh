@@ -13,7 +13,8 @@ cmake --build "$OUT/consumer" >/dev/null
 if [ -x "$OUT/consumer/consumer_render" ]; then "$OUT/consumer/consumer_render"; fi
 if [ -x "$OUT/consumer/consumer_gpu" ]; then
   ASAN_OPTIONS=detect_leaks=0 "$OUT/consumer/consumer_gpu"
-  for f in ppaa.glsl edge_list.glsl aa_constants.h ddaa2.comp ddaa2.comp.spv ssaax4.comp.spv; do
+  for f in aa/ppaa.glsl aa/edge_list.glsl aa/aa_constants.h aa/ddaa2.comp common/exact.glsl ddaa2.comp.spv \
+    ddaa2.comp.device.spv ssaax4.comp.spv; do
     test -s "$OUT/prefix/share/ssfx/shaders/$f" || { echo "install: share/ssfx/shaders/$f missing"; exit 1; }
   done
 fi

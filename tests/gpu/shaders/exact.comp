@@ -1,5 +1,5 @@
 #version 450
-// The exact float helpers (src/gpu/shaders/exact.glsl) on the device, for
+// The exact float helpers (src/gpu/shaders/common/exact.glsl) on the device, for
 // GpuShaders.ExactHelpersMatchIeee: per input pair (a, b), the device's own a / b and
 // sqrt(a), crDiv(a, b), crSqrt(a), toUnorm8(a), the corrections from deliberately wrong
 // starting values (the corrected a / b 2 ulp up and 2 ulp down, the corrected sqrt(a) 1 ulp
@@ -9,7 +9,7 @@
 // subnormal a to zero, which Vulkan allows without the float-controls execution modes); and
 // levelOver4080(k) for k = 0..4080 (invocation k).
 #extension GL_GOOGLE_include_directive : require
-#include "../../../src/gpu/shaders/exact.glsl"
+#include "../../../src/gpu/shaders/common/exact.glsl"
 
 layout(local_size_x = 64) in;
 layout(set = 0, binding = 0, std430) readonly buffer In { vec2 pairs[]; };

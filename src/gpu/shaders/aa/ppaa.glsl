@@ -38,7 +38,7 @@ layout(push_constant, std430) uniform Push {
     AaConstants pc;
 };
 
-#include "exact.glsl"
+#include "../common/exact.glsl"  // shared by every family of passes
 
 // a / b and sqrt(x): correctly rounded in the model (exact.glsl), the device's own in the
 // hardware mode (Vulkan: 2.5 ulp for division, square root as 1 / inversesqrt).
