@@ -15,6 +15,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <map>
+#include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 
@@ -27,6 +30,9 @@
 #include "ssfx/io/camera.hpp"
 #include "ssfx/io/exr.hpp"
 #include "ssfx/io/png.hpp"
+#ifdef SSFX_HAVE_GPU
+#include "ssfx/gpu/aa.hpp"
+#endif
 
 namespace py = pybind11;
 using namespace ssfx;
@@ -217,10 +223,12 @@ double paramValue(const ParamInfo& row, const py::handle& v, std::string_view id
 }
 
 std::vector<std::pair<std::string, double>> paramList(std::span<const ParamInfo> table, std::string_view id,
-                                                      const py::kwargs& kwargs) {
+                                                      const py::kwargs& kwargs,
+                                                      std::initializer_list<std::string_view> skip = {}) {
     std::vector<std::pair<std::string, double>> out;
     for (const auto& [k, v] : kwargs) {
         const std::string name = k.cast<std::string>();
+        if (std::find(skip.begin(), skip.end(), name) != skip.end()) continue;
         const ParamInfo& row = findParam(table, id, name);
         const double value = paramValue(row, v, id);
         checkParam(row, value, id);
@@ -230,6 +238,33 @@ std::vector<std::pair<std::string, double>> paramList(std::span<const ParamInfo>
 }
 
 // ---- ssfx.aa ------------------------------------------------------------------------------
+#ifdef SSFX_HAVE_GPU
+// backend='vulkan': one Vulkan context per process and device choice, made when first needed
+// (as the CLI's --backend vulkan: the same device choice and the same passes, so the same
+// bytes). A context is used by one thread at a time: its mutex. The map is never freed: the
+// contexts live until the process ends, past Python's own teardown.
+struct GpuContext {
+    std::shared_ptr<vkx::Context> ctx;
+    std::mutex mutex;
+};
+GpuContext& gpuContext(const std::string& device) {
+    static std::mutex mutex;
+    static auto* contexts = new std::map<std::string, std::unique_ptr<GpuContext>>;
+    std::lock_guard lock(mutex);
+    if (const auto it = contexts->find(device); it != contexts->end()) return *it->second;
+    vkx::ContextOptions o;
+    o.device = device;
+    auto g = std::make_unique<GpuContext>();
+    try {
+        g->ctx = vkx::Context::create(o);
+    } catch (const Error& e) {
+        throw Error(fmt::format("backend='vulkan' looked for a Vulkan 1.3 device with a compute queue{}: {}",
+                                device.empty() ? "" : fmt::format(" matching '{}'", device), e.what()));
+    }
+    return *contexts->emplace(device, std::move(g)).first->second;
+}
+#endif
+
 // An array whose elements do not overlap one another: sorted by stride, each dimension's
 // stride must step past everything the smaller ones span (as_strided's (4, 4, 1) or
 // (0, 0, 1) would have several output pixels share bytes, and their writes would race).
@@ -248,7 +283,7 @@ bool selfOverlapping(const py::array& a) {
 
 py::object runAa(const py::handle& imageArg, const py::handle& methodArg, const py::handle& presetArg,
                  const py::handle& threadsArg_, const py::handle& filteringArg, const py::handle& outArg,
-                 const py::kwargs& kwargs) {
+                 const py::handle& backendArg, const py::handle& deviceArg, const py::kwargs& kwargs) {
     const py::array image = arrayArg(imageArg, "image");
     const std::string method = strArg(methodArg, "method");
     const std::optional<std::string> preset = optionalStrArg(presetArg, "preset");
@@ -256,6 +291,18 @@ py::object runAa(const py::handle& imageArg, const py::handle& methodArg, const 
     const std::string filtering = strArg(filteringArg, "filtering");
     const std::optional<py::array> out =
         outArg.is_none() ? std::nullopt : std::optional<py::array>(arrayArg(outArg, "out"));
+    const std::string backend = strArg(backendArg, "backend");
+    if (backend != "cpu" && backend != "vulkan")
+        throw Error(fmt::format("backend: '{}' is not cpu or vulkan", backend));
+    const std::optional<std::string> device = optionalStrArg(deviceArg, "device");
+    if (device && backend != "vulkan") throw Error("device: goes with backend='vulkan'");
+    // The vulkan backend's own choices, as the CLI's -p sampling=... and -p edges=....
+    std::string sampling = "model", edges = "auto";
+    for (const char* name : {"sampling", "edges"})
+        if (kwargs.contains(name)) {
+            if (backend != "vulkan") throw Error(fmt::format("{}: a choice of backend='vulkan'", name));
+            (std::string_view(name) == "sampling" ? sampling : edges) = strArg(kwargs[name], name);
+        }
     const MethodInfo& m = methodById(method);
     MethodSettings s;
     if (preset) {
@@ -268,7 +315,7 @@ py::object runAa(const py::handle& imageArg, const py::handle& methodArg, const 
         s.filtering = Filtering::Exact;
     else if (filtering != "gpu")
         throw Error(fmt::format("filtering: '{}' is not gpu or exact", filtering));
-    s.params = paramList(m.params, method, kwargs);
+    s.params = paramList(m.params, method, kwargs, {"sampling", "edges"});
     const Exec exec{threads};
     RgbaInput in = rgbaInput(image, "image");
     const int scale = m.inputScale;
@@ -291,6 +338,24 @@ py::object runAa(const py::handle& imageArg, const py::handle& methodArg, const 
             throw Error("out: must not overlap the image (not even be the image: give a new array)");
     } else {
         result = newImageArray(ow, oh, in.channels);
+    }
+    if (backend == "vulkan") {
+#ifdef SSFX_HAVE_GPU
+        const gpu::Sampling mode = gpu::parseSampling(sampling);
+        const gpu::EdgePath path = gpu::parseEdgePath(edges);
+        GpuContext& g = gpuContext(device.value_or(""));
+        ImageRgba8 tmp;
+        {
+            py::gil_scoped_release release;
+            std::lock_guard lock(g.mutex);
+            gpu::AaPass pass(g.ctx, method, s, mode, path);
+            tmp = pass.run(in.view);
+        }
+        copyInto(tmp.view(), result);
+        return result;
+#else
+        throw Error("backend: this ssfx was built without the GPU backend (SSFX_BUILD_GPU=OFF); use backend='cpu'");
+#endif
     }
     if (in.channels == 4 && viewable(result)) {
         ImageView<Rgba8> dst(static_cast<Rgba8*>(result.mutable_data()), ow, oh, result.strides(0) / 4);
@@ -484,7 +549,11 @@ std::string methodsDoc() {
         "image: (H, W, 4) or (H, W, 3) uint8 (3 channels: alpha 255 is added, 3 are returned); any strides.\n"
         "method: one of the ids below; preset: low, medium (default), high, ultra, extreme (threshold methods);\n"
         "threads: 0 = all (the bytes do not depend on it); filtering: 'gpu' (default) or 'exact';\n"
-        "out: an array of the output's shape to write into; **params: the method's parameters.\n\nMethods:\n";
+        "out: an array of the output's shape to write into; **params: the method's parameters.\n"
+        "backend: 'cpu' (default) or 'vulkan' (the Vulkan compute pass, on one context per process made when first\n"
+        "needed: the CPU's bytes with sampling='model', the default; sampling='hardware': the device's filtering\n"
+        "and arithmetic; edges='list'|'one-pass': the edge methods' path, default 'auto'); device: with 'vulkan',\n"
+        "a device index or part of its name, as the CLI's --device (default: a GPU, else lavapipe).\n\nMethods:\n";
     for (const MethodInfo& m : methods()) {
         s += fmt::format("  {}: {}\n", m.id, m.summary);
         for (const ParamInfo& p : m.params)
@@ -499,7 +568,8 @@ PYBIND11_MODULE(_ssfx, m) {
     m.doc() = "ssfx: screen-space rendering effects on numpy arrays (docs/python.md)";
     py::register_exception<Error>(m, "Error", PyExc_ValueError);
     m.def("aa", &runAa, py::arg("image"), py::arg("method") = "ddaa2", py::arg("preset") = py::none(),
-          py::arg("threads") = 0, py::arg("filtering") = "gpu", py::arg("out") = py::none(), methodsDoc().c_str());
+          py::arg("threads") = 0, py::arg("filtering") = "gpu", py::arg("out") = py::none(), py::arg("backend") = "cpu",
+          py::arg("device") = py::none(), methodsDoc().c_str());
     m.def(
         "resample",
         [](const py::handle& image, const py::handle& factorArg, const py::handle& threads) {
