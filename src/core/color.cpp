@@ -94,17 +94,29 @@ ImageF lumaPlane(ImageView<const Rgba8> in, const Exec& exec) {
     return L;
 }
 
-std::uint8_t encodeSrgb8(float v) {
-    // t[k]: the linear value whose encoding is (k + 0.5) / 255, where the nearest level
-    // changes from k to k + 1. A float v is never exactly on one (they are not floats).
-    static const std::array<double, 255> t = [] {
-        std::array<double, 255> a{};
-        for (int k = 0; k < 255; ++k) a[std::size_t(k)] = srgbToLinear((k + 0.5) / 255.0);
+const std::array<float, 255>& srgbEncodeThresholds() {
+    // t = srgbToLinear((k + 0.5) / 255) in double, where the nearest level changes from k to
+    // k + 1. It is never a float, so the float v reaches level k + 1 exactly when v >= the
+    // smallest float above t: that float is kept.
+    static const std::array<float, 255> thresholds = [] {
+        std::array<float, 255> a{};
+        for (int k = 0; k < 255; ++k) {
+            const double t = srgbToLinear((k + 0.5) / 255.0);
+            float f = static_cast<float>(t);
+            if (double(f) <= t) f = std::nextafter(f, 2.0f);
+            a[std::size_t(k)] = f;
+        }
         return a;
     }();
+    return thresholds;
+}
+
+std::uint8_t encodeSrgb8(float v) {
+    const std::array<float, 255>& t = srgbEncodeThresholds();
     if (!(v > 0.0f)) return 0;  // and NaN
     if (v >= 1.0f) return 255;
-    return static_cast<std::uint8_t>(std::upper_bound(t.begin(), t.end(), double(v)) - t.begin());
+    // The number of thresholds at or below v.
+    return static_cast<std::uint8_t>(std::upper_bound(t.begin(), t.end(), v) - t.begin());
 }
 
 }  // namespace ssfx

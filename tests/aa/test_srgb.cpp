@@ -3,6 +3,7 @@
 // thresholds on the decoded values' luma.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 
 #include "ssfx/aa/registry.hpp"
@@ -68,6 +69,21 @@ TEST(SrgbTransfer, EncodeInvertsDecodeAndRoundsToNearest) {
         ++compared;
     }
     EXPECT_GT(compared, 199000);
+}
+
+// The float thresholds the GPU passes' exact encode searches (srgbEncodeThresholds):
+// element k is the smallest float above the double half-level t_k = decode((k + 0.5) / 255),
+// so the float just below it encodes to k and the threshold itself to k + 1.
+TEST(SrgbTransfer, EncodeThresholdsAreTheFirstFloatsAboveTheHalfLevels) {
+    const std::array<float, 255>& t = srgbEncodeThresholds();
+    for (int k = 0; k < 255; ++k) {
+        const double half = srgbToLinear((k + 0.5) / 255.0);
+        const float f = t[std::size_t(k)];
+        EXPECT_GT(double(f), half) << k;
+        EXPECT_LE(double(std::nextafter(f, 0.0f)), half) << k;
+        EXPECT_EQ(encodeSrgb8(f), k + 1) << k;
+        EXPECT_EQ(encodeSrgb8(std::nextafter(f, 0.0f)), k) << k;
+    }
 }
 
 TEST(SrgbTexture, FiltersDecodedTexels) {

@@ -50,6 +50,10 @@ inline double linearToSrgb(double l) { return l <= 0.0031308 ? 12.92 * l : 1.055
 //! that rounding changes (decoded half-levels, in double), so no pow() rounding can move a
 //! result. encodeSrgb8(kSrgb8[k]) == k for every k.
 std::uint8_t encodeSrgb8(float v);
+//! encodeSrgb8's thresholds as floats: element k is the smallest float above the linear
+//! value of the half-level (k + 0.5) / 255, so encodeSrgb8(v) is the number of elements <= v
+//! for v in [0, 1) (the GPU passes' exact encode reads them: src/gpu/shaders/aa/ppaa.glsl).
+const std::array<float, 255>& srgbEncodeThresholds();
 
 //! A filtered channel back to its texture's 8-bit encoding (toUnorm8 or encodeSrgb8).
 inline std::uint8_t encode8(float v, TextureFormat format) {
