@@ -25,9 +25,41 @@ struct BenchOptions {
     std::string image, json;
     std::vector<std::string> methods;
     int reps = 40, warmup = 3, threads = 0, width = 1920;  // synthetic image: width x (width * 9 / 16)
-    std::vector<std::string> params;                       // -p sampling=... (vulkan)
+    std::vector<std::string> params;                       // -p sampling=... (vulkan), texture=...
+    std::string texture = "unorm";                         // unorm, srgb or both
     BackendOptions backend;
 };
+
+// -p texture=unorm|srgb|both: the methods' texture parameter for every method that has one
+// (all but noaa); both times each such method twice in the same rounds, the sRGB row named
+// ID:srgb (so that the ratio of the two is from one run).
+void takeTextureParam(std::vector<std::string>& params, std::string& texture) {
+    std::vector<std::string> rest;
+    for (const auto& p : params)
+        if (p.rfind("texture=", 0) == 0) {
+            texture = p.substr(8);
+            if (texture != "unorm" && texture != "srgb" && texture != "both")
+                throw Error(fmt::format("bench: texture '{}': expected unorm, srgb or both", texture));
+        } else {
+            rest.push_back(p);
+        }
+    params = std::move(rest);
+}
+
+// The timed rows in order (blur first unless listed), and the baseline row's name.
+std::vector<eval::MethodVariant> variantsOf(std::vector<std::string> ids, const std::string& texture,
+                                            std::string* baseline) {
+    if (std::find(ids.begin(), ids.end(), "blur") == ids.end()) ids.insert(ids.begin(), "blur");
+    std::vector<eval::MethodVariant> v;
+    MethodSettings srgb;
+    srgb.params = {{"texture", 1}};
+    for (const auto& id : ids) {
+        if (texture != "srgb" || id == "noaa") v.push_back({id, id, {}});
+        if (texture != "unorm" && id != "noaa") v.push_back({id, id + ":srgb", srgb});
+    }
+    *baseline = texture == "srgb" ? "blur:srgb" : "blur";
+    return v;
+}
 
 // A method's GPU profile over the timed rounds: each dispatch's median time, in dispatch
 // order, and the median share of pixels its classify dispatch listed (-1: no list).
@@ -54,33 +86,32 @@ MethodProfile profileOf(const std::vector<DispatchProfile>& rounds) {
 // The GPU protocol: the same interleaved rounds, each repetition one submit of one method,
 // its time from the GPU timestamps around the pass's dispatches; each repetition's
 // per-dispatch times and listed share go to `profiles` (one per method, in ids' order).
-std::vector<eval::TimingResult> timeOnBackend(std::vector<std::string>& ids,
-                                              const std::function<ImageRgba8(int)>& input, const BenchOptions& o,
-                                              const Exec& exec, std::string* device, bool* deviceDecode,
-                                              const std::function<void(int, int)>& rounds,
+std::vector<eval::TimingResult> timeOnBackend(const std::vector<eval::MethodVariant>& variants,
+                                              const std::string& baseline, const std::function<ImageRgba8(int)>& input,
+                                              const BenchOptions& o, const Exec& exec, std::string* device,
+                                              bool* deviceDecode, const std::function<void(int, int)>& rounds,
                                               std::vector<MethodProfile>* profiles) {
-    if (std::find(ids.begin(), ids.end(), "blur") == ids.end()) ids.insert(ids.begin(), "blur");
     std::vector<ImageRgba8> inputs(5);
     std::vector<eval::TimedMethod> timed;
     std::vector<Applier> appliers;
-    appliers.reserve(ids.size());
-    std::vector<std::vector<DispatchProfile>> perRound(ids.size());
-    for (const auto& id : ids) {
-        const MethodInfo& m = methodById(id);
+    appliers.reserve(variants.size());
+    std::vector<std::vector<DispatchProfile>> perRound(variants.size());
+    for (const auto& v : variants) {
+        const MethodInfo& m = methodById(v.id);
         if (inputs[std::size_t(m.inputScale)].width() == 0) inputs[std::size_t(m.inputScale)] = input(m.inputScale);
-        appliers.push_back(makeApplier(o.backend, m, {}, exec));
+        appliers.push_back(makeApplier(o.backend, m, v.settings, exec));
         *device = appliers.back().device;
         *deviceDecode = *deviceDecode || appliers.back().deviceDecode;
         const Applier* a = &appliers.back();
         const ImageRgba8* in = &inputs[std::size_t(m.inputScale)];
         auto* mine = &perRound[appliers.size() - 1];
-        timed.push_back({id, [a, in] { (void)a->apply(in->view()); },
+        timed.push_back({v.name, [a, in] { (void)a->apply(in->view()); },
                          [a, mine] {
                              mine->push_back(a->lastProfile());  // (called for the timed rounds only)
                              return a->lastGpuMs();
                          }});
     }
-    auto results = eval::timeInterleaved(timed, o.reps, o.warmup, "blur", rounds);
+    auto results = eval::timeInterleaved(timed, o.reps, o.warmup, baseline, rounds);
     for (const auto& r : perRound) profiles->push_back(profileOf(r));
     return results;
 }
@@ -97,11 +128,16 @@ std::string profileTable(const std::vector<eval::TimingResult>& results, const s
                 break;
             }
     std::string t = "\nper dispatch (median ms of the timed rounds; edge share: pixels the classify dispatch listed)\n";
-    t += fmt::format("{:<8}", "method");
+    const std::size_t nameWidth =
+        std::max_element(results.begin(), results.end(),
+                         [](const auto& a, const auto& b) { return a.id.size() < b.id.size(); })
+            ->id.size() +
+        1;
+    t += fmt::format("{:<{}}", "method", std::max<std::size_t>(nameWidth, 8));
     for (const auto& c : columns) t += fmt::format(" {:>9}", c);
     t += fmt::format(" {:>11}\n", "edge share");
     for (std::size_t i = 0; i < results.size() && i < profiles.size(); ++i) {
-        t += fmt::format("{:<8}", results[i].id);
+        t += fmt::format("{:<{}}", results[i].id, std::max<std::size_t>(nameWidth, 8));
         for (const auto& c : columns) {
             const auto& st = profiles[i].stages;
             const auto it = std::find_if(st.begin(), st.end(), [&](const auto& s) { return s.first == c; });
@@ -117,9 +153,12 @@ void run(BenchOptions o) {
     const Exec exec{o.threads};
     checkBackendOptions(o.backend);
     takeSamplingParam(o.params, o.backend);
+    takeTextureParam(o.params, o.texture);
     if (!o.params.empty())
-        throw Error(fmt::format("bench: -p takes sampling=model|hardware and edges=auto|list|one-pass only ('{}')",
-                                o.params[0]));
+        throw Error(
+            fmt::format("bench: -p takes texture=unorm|srgb|both, and with --backend vulkan "
+                        "sampling=model|hardware and edges=auto|list|one-pass, only ('{}')",
+                        o.params[0]));
     const bool gpu = o.backend.backend == "vulkan";
     // Inputs at scale 1, 2 and 4 (the resolves take the supersampled render).
     const std::string source = o.image.empty() ? "synthetic" : o.image;
@@ -140,13 +179,17 @@ void run(BenchOptions o) {
     std::string device;
     bool deviceDecode = false;
     std::vector<MethodProfile> profiles;
-    const auto results = gpu ? timeOnBackend(ids, scaled, o, exec, &device, &deviceDecode, rounds, &profiles)
-                             : eval::timeMethodsOn(ids, scaled, o.reps, o.warmup, exec, rounds);
+    std::string baseline;
+    const std::vector<eval::MethodVariant> variants = variantsOf(ids, o.texture, &baseline);
+    const auto results =
+        gpu ? timeOnBackend(variants, baseline, scaled, o, exec, &device, &deviceDecode, rounds, &profiles)
+            : eval::timeVariantsOn(variants, scaled, o.reps, o.warmup, exec, baseline, rounds);
     line.end();
     const eval::MachineInfo mi = eval::machineInfo(resolvedThreads(exec));
-    std::string table =
-        fmt::format("image: {} ({}x{}); {} repetitions, methods interleaved, fastest and slowest quarter dropped\n",
-                    source, first.width(), first.height(), o.reps);
+    std::string table = fmt::format(
+        "image: {} ({}x{}); {} repetitions, methods interleaved, fastest and slowest quarter dropped; "
+        "texture={}\n",
+        source, first.width(), first.height(), o.reps, o.texture);
     if (gpu)
         table += fmt::format(
             "backend: vulkan on {}, sampling={}{}, edges={}; times from GPU timestamps around each pass\n\n", device,
@@ -156,9 +199,12 @@ void run(BenchOptions o) {
     else
         table += fmt::format("machine: {}, {} threads used of {}, SIMD target {}\n\n", mi.cpu, mi.threads,
                              mi.hardwareThreads, mi.simdTarget);
-    table += fmt::format("{:<8} {:>10} {:>12} {:>14}\n", "method", "median ms", "trimmed ms", "% of blur");
+    const std::size_t nameWidth = o.texture == "unorm" ? 8 : 13;
+    table += fmt::format("{:<{}} {:>10} {:>12} {:>16}\n", "method", nameWidth, "median ms", "trimmed ms",
+                         fmt::format("% of {}", baseline));
     for (const auto& r : results)
-        table += fmt::format("{:<8} {:>10.3f} {:>12.3f} {:>14.0f}\n", r.id, r.medianMs, r.trimmedMeanMs, r.relative);
+        table += fmt::format("{:<{}} {:>10.3f} {:>12.3f} {:>16.0f}\n", r.id, nameWidth, r.medianMs, r.trimmedMeanMs,
+                             r.relative);
     if (gpu) table += profileTable(results, profiles);
     if (o.json != "-") printResult(table);
 
@@ -176,10 +222,11 @@ void run(BenchOptions o) {
             j["device_decode"] = deviceDecode;
         }
         j["image"] = {{"path", source}, {"width", first.width()}, {"height", first.height()}};
+        j["texture"] = o.texture;
         j["protocol"] = {{"repetitions", o.reps},
                          {"warmup", o.warmup},
-                         {"baseline", "blur"},
-                         {"relative", "trimmed mean (middle half) / blur's trimmed mean * 100"}};
+                         {"baseline", baseline},
+                         {"relative", "trimmed mean (middle half) / the baseline's trimmed mean * 100"}};
         for (std::size_t i = 0; i < results.size(); ++i) {
             const auto& r = results[i];
             j["methods"][r.id] = {
@@ -214,8 +261,8 @@ void addBenchCommand(CLI::App& app) {
         ->check(CLI::Range(16, 16384));
     cmd->add_option(
         "-p,--param", opts->params,
-        "With --backend vulkan: sampling=model (default) or sampling=hardware; edges=auto (default), list or "
-        "one-pass");
+        "texture=unorm (default), srgb or both (each method also as ID:srgb, in the same rounds); with --backend "
+        "vulkan: sampling=model (default) or sampling=hardware; edges=auto (default), list or one-pass");
     addBackendOptions(cmd, opts->backend);
     cmd->footer(
         "CPU: wall-clock time of each method call. --backend vulkan: GPU timestamps around each pass's\n"

@@ -17,22 +17,32 @@ std::vector<TimingResult> timeMethodsOn(std::vector<std::string>& ids,
                                         const std::function<ImageRgba8(int scale)>& input, int repetitions, int warmup,
                                         const Exec& exec, const std::function<void(int, int)>& rounds) {
     if (std::find(ids.begin(), ids.end(), "blur") == ids.end()) ids.push_back("blur");  // the baseline
-    ImageRgba8 inputs[3];                                                               // x1, x2, x4
+    std::vector<MethodVariant> variants;
+    for (const auto& id : ids) variants.push_back({id, id, {}});
+    return timeVariantsOn(variants, input, repetitions, warmup, exec, "blur", rounds);
+}
+
+std::vector<TimingResult> timeVariantsOn(const std::vector<MethodVariant>& variants,
+                                         const std::function<ImageRgba8(int scale)>& input, int repetitions, int warmup,
+                                         const Exec& exec, const std::string& baseline,
+                                         const std::function<void(int, int)>& rounds) {
+    ImageRgba8 inputs[3];  // x1, x2, x4
     inputs[0] = input(1);
     std::vector<TimedMethod> timed;
-    // One output buffer per method, allocated once (the steady state of a frame loop).
+    // One output buffer per variant, allocated once (the steady state of a frame loop).
     std::vector<ImageRgba8> outputs;
-    outputs.reserve(ids.size());
-    static const MethodSettings settings;
-    for (const auto& id : ids) {
-        const MethodInfo* m = &methodById(id);
+    outputs.reserve(variants.size());
+    for (const auto& v : variants) {
+        const MethodInfo* m = &methodById(v.id);
         const int slot = m->inputScale == 4 ? 2 : m->inputScale == 2 ? 1 : 0;
         if (inputs[slot].empty()) inputs[slot] = input(m->inputScale);
         const ImageRgba8& in = inputs[slot];
         ImageRgba8& out = outputs.emplace_back(inputs[0].width(), inputs[0].height());
-        timed.push_back({id, [m, &in, &out, exec] { m->runInto(in.view(), out.view(), settings, exec); }, {}});
+        const MethodSettings* settings = &v.settings;
+        timed.push_back(
+            {v.name, [m, &in, &out, settings, exec] { m->runInto(in.view(), out.view(), *settings, exec); }, {}});
     }
-    return timeInterleaved(timed, repetitions, warmup, "blur", rounds);
+    return timeInterleaved(timed, repetitions, warmup, baseline, rounds);
 }
 
 SpeedTable measureSpeed(const std::string& dir, const SpeedOptions& o) {

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "ssfx/aa/registry.hpp"
 #include "ssfx/core/image.hpp"
 #include "ssfx/core/parallel.hpp"
 #include "ssfx/core/progress.hpp"
@@ -40,6 +41,17 @@ SpeedTable measureSpeed(const std::string& dir, const SpeedOptions& options);
 std::vector<TimingResult> timeMethodsOn(std::vector<std::string>& ids,
                                         const std::function<ImageRgba8(int scale)>& input, int repetitions, int warmup,
                                         const Exec& exec, const std::function<void(int, int)>& rounds = {});
+
+//! One timed row: a method under its settings, reported as `name` (e.g. "ddaa2:srgb").
+struct MethodVariant {
+    std::string id, name;
+    MethodSettings settings;
+};
+//! timeMethodsOn for variants, with `baseline` (a variant's name) as 100.
+std::vector<TimingResult> timeVariantsOn(const std::vector<MethodVariant>& variants,
+                                         const std::function<ImageRgba8(int scale)>& input, int repetitions, int warmup,
+                                         const Exec& exec, const std::string& baseline,
+                                         const std::function<void(int, int)>& rounds = {});
 
 //! Markdown: relative table (blur = 100) and median table (ms), image rows plus a mean row.
 std::string speedMarkdown(const SpeedTable& t);
