@@ -43,6 +43,17 @@ def test_model_gives_the_cpu_bytes(method):
 
 
 @needs_device
+@pytest.mark.parametrize("method", ["blur", "fxaa3c", "ddaa2", "ssaax2"])
+def test_srgb_textures_give_the_cpu_bytes(method):
+    # texture="srgb" (issue #34 item 4): an R8G8B8A8_SRGB view, decoded and encoded exactly.
+    scale = 2 if method == "ssaax2" else 1
+    img = random_image(24 * scale, 40 * scale, 11)
+    cpu = ssfx.aa(img, method, texture="srgb")
+    assert not np.array_equal(cpu, ssfx.aa(img, method)), method  # the texture must matter
+    assert np.array_equal(ssfx.aa(img, method, texture="srgb", backend="vulkan"), cpu), method
+
+
+@needs_device
 def test_the_same_bytes_as_the_cli(tmp_path):
     img = random_image(30, 50, 5)
     src, dst = tmp_path / "in.png", tmp_path / "out.png"

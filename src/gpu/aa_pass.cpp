@@ -14,6 +14,7 @@
 
 #include "src/gpu/shaders/aa/aa_constants.h"
 #include "ssfx/aa/ddaa.hpp"
+#include "ssfx/core/color.hpp"
 #include "ssfx/core/error.hpp"
 #include "ssfx/core/sample.hpp"
 #include "ssfx/vk/compute.hpp"
@@ -52,11 +53,6 @@ struct Overloaded : F... {
 template <class... F>
 Overloaded(F...) -> Overloaded<F...>;
 
-void requireUnorm(TextureFormat t, std::string_view method) {
-    if (t != TextureFormat::Unorm)
-        throw Error(fmt::format("{}: texture=srgb is not available on the vulkan backend (use --backend cpu)", method));
-}
-
 void thresholds(AaConstants& c, float edgeThresholdMin, float edgeThreshold, float chromaWeight) {
     c.edgeThresholdMin = edgeThresholdMin;
     c.edgeThreshold = edgeThreshold;
@@ -73,8 +69,7 @@ void ddaa1Constants(AaConstants& c, const aa::Ddaa1Params& p) {
 }  // namespace
 
 // The one place where a method's CPU params become its shader constants.
-AaConstants aaConstants(std::string_view method, const AaParams& params, int width, int height, int outWidth,
-                        int outHeight) {
+AaConstants aaConstants(const AaParams& params, int width, int height, int outWidth, int outHeight) {
     AaConstants c{};
     c.width = width, c.height = height, c.outWidth = outWidth, c.outHeight = outHeight;
     c.fw = float(width), c.fh = float(height);
@@ -82,44 +77,49 @@ AaConstants aaConstants(std::string_view method, const AaParams& params, int wid
     std::visit(Overloaded{
                    [](const std::monostate&) {},
                    [&](const aa::BlurParams& p) {
-                       requireUnorm(p.texture, method);
                        const aa::BlurWeights w = aa::blurWeights(p);  // the CPU's weights
                        c.blurW1 = w.w1, c.blurW2 = w.w2, c.blurNorm = w.norm;
                    },
                    [&](const aa::Fxaa3cParams& p) {
-                       requireUnorm(p.texture, method);
                        thresholds(c, p.edgeThresholdMin, p.edgeThreshold, p.chromaWeight);
                        c.edgeSharpness = p.edgeSharpness;
                        c.diagonalU = p.diagonalOffset * c.invW;  // as fxaa3c.cpp: du, dv
                        c.diagonalV = p.diagonalOffset * c.invH;
                    },
                    [&](const aa::Fxaa3dParams& p) {
-                       requireUnorm(p.texture, method);
                        thresholds(c, p.edgeThresholdMin, p.edgeThreshold, p.chromaWeight);
                        c.subpix = p.subpix;
                        c.paperSearchQuirk = p.paperSearchQuirk ? 1 : 0;
                    },
-                   [&](const aa::Ddaa1Params& p) {
-                       requireUnorm(p.texture, method);
-                       ddaa1Constants(c, p);
-                   },
+                   [&](const aa::Ddaa1Params& p) { ddaa1Constants(c, p); },
                    [&](const aa::Ddaa2Params& p) {
-                       requireUnorm(p.texture, method);
                        ddaa1Constants(c, p);
                        c.searchRounds = p.searchRounds;
                    },
-                   [&](const aa::Ssaax2Params& p) { requireUnorm(p.texture, method); },
-                   [&](const aa::MitchellParams& p) { requireUnorm(p.texture, method); },
+                   [&](const aa::Ssaax2Params&) {},
+                   [&](const aa::MitchellParams&) {},
                },
                params);
     return c;
 }
 
+TextureFormat textureOf(const AaParams& params) {
+    return std::visit(
+        [](const auto& p) {
+            if constexpr (requires { p.texture; })
+                return p.texture;
+            else
+                return TextureFormat::Unorm;
+        },
+        params);
+}
+
 // The choices that select shader code, from the same params (and the sampling mode).
-AaSpecialization aaSpecialization(std::string_view method, const AaParams& params, Sampling sampling) {
-    const AaConstants c = aaConstants(method, params, 8, 8, 8, 8);  // (its checks, and chromaWeight)
+AaSpecialization aaSpecialization(const AaParams& params, Sampling sampling) {
+    const AaConstants c = aaConstants(params, 8, 8, 8, 8);  // (its checks, and chromaWeight)
     AaSpecialization s{};
     s.sampling = sampling == Sampling::Hardware ? 1 : 0;
+    s.srgb = textureOf(params) == TextureFormat::Srgb ? 1 : 0;
     s.chroma = c.chromaWeight != 0.0f ? 1 : 0;
     if (const auto* p = std::get_if<aa::Fxaa3cParams>(&params)) s.diagonalsAtCentres = p->diagonalOffset == 1.0f;
     return s;
@@ -206,17 +206,67 @@ const std::uint32_t kDecodeProbe[] = {
 #include "shaders/decode_probe.comp.inc"
 };
 
-// Whether the device's unorm decode of an 8-bit texel channel is v / 255 rounded to float32
-// (kUnorm8, the model's level) for every v, in both input formats, fetched as the passes
-// fetch. It is a function of 256 inputs, so checking each one decides it: where it holds,
-// the model takes a fetched value as the texel's level (spec deviceDecode) instead of
-// rounding it back to the byte and computing the level (ppaa.glsl's texelDecoded). Probed
-// once per device and driver. SSFX_GPU_DEVICE_DECODE=0 turns it off, for the test of the
-// computed path and for measurements.
-bool unormDecodeIsExact(vkx::Context& c, const vk::raii::Sampler& sampler) {
-    if (const char* v = std::getenv("SSFX_GPU_DEVICE_DECODE"); v && std::string_view(v) == "0") return false;
+// Texel i of the probe image holds (i, 255 - i, i + 85 mod 256, 255) in memory order: each
+// channel takes every value.
+std::uint8_t probeByte(int texel, int memoryChannel) {
+    const int v[3] = {texel, 255 - texel, (texel + 85) & 255};
+    return std::uint8_t(v[memoryChannel]);
+}
+
+// The device's decode of every 8-bit value in `format`, fetched as the passes fetch
+// (decode_probe.comp): per texel its R, G, B as floats, and the sRGB levels the passes
+// recover from them (srgb.glsl).
+struct DecodeProbe {
+    float decoded[256 * 3];
+    float levels[256 * 3];
+};
+DecodeProbe probeDecode(vkx::Context& c, const vk::raii::Sampler& sampler, vk::Format f) {
+    using S = vk::PipelineStageFlagBits;
+    using A = vk::AccessFlagBits;
+    using L = vk::ImageLayout;
+    std::uint8_t bytes[256 * 4];
+    for (int i = 0; i < 256; ++i) {
+        for (int k = 0; k < 3; ++k) bytes[4 * i + k] = probeByte(i, k);
+        bytes[4 * i + 3] = 255;
+    }
+    const vkx::ComputePipeline probe(
+        c, kDecodeProbe, {{vk::DescriptorType::eCombinedImageSampler}, {vk::DescriptorType::eStorageBuffer}}, 0,
+        nullptr, true);
+    const vkx::Buffer upload = c.uploadBuffer(bytes, sizeof bytes, vk::BufferUsageFlagBits::eTransferSrc);
+    const vkx::Buffer out = c.createBuffer(sizeof(DecodeProbe), vk::BufferUsageFlagBits::eStorageBuffer, true);
+    const vkx::Image image =
+        c.createImage(f, 256, 1, vk::ImageUsageFlagBits::eSampled | vk::ImageUsageFlagBits::eTransferDst,
+                      vk::ImageAspectFlagBits::eColor);
+    const vk::raii::ImageView view(c.device, vk::ImageViewCreateInfo({}, *image.image, vk::ImageViewType::e2D, f, {},
+                                                                     {vk::ImageAspectFlagBits::eColor, 0, 1, 0, 1}));
+    c.submit([&](const vk::raii::CommandBuffer& cmd) {
+        vkx::transition(cmd, image, L::eUndefined, L::eTransferDstOptimal, S::eTopOfPipe, {}, S::eTransfer,
+                        A::eTransferWrite);
+        cmd.copyBufferToImage(
+            *upload.buffer, *image.image, L::eTransferDstOptimal,
+            vk::BufferImageCopy(0, 0, 0, {vk::ImageAspectFlagBits::eColor, 0, 0, 1}, {0, 0, 0}, {256, 1, 1}));
+        vkx::transition(cmd, image, L::eTransferDstOptimal, L::eShaderReadOnlyOptimal, S::eTransfer, A::eTransferWrite,
+                        S::eComputeShader, A::eShaderRead);
+        const vk::DescriptorImageInfo imageInfo(*sampler, *view, L::eShaderReadOnlyOptimal);
+        const vk::DescriptorBufferInfo outInfo(*out.buffer, 0, VK_WHOLE_SIZE);
+        const vk::WriteDescriptorSet writes[] = {
+            {{}, 0, 0, vk::DescriptorType::eCombinedImageSampler, imageInfo},
+            {{}, 1, 0, vk::DescriptorType::eStorageBuffer, {}, outInfo},
+        };
+        probe.dispatchPushed(cmd, writes, nullptr, 4);
+        const vk::MemoryBarrier toHost(A::eShaderWrite, A::eHostRead);
+        cmd.pipelineBarrier(S::eComputeShader, S::eHost, {}, toHost, {}, {});
+    });
+    DecodeProbe result;
+    std::memcpy(&result, out.mapped, sizeof result);
+    return result;
+}
+
+// A device property decided by the probes, once per device and driver (and property).
+template <class Check>
+bool probedOnce(vkx::Context& c, std::string_view property, Check check) {
     const vk::PhysicalDeviceProperties props = c.physical.getProperties();
-    const std::string key = fmt::format("{}:{}:{}:{}", props.vendorID, props.deviceID, props.driverVersion,
+    const std::string key = fmt::format("{}:{}:{}:{}:{}", property, props.vendorID, props.deviceID, props.driverVersion,
                                         std::string_view(props.deviceName));
     static std::mutex mutex;
     static std::map<std::string, bool> known;
@@ -224,60 +274,52 @@ bool unormDecodeIsExact(vkx::Context& c, const vk::raii::Sampler& sampler) {
         std::lock_guard lock(mutex);
         if (const auto it = known.find(key); it != known.end()) return it->second;
     }
-    using S = vk::PipelineStageFlagBits;
-    using A = vk::AccessFlagBits;
-    using L = vk::ImageLayout;
-    // Texel i holds (i, 255 - i, i + 85 mod 256, 255) in memory order: each channel takes every value.
-    std::uint8_t bytes[256 * 4];
-    for (int i = 0; i < 256; ++i) {
-        bytes[4 * i] = std::uint8_t(i);
-        bytes[4 * i + 1] = std::uint8_t(255 - i);
-        bytes[4 * i + 2] = std::uint8_t((i + 85) & 255);
-        bytes[4 * i + 3] = 255;
-    }
-    const vkx::ComputePipeline probe(
-        c, kDecodeProbe, {{vk::DescriptorType::eCombinedImageSampler}, {vk::DescriptorType::eStorageBuffer}}, 0,
-        nullptr, true);
-    const vkx::Buffer upload = c.uploadBuffer(bytes, sizeof bytes, vk::BufferUsageFlagBits::eTransferSrc);
-    const vkx::Buffer out = c.createBuffer(256 * 3 * sizeof(float), vk::BufferUsageFlagBits::eStorageBuffer, true);
-    bool exact = true;
-    for (const vk::Format f : {vk::Format::eR8G8B8A8Unorm, vk::Format::eB8G8R8A8Unorm}) {
-        const vkx::Image image =
-            c.createImage(f, 256, 1, vk::ImageUsageFlagBits::eSampled | vk::ImageUsageFlagBits::eTransferDst,
-                          vk::ImageAspectFlagBits::eColor);
-        const vk::raii::ImageView view(c.device,
-                                       vk::ImageViewCreateInfo({}, *image.image, vk::ImageViewType::e2D, f, {},
-                                                               {vk::ImageAspectFlagBits::eColor, 0, 1, 0, 1}));
-        c.submit([&](const vk::raii::CommandBuffer& cmd) {
-            vkx::transition(cmd, image, L::eUndefined, L::eTransferDstOptimal, S::eTopOfPipe, {}, S::eTransfer,
-                            A::eTransferWrite);
-            cmd.copyBufferToImage(
-                *upload.buffer, *image.image, L::eTransferDstOptimal,
-                vk::BufferImageCopy(0, 0, 0, {vk::ImageAspectFlagBits::eColor, 0, 0, 1}, {0, 0, 0}, {256, 1, 1}));
-            vkx::transition(cmd, image, L::eTransferDstOptimal, L::eShaderReadOnlyOptimal, S::eTransfer,
-                            A::eTransferWrite, S::eComputeShader, A::eShaderRead);
-            const vk::DescriptorImageInfo imageInfo(*sampler, *view, L::eShaderReadOnlyOptimal);
-            const vk::DescriptorBufferInfo outInfo(*out.buffer, 0, VK_WHOLE_SIZE);
-            const vk::WriteDescriptorSet writes[] = {
-                {{}, 0, 0, vk::DescriptorType::eCombinedImageSampler, imageInfo},
-                {{}, 1, 0, vk::DescriptorType::eStorageBuffer, {}, outInfo},
-            };
-            probe.dispatchPushed(cmd, writes, nullptr, 4);
-            const vk::MemoryBarrier toHost(A::eShaderWrite, A::eHostRead);
-            cmd.pipelineBarrier(S::eComputeShader, S::eHost, {}, toHost, {}, {});
-        });
-        const auto* decoded = static_cast<const float*>(out.mapped);
-        const bool bgra = f == vk::Format::eB8G8R8A8Unorm;
-        for (int i = 0; i < 256 && exact; ++i)
-            for (int k = 0; k < 3; ++k) {
-                const std::uint8_t v = bytes[4 * i + (bgra ? 2 - k : k)];  // channel k's byte in memory
-                exact = exact &&
-                        std::bit_cast<std::uint32_t>(decoded[3 * i + k]) == std::bit_cast<std::uint32_t>(kUnorm8[v]);
-            }
-    }
+    const bool holds = check();
     std::lock_guard lock(mutex);
-    known[key] = exact;
-    return exact;
+    known[key] = holds;
+    return holds;
+}
+
+// For each texel of the probe, whether channel k's value passes `ok(probed value, the byte)`.
+template <class Ok>
+bool everyChannel(const float* values, vk::Format f, Ok ok) {
+    const bool bgra = f == vk::Format::eB8G8R8A8Unorm || f == vk::Format::eB8G8R8A8Srgb;
+    for (int i = 0; i < 256; ++i)
+        for (int k = 0; k < 3; ++k)
+            if (!ok(values[3 * i + k], probeByte(i, bgra ? 2 - k : k))) return false;  // channel k's byte in memory
+    return true;
+}
+
+// Whether the device's unorm decode of an 8-bit texel channel is v / 255 rounded to float32
+// (kUnorm8, the model's level) for every v, in both input formats. It is a function of 256
+// inputs, so checking each one decides it: where it holds, the model takes a fetched value as
+// the texel's level (spec deviceDecode) instead of rounding it back to the byte and computing
+// the level (ppaa.glsl's texelDecoded). SSFX_GPU_DEVICE_DECODE=0 turns it off, for the test
+// of the computed path and for measurements.
+bool unormDecodeIsExact(vkx::Context& c, const vk::raii::Sampler& sampler) {
+    if (const char* v = std::getenv("SSFX_GPU_DEVICE_DECODE"); v && std::string_view(v) == "0") return false;
+    return probedOnce(c, "unorm decode", [&] {
+        for (const vk::Format f : {vk::Format::eR8G8B8A8Unorm, vk::Format::eB8G8R8A8Unorm})
+            if (!everyChannel(probeDecode(c, sampler, f).decoded, f, [](float value, std::uint8_t byte) {
+                    return std::bit_cast<std::uint32_t>(value) == std::bit_cast<std::uint32_t>(kUnorm8[byte]);
+                }))
+                return false;
+        return true;
+    });
+}
+
+// texture=srgb: whether the passes recover every texel's byte from the device's decode
+// through an sRGB view (srgb.glsl's srgbLevelsDevice, in both sRGB formats). The model needs
+// the bytes (devices' sRGB decodes are approximate: it decodes them with the CPU's table);
+// Vulkan lets a device's decode err by far less than the half level this needs.
+bool srgbBytesRecovered(vkx::Context& c, const vk::raii::Sampler& sampler) {
+    return probedOnce(c, "srgb bytes", [&] {
+        for (const vk::Format f : {vk::Format::eR8G8B8A8Srgb, vk::Format::eB8G8R8A8Srgb})
+            if (!everyChannel(probeDecode(c, sampler, f).levels, f,
+                              [](float level, std::uint8_t byte) { return level == float(byte); }))
+                return false;
+        return true;
+    });
 }
 
 const std::vector<vkx::BindingSpec> kBindings{
@@ -309,7 +351,14 @@ bool hasEdgePass(std::string_view id) {
 
 constexpr vk::Format kOutputFormat = vk::Format::eR8G8B8A8Unorm;
 
-bool inputFormatOk(vk::Format f) { return f == vk::Format::eR8G8B8A8Unorm || f == vk::Format::eB8G8R8A8Unorm; }
+// The input views record() takes: unorm for texture=unorm, sRGB for texture=srgb (the format
+// says how the texels are read, as on the CPU).
+bool inputFormatOk(vk::Format f, bool srgb) {
+    if (srgb) return f == vk::Format::eR8G8B8A8Srgb || f == vk::Format::eB8G8R8A8Srgb;
+    return f == vk::Format::eR8G8B8A8Unorm || f == vk::Format::eB8G8R8A8Unorm;
+}
+// run()'s input image, and ddaa2p's scratch image's sampled view.
+vk::Format inputFormat(bool srgb) { return srgb ? vk::Format::eR8G8B8A8Srgb : vk::Format::eR8G8B8A8Unorm; }
 
 std::uint32_t groups(std::uint32_t n) { return vkx::groupCount(n, SSFX_AA_GROUP); }
 
@@ -350,6 +399,7 @@ struct AaPass::Impl {
     Sampling sampling = Sampling::Model;
     EdgePath edgePath = EdgePath::List;  // resolved: List or OnePass
     bool deviceDecode = false;           // model: the probe found the device's unorm decode exact
+    bool srgb = false;                   // texture=srgb: sRGB input views (spec srgb)
     vk::raii::Sampler sampler{nullptr};
     vkx::Buffer tables;
     std::unique_ptr<vkx::ComputePipeline> pipeline, resolve;  // resolve: ddaa2p's ssaax2
@@ -375,7 +425,9 @@ struct AaPass::Impl {
     std::unique_ptr<vkx::ComputePipeline> onePass, onePassPairs;  // coordinate reads; ddaa2's pair reads
     detail::AaSpecialization spec{};
     vkx::Image scratch;  // ddaa2p: ddaa2's 2x output
-    vk::raii::ImageView scratchView{nullptr};
+    // Its storage view (unorm), and the view the resolve samples: the same for texture=unorm,
+    // an sRGB view of the same bytes for texture=srgb (the image's format is then mutable).
+    vk::raii::ImageView scratchView{nullptr}, scratchSampled{nullptr};
     std::unique_ptr<vkx::GpuTimer> timer;
     double lastMs = 0;
     // run()'s profile: while `profiling`, each dispatch is bracketed by timer interval
@@ -548,13 +600,13 @@ struct AaPass::Impl {
         r->w = w, r->h = h, r->ow = ow, r->oh = oh;
         r->upload = ctx->createBuffer(vk::DeviceSize(w) * h * 4, vk::BufferUsageFlagBits::eTransferSrc, true);
         r->download = ctx->createBuffer(vk::DeviceSize(ow) * oh * 4, vk::BufferUsageFlagBits::eTransferDst, true);
-        r->in = ctx->createImage(kOutputFormat, w, h, RunImages::kInUsage, vk::ImageAspectFlagBits::eColor);
+        r->in = ctx->createImage(inputFormat(srgb), w, h, RunImages::kInUsage, vk::ImageAspectFlagBits::eColor);
         r->res = ctx->createImage(kOutputFormat, ow, oh, RunImages::kResUsage, vk::ImageAspectFlagBits::eColor);
         // 2-D views (createImage makes sampled images' views 2-D arrays).
         const vk::ImageSubresourceRange range(vk::ImageAspectFlagBits::eColor, 0, 1, 0, 1);
         auto view2d = [&](const vkx::Image& img) {
             return vk::raii::ImageView(
-                ctx->device, vk::ImageViewCreateInfo({}, *img.image, vk::ImageViewType::e2D, kOutputFormat, {}, range));
+                ctx->device, vk::ImageViewCreateInfo({}, *img.image, vk::ImageViewType::e2D, img.format, {}, range));
         };
         r->inView = view2d(r->in);
         r->resView = view2d(r->res);
@@ -566,11 +618,16 @@ struct AaPass::Impl {
         if (*scratch.image && scratch.width == w && scratch.height == h) return;
         scratch =
             ctx->createImage(kOutputFormat, w, h, vk::ImageUsageFlagBits::eStorage | vk::ImageUsageFlagBits::eSampled,
-                             vk::ImageAspectFlagBits::eColor);
+                             vk::ImageAspectFlagBits::eColor, 1, 1,
+                             srgb ? vk::ImageCreateFlagBits::eMutableFormat : vk::ImageCreateFlags{});
+        const vk::ImageSubresourceRange range(vk::ImageAspectFlagBits::eColor, 0, 1, 0, 1);
         scratchView = vk::raii::ImageView(
-            ctx->device,
-            vk::ImageViewCreateInfo({}, *scratch.image, vk::ImageViewType::e2D, kOutputFormat, {},
-                                    vk::ImageSubresourceRange(vk::ImageAspectFlagBits::eColor, 0, 1, 0, 1)));
+            ctx->device, vk::ImageViewCreateInfo({}, *scratch.image, vk::ImageViewType::e2D, kOutputFormat, {}, range));
+        // (An sRGB format cannot be a storage image: the sRGB view is for sampling only.)
+        const vk::ImageViewUsageCreateInfo sampledOnly(vk::ImageUsageFlagBits::eSampled);
+        scratchSampled = vk::raii::ImageView(
+            ctx->device, vk::ImageViewCreateInfo({}, *scratch.image, vk::ImageViewType::e2D, inputFormat(srgb), {},
+                                                 range, srgb ? &sampledOnly : nullptr));
     }
 };
 
@@ -590,7 +647,7 @@ AaPass::AaPass(std::shared_ptr<vkx::Context> ctx, std::string_view method, const
     m.params = resolveParams(m.method->id, settings);
     m.sampling = sampling;
     // Validates the params now (the constants' checks).
-    detail::AaSpecialization spec = detail::aaSpecialization(m.method->id, m.params, sampling);
+    detail::AaSpecialization spec = detail::aaSpecialization(m.params, sampling);
     vkx::Context& c = *m.ctx;
     const bool cpuDevice = c.physical.getProperties().deviceType == vk::PhysicalDeviceType::eCpu;
     if (std::holds_alternative<aa::Ddaa2Params>(m.params)) {
@@ -606,15 +663,25 @@ AaPass::AaPass(std::shared_ptr<vkx::Context> ctx, std::string_view method, const
             vk::SamplerCreateInfo({}, vk::Filter::eLinear, vk::Filter::eLinear, vk::SamplerMipmapMode::eNearest,
                                   vk::SamplerAddressMode::eClampToEdge, vk::SamplerAddressMode::eClampToEdge,
                                   vk::SamplerAddressMode::eClampToEdge));
-        m.deviceDecode = sampling == Sampling::Model && unormDecodeIsExact(c, m.sampler);
+        m.srgb = spec.srgb != 0;
+        if (m.srgb && !srgbBytesRecovered(c, m.sampler))
+            throw Error(
+                fmt::format("{}: texture=srgb: this device's sRGB decode does not give the texels' bytes "
+                            "back (gpu.md, \"sRGB textures\"); use --backend cpu",
+                            m.method->id));
+        m.deviceDecode = sampling == Sampling::Model && !m.srgb && unormDecodeIsExact(c, m.sampler);
         spec.deviceDecode = m.deviceDecode ? 1 : 0;
-        // The tables: the x4 resolve's weights, the CPU's own floats.
+        // The tables: the x4 resolve's weights, the CPU's own floats; texture=srgb's decoded
+        // levels and encode thresholds.
         std::vector<float> t;
         aa::MitchellParams mp;
         if (const auto* p = std::get_if<aa::MitchellParams>(&m.params)) mp = *p;
         // Tap d of the x4 resolve, from output centre f = 2 (any pixel gives the same t = d + 0.5).
         for (int d = -8; d <= 7; ++d) t.push_back(aa::mitchell((float(2 + d) + 0.5f - 2.0f) / 4.0f, mp.B, mp.C));
         static_assert(SSFX_AA_MITCHELL4_COUNT == 16);
+        static_assert(SSFX_AA_SRGB_LEVELS == kSrgb8.size() && SSFX_AA_SRGB_THRESHOLDS == 255);
+        t.insert(t.end(), kSrgb8.begin(), kSrgb8.end());
+        t.insert(t.end(), srgbEncodeThresholds().begin(), srgbEncodeThresholds().end());
         m.tables = c.uploadBuffer(t.data(), t.size() * sizeof(float), vk::BufferUsageFlagBits::eStorageBuffer);
         detail::AaSpecialization first = spec;
         if (hasEdgePass(m.method->id)) {
@@ -654,9 +721,11 @@ AaPass::AaPass(std::shared_ptr<vkx::Context> ctx, std::string_view method, const
             lumaSpec.stage = SSFX_AA_STAGE_LUMA;
             m.lumaPass = makePipeline(c, shaderFor(m.method->id, sampling), lumaSpec);
         }
+        aa::Ssaax2Params resolveParams;  // ddaa2p's resolve reads ddaa2's output in the pass's format
+        resolveParams.texture = detail::textureOf(m.params);
         if (m.method->id == "ddaa2p")
-            m.resolve = makePipeline(c, shaderFor("ssaax2", sampling),
-                                     detail::aaSpecialization("ssaax2", aa::Ssaax2Params{}, sampling));
+            m.resolve =
+                makePipeline(c, shaderFor("ssaax2", sampling), detail::aaSpecialization(resolveParams, sampling));
         m.timer = std::make_unique<vkx::GpuTimer>(c, 1 + Impl::kMaxDispatches);
         m.countReadback = c.createBuffer(16, vk::BufferUsageFlagBits::eTransferDst, true);
     });
@@ -677,11 +746,13 @@ void AaPass::record(const vk::raii::CommandBuffer& cmd, const ImageRef& input, c
     const std::string_view id = m.method->id;
     const std::uint32_t scale = std::uint32_t(m.method->inputScale);
     if (!input.view || !output.view) throw Error(fmt::format("{}: record() without an input or output view", id));
-    if (!inputFormatOk(input.format))
-        throw Error(
-            fmt::format("{}: input format {} (expected R8G8B8A8_UNORM or B8G8R8A8_UNORM; sRGB views would "
-                        "decode the texels, which the methods filter as stored)",
-                        id, vk::to_string(input.format)));
+    if (!inputFormatOk(input.format, m.srgb))
+        throw Error(m.srgb ? fmt::format("{}: input format {} (texture=srgb: expected R8G8B8A8_SRGB or B8G8R8A8_SRGB, "
+                                         "the view that decodes the texels)",
+                                         id, vk::to_string(input.format))
+                           : fmt::format("{}: input format {} (expected R8G8B8A8_UNORM or B8G8R8A8_UNORM; sRGB "
+                                         "views are for texture=srgb, which decodes the texels)",
+                                         id, vk::to_string(input.format)));
     if (!(input.usage & vk::ImageUsageFlagBits::eSampled))
         throw Error(fmt::format("{}: the input image needs SAMPLED usage", id));
     if (input.layout != vk::ImageLayout::eShaderReadOnlyOptimal && input.layout != vk::ImageLayout::eGeneral)
@@ -713,20 +784,18 @@ void AaPass::record(const vk::raii::CommandBuffer& cmd, const ImageRef& input, c
             // (Also orders this recording's writes after an earlier recording's reads.)
             cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eComputeShader,
                                 {}, {}, {}, toGeneral);
-            m.dispatchMethod(cmd, input.view, input.layout, *m.scratchView,
-                             detail::aaConstants("ddaa2", m.params, w, h, w, h));
+            m.dispatchMethod(cmd, input.view, input.layout, *m.scratchView, detail::aaConstants(m.params, w, h, w, h));
             const vk::ImageMemoryBarrier written(
                 vk::AccessFlagBits::eShaderWrite, vk::AccessFlagBits::eShaderRead, vk::ImageLayout::eGeneral,
                 vk::ImageLayout::eGeneral, VK_QUEUE_FAMILY_IGNORED, VK_QUEUE_FAMILY_IGNORED, *m.scratch.image, range);
             cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eComputeShader,
                                 {}, {}, {}, written);
-            m.dispatch(*m.resolve, cmd, *m.scratchView, vk::ImageLayout::eGeneral, output.view,
-                       detail::aaConstants("ssaax2", aa::Ssaax2Params{}, w, h, w / 2, h / 2), {}, Impl::Grid::Pixels,
-                       "resolve");
+            m.dispatch(*m.resolve, cmd, *m.scratchSampled, vk::ImageLayout::eGeneral, output.view,
+                       detail::aaConstants(aa::Ssaax2Params{}, w, h, w / 2, h / 2), {}, Impl::Grid::Pixels, "resolve");
             return;
         }
         m.dispatchMethod(cmd, input.view, input.layout, output.view,
-                         detail::aaConstants(id, m.params, w, h, w / int(scale), h / int(scale)));
+                         detail::aaConstants(m.params, w, h, w / int(scale), h / int(scale)));
     });
 }
 
@@ -770,7 +839,7 @@ ImageRgba8 AaPass::run(ImageView<const Rgba8> input) {
                 Impl& m;
                 ~NotProfiling() { m.profiling = false; }
             } notProfiling{m};
-            record(cmd, ImageRef{*r.inView, kOutputFormat, Impl::RunImages::kInUsage, w, h, L::eShaderReadOnlyOptimal},
+            record(cmd, ImageRef{*r.inView, r.in.format, Impl::RunImages::kInUsage, w, h, L::eShaderReadOnlyOptimal},
                    ImageRef{*r.resView, kOutputFormat, Impl::RunImages::kResUsage, ow, oh, L::eGeneral});
             m.timer->end(cmd, 0, S::eComputeShader);
             if (m.listedOf > 0) {  // the list's pixel count (header word 3), for lastEdgeShare()

@@ -330,7 +330,8 @@ Buffer Context::uploadBuffer(const void* bytes, vk::DeviceSize size, vk::BufferU
 }
 
 Image Context::createImage(vk::Format format, std::uint32_t width, std::uint32_t height, vk::ImageUsageFlags usage,
-                           vk::ImageAspectFlags aspect, std::uint32_t layers, std::uint32_t levels) {
+                           vk::ImageAspectFlags aspect, std::uint32_t layers, std::uint32_t levels,
+                           vk::ImageCreateFlags flags) {
     Image img;
     img.format = format;
     img.aspect = aspect;
@@ -339,7 +340,7 @@ Image Context::createImage(vk::Format format, std::uint32_t width, std::uint32_t
     img.layers = layers;
     img.levels = levels;
     img.image = vk::raii::Image(
-        device, vk::ImageCreateInfo({}, vk::ImageType::e2D, format, vk::Extent3D(width, height, 1), levels, layers,
+        device, vk::ImageCreateInfo(flags, vk::ImageType::e2D, format, vk::Extent3D(width, height, 1), levels, layers,
                                     vk::SampleCountFlagBits::e1, vk::ImageTiling::eOptimal, usage));
     const auto req = img.image.getMemoryRequirements();
     img.memory = vk::raii::DeviceMemory(

@@ -145,6 +145,16 @@ assert j["image"]["width"] == 64 and j["image"]["height"] == 36
 assert j["methods"]["blur"]["relative"] == 100
 assert j["methods"]["ddaa2"]["median_ms"] > 0
 PY
+# -p texture=both (issue #34 item 4): each method also as ID:srgb in the same rounds; noaa has no texture.
+check bench_srgb 0 "$SSFX" bench --size 64 --reps 4 --warmup 0 --methods noaa,ddaa2 -p texture=both --json "$OUT/bench_srgb.json"
+python3 - "$OUT/bench_srgb.json" <<'PY' || { echo "FAIL bench_srgb: rows"; fail=1; }
+import json, sys
+j = json.load(open(sys.argv[1]))
+assert j["texture"] == "both" and j["protocol"]["baseline"] == "blur", j
+assert sorted(j["methods"]) == ["blur", "blur:srgb", "ddaa2", "ddaa2:srgb", "noaa"], sorted(j["methods"])
+PY
+check bench_texture_bad 2 "$SSFX" bench --size 64 --reps 4 -p texture=linear
+contains bench_texture_bad "$OUT/bench_texture_bad.err" "expected unorm, srgb or both"
 
 # Bad inputs: exit 2, a message naming the problem, and no output file.
 check missing 2 "$SSFX" aa -m ddaa2 "$OUT/nope.png" -o "$OUT/missing.png"
@@ -314,8 +324,11 @@ if "$SSFX" --help 2>/dev/null | grep -qE '^ +render '; then
     done
     check aa_sampling_cpu 2 "$SSFX" aa -m ddaa2 -p sampling=hardware "$OUT/scene/scene.png" -o "$OUT/x.png"
     contains aa_sampling_cpu "$OUT/aa_sampling_cpu.err" "vulkan backend"
-    check aa_vulkan_srgb 2 $VK "$SSFX" aa -m ddaa2 --backend vulkan -p texture=srgb "$OUT/scene/scene.png" -o "$OUT/x.png"
-    contains aa_vulkan_srgb "$OUT/aa_vulkan_srgb.err" "texture=srgb"
+    # sRGB textures on the GPU (issue #34 item 4): the model gives the cpu's texture=srgb bytes.
+    check aa_cpu_srgb 0 "$SSFX" aa -m ddaa2 -p texture=srgb "$OUT/scene/scene.png" -o "$OUT/ddaa2_srgb.png" --preset high
+    check aa_vulkan_srgb 0 $VK "$SSFX" aa -m ddaa2 --backend vulkan -p texture=srgb "$OUT/scene/scene.png" -o "$OUT/ddaa2_srgb_vk.png" --preset high
+    cmp -s "$OUT/ddaa2_srgb.png" "$OUT/ddaa2_srgb_vk.png" || { echo "FAIL aa_vulkan_srgb: not the cpu's bytes"; fail=1; }
+    cmp -s "$OUT/ddaa2_srgb.png" "$OUT/ddaa2_vk.png" && { echo "FAIL aa_vulkan_srgb: texture=srgb changed nothing"; fail=1; }
     check aa_vulkan_nodevice 2 $VK "$SSFX" aa -m ddaa2 --backend vulkan --device no-such-gpu "$OUT/scene/scene.png" -o "$OUT/x.png"
     contains aa_vulkan_nodevice "$OUT/aa_vulkan_nodevice.err" "no Vulkan device 'no-such-gpu'"
     check aa_vulkan_noicd 2 env VK_ICD_FILENAMES=/nonexistent.json $VK "$SSFX" aa -m ddaa2 --backend vulkan "$OUT/scene/scene.png" -o "$OUT/x.png"

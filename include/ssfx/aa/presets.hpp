@@ -40,7 +40,8 @@ inline constexpr std::string_view kChromaWeightDoc =
 inline constexpr std::string_view kTextureDoc =
     "the input texture's format: unorm (rgba8unorm, the paper's) or srgb (rgba8unorm_srgb: every read decoded to "
     "linear light, filtered, the result encoded back with round-to-nearest; luma thresholds apply to the decoded "
-    "values' luma). srgb runs the scalar kernel";
+    "values' luma). On the CPU srgb runs the scalar kernel; on the vulkan backend it reads an sRGB view "
+    "(docs/gpu.md)";
 
 inline constexpr EdgeThresholds thresholdsFor(Preset p) {
     for (const auto& i : kPresets)

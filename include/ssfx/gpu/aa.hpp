@@ -8,10 +8,11 @@
 //     pass.record(cmd, input, output);                   // in the caller's frame
 //
 // The contract of record():
-//  - input: a 2-D image view of format R8G8B8A8_UNORM or B8G8R8A8_UNORM (not sRGB: the
-//    methods filter the stored values, spec ppaa.md section 1) with SAMPLED usage, in
-//    layout SHADER_READ_ONLY_OPTIMAL or GENERAL, its writes made visible to compute-shader
-//    reads by the caller;
+//  - input: a 2-D image view with SAMPLED usage, in layout SHADER_READ_ONLY_OPTIMAL or
+//    GENERAL, its writes made visible to compute-shader reads by the caller, of format
+//    R8G8B8A8_UNORM or B8G8R8A8_UNORM for texture=unorm (the default: the methods filter the
+//    stored values, spec ppaa.md section 1), R8G8B8A8_SRGB or B8G8R8A8_SRGB for
+//    texture=srgb (filtered in linear light; the output holds the sRGB-encoded bytes);
 //  - output: a 2-D image view of format R8G8B8A8_UNORM with STORAGE usage, in layout
 //    GENERAL, of the output size (the input's, divided by the method's input scale:
 //    2 for ssaax2 and ddaa2p, 4 for ssaax4); the pass writes every pixel; the caller's
@@ -75,8 +76,9 @@ class AaPass {
 public:
     //! `method`: an id of the aa registry (methods()); `settings` as for the CPU (preset,
     //! -p overrides; filtering must be the default Filtering::Gpu, whose GPU form is
-    //! Sampling::Model). Throws ssfx::Error for an unknown method, a bad parameter, or a
-    //! setting the GPU passes do not support (texture=srgb).
+    //! Sampling::Model). Throws ssfx::Error for an unknown method, a bad parameter, exact
+    //! filtering, or texture=srgb on a device whose sRGB decode does not give the texels'
+    //! bytes back (a probe when the pass is made; docs/gpu.md, "sRGB textures").
     AaPass(std::shared_ptr<vkx::Context> ctx, std::string_view method, const MethodSettings& settings = {},
            Sampling sampling = Sampling::Model, EdgePath edges = EdgePath::Auto);
     ~AaPass();

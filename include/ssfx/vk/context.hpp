@@ -78,7 +78,8 @@ public:
     Buffer uploadBuffer(const void* bytes, vk::DeviceSize size, vk::BufferUsageFlags usage);
     //! A 2-D (array) image with its view: e2DArray when layered or sampled, else e2D.
     Image createImage(vk::Format format, std::uint32_t width, std::uint32_t height, vk::ImageUsageFlags usage,
-                      vk::ImageAspectFlags aspect, std::uint32_t layers = 1, std::uint32_t levels = 1);
+                      vk::ImageAspectFlags aspect, std::uint32_t layers = 1, std::uint32_t levels = 1,
+                      vk::ImageCreateFlags flags = {});
     //! One-shot submission: records with `record`, submits, and waits for completion.
     void submit(const std::function<void(const vk::raii::CommandBuffer&)>& record);
     //! Submits an already recorded command buffer and waits for completion.

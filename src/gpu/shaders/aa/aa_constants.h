@@ -50,7 +50,8 @@
     X(6, edgeGroups, SSFX_AA_EDGE_MAX_GROUPS) /* edge pass: at most this many groups (aa_pass.cpp) */    \
     X(7, pairReads, 0)     /* ddaa2's edge pass, model: search reads by texel index (aa_pass.cpp) */     \
     X(8, batchedSearch, 0) /* ddaa2: a round's reads issued before they are tested (aa_pass.cpp) */      \
-    X(9, deviceDecode, 0)  /* model: the device's unorm decode is exact (aa_pass.cpp's probe) */
+    X(9, deviceDecode, 0)  /* model: the device's unorm decode is exact (aa_pass.cpp's probe) */         \
+    X(10, srgb, 0)         /* texture=srgb: an sRGB view, decoded, filtered in linear, encoded back */
 
 // The three dispatches of the methods with an edge test (fxaa3c, fxaa3d, ddaa1, ddaa2;
 // edge_list.glsl): the first writes the luma plane and copies every pixel to the output; the
@@ -103,5 +104,9 @@ SSFX_AA_SPECIALIZATION(SSFX_AA_SPEC_DECL)
 // indices that are the same for every invocation; the model's levels k / 4080 are computed,
 // exact.glsl's levelOver4080, as a per-pixel table lookup is slow on SIMD CPU drivers).
 #define SSFX_AA_MITCHELL4_COUNT 16
+// Then texture=srgb's tables: the 256 decoded levels (the CPU's kSrgb8) and the 255 encode
+// thresholds (ssfx::srgbEncodeThresholds), read by the model only.
+#define SSFX_AA_SRGB_LEVELS 256
+#define SSFX_AA_SRGB_THRESHOLDS 255
 
 #endif

@@ -20,7 +20,8 @@ layout(set = 0, binding = SSFX_AA_BINDING_EDGES, std430) buffer EdgeList {
     uint groupsX, groupsY, groupsZ;  // the edge pass's VkDispatchIndirectCommand
     uint count;                      // edge pixels listed
     uint pixels[];                   // x | y << 16
-} edges;
+}
+edges;
 
 // Stage 0's list of the work group's edge pixels (x | y << 16) and their count.
 shared uint groupEdges[SSFX_AA_GROUP * SSFX_AA_GROUP];
@@ -78,7 +79,7 @@ void main() {
             const int x = min(x0 + i, pc.width - 1);  // past the last column: the padding
             const vec4 raw = texelRaw(x, y);
             l[i] = edgeLuma(texelDecoded(raw));
-            if (x0 + i < pc.width) imageStore(dst, ivec2(x, y), raw);
+            if (x0 + i < pc.width) copyTexel(ivec2(x, y), raw);
         }
         imageStore(lumaPlane, ivec2(q, y), vec4(l[0], l[1], l[2], l[3]));
         return;
@@ -88,8 +89,8 @@ void main() {
         bool edge[SSFX_AA_LUMA_PACK];
         for (int i = 0; i < SSFX_AA_LUMA_PACK; ++i) {
             // Luma3x3 names: S is the row above, N the row below.
-            const Luma3x3 n = Luma3x3(row.l[i + 1], row.l[i], row.l[i + 2], above.l[i + 1], below.l[i + 1],
-                                      above.l[i], below.l[i], above.l[i + 2], below.l[i + 2]);
+            const Luma3x3 n = Luma3x3(row.l[i + 1], row.l[i], row.l[i + 2], above.l[i + 1], below.l[i + 1], above.l[i],
+                                      below.l[i], above.l[i + 2], below.l[i + 2]);
             edge[i] = x0 + i < pc.width && edgeAt(x0 + i, y, n);
         }
         appendEdges(x0, y, edge);
@@ -109,7 +110,7 @@ void main() {
         if (edgeAt(p.x, p.y, neighbourhood(p.x, p.y)))
             groupEdges[atomicAdd(groupEdgeCount, 1u)] = uint(p.x) | (uint(p.y) << 16u);
         else
-            store(p, texelValue(p.x, p.y), alphaAt(p.x, p.y));
+            copyTexel(p, texelRaw(p.x, p.y));
     }
     barrier();
     const uint listed = groupEdgeCount, size = gl_WorkGroupSize.x * gl_WorkGroupSize.y;

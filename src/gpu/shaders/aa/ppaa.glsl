@@ -33,12 +33,14 @@ layout(set = 0, binding = SSFX_AA_BINDING_INPUT) uniform sampler2D src;
 layout(set = 0, binding = SSFX_AA_BINDING_OUTPUT, rgba8) uniform writeonly image2D dst;
 layout(set = 0, binding = SSFX_AA_BINDING_TABLES, std430) readonly buffer Tables {
     float mitchell4[SSFX_AA_MITCHELL4_COUNT];
-} tables;
-layout(push_constant, std430) uniform Push {
-    AaConstants pc;
-};
+    float srgbLevels[SSFX_AA_SRGB_LEVELS];          // texture=srgb: the CPU's kSrgb8
+    float srgbThresholds[SSFX_AA_SRGB_THRESHOLDS];  // texture=srgb: srgbEncodeThresholds()
+}
+tables;
+layout(push_constant, std430) uniform Push { AaConstants pc; };
 
 #include "../common/exact.glsl"  // shared by every family of passes
+#include "srgb.glsl"
 
 // a / b and sqrt(x): correctly rounded in the model (exact.glsl), the device's own in the
 // hardware mode (Vulkan: 2.5 ulp for division, square root as 1 / inversesqrt).
@@ -65,19 +67,29 @@ float unormLevel(uint v) { return levelOver4080(16u * v); }
 
 // Texel (x, y) as fetched, clamped to the image (clamp-to-edge addressing). (Every fetch
 // goes through here, so a compiler can merge two fetches of one texel.)
-vec4 texelRaw(int x, int y) {
-    return texelFetch(src, ivec2(clamp(x, 0, pc.width - 1), clamp(y, 0, pc.height - 1)), 0);
+vec4 texelRaw(int x, int y) { return texelFetch(src, ivec2(clamp(x, 0, pc.width - 1), clamp(y, 0, pc.height - 1)), 0); }
+// A fetched texel's 8-bit values: from the unorm value, or, through an sRGB view
+// (spec_srgb), recovered from the device's decode (srgb.glsl; the pass checked that this
+// gives every byte back on this device).
+uvec3 texelBytes(vec4 raw) {
+    if (spec_srgb != 0) return srgbLevelsDevice(raw.rgb);
+    return uvec3(round(raw.rgb * 255.0));
 }
 // The 8-bit texel (x, y).
-uvec3 texel8(int x, int y) { return uvec3(round(texelRaw(x, y).rgb * 255.0)); }
-// A fetched texel's value: v / 255 rounded to float32 (the CPU's table). The device's decode
-// in the hardware mode; in the model too where the pass found it to be exactly that for all
-// 256 values (spec_deviceDecode, aa_pass.cpp's probe: a function of 256 inputs, checked on
-// every one); else computed from the byte.
+uvec3 texel8(int x, int y) { return texelBytes(texelRaw(x, y)); }
+// texture=srgb: the decoded level of an 8-bit value, the CPU's kSrgb8 (IEC 61966-2-1 in
+// double, rounded to float).
+vec3 srgbDecoded(uvec3 t) { return vec3(tables.srgbLevels[t.r], tables.srgbLevels[t.g], tables.srgbLevels[t.b]); }
+// A fetched texel's value: v / 255 rounded to float32 (the CPU's table), or with
+// texture=srgb its decoded level. The device's decode in the hardware mode; in the model too
+// where the pass found it to be exactly that for all 256 unorm values (spec_deviceDecode,
+// aa_pass.cpp's probe: a function of 256 inputs, checked on every one); else computed from
+// the byte (an sRGB view's from the CPU's table: devices' sRGB decodes are not exact).
 vec3 texelDecoded(vec4 raw) {
 #ifdef SSFX_DEVICE_ARITHMETIC
     return raw.rgb;
 #else
+    if (spec_srgb != 0) return srgbDecoded(texelBytes(raw));
     if (spec_deviceDecode != 0) return raw.rgb;
     const uvec3 t = uvec3(round(raw.rgb * 255.0));
     return vec3(unormLevel(t.r), unormLevel(t.g), unormLevel(t.b));
@@ -114,12 +126,21 @@ AxisPos axisV(float v) { return axisPos(v, pc.fh, pc.height); }
 
 // The GPU-model bilinear read at split coordinates plus integer texel offsets: exact
 // integer weights in 1/65536, the sum rounded half up to 1/16 of a level (spec section 1).
+// texture=srgb: the same weights on the decoded texels, summed in float32 in the CPU's
+// order (ssfx::Texture::sampleGpuDecoded; no 1/16-level grid).
 vec3 sampleModel(AxisPos ax, AxisPos ay, int ox, int oy) {
     const int x0 = ax.index + ox, y0 = ay.index + oy;
     const uvec3 t00 = texel8(x0, y0), t10 = texel8(x0 + 1, y0);
     const uvec3 t01 = texel8(x0, y0 + 1), t11 = texel8(x0 + 1, y0 + 1);
     const uint w00 = uint((256 - ax.w) * (256 - ay.w)), w10 = uint(ax.w * (256 - ay.w));
     const uint w01 = uint((256 - ax.w) * ay.w), w11 = uint(ax.w * ay.w);
+    if (spec_srgb != 0) {
+        const float unit = 1.0 / 65536.0;  // the weights are exact multiples of it
+        EXACT vec3 sum = ((srgbDecoded(t00) * (float(w00) * unit) + srgbDecoded(t10) * (float(w10) * unit)) +
+                          srgbDecoded(t01) * (float(w01) * unit)) +
+                         srgbDecoded(t11) * (float(w11) * unit);
+        return sum;
+    }
     const uvec3 sum = w00 * t00 + w10 * t10 + w01 * t01 + w11 * t11;
     const uvec3 k = (sum + 2048u) >> 12u;
     return vec3(sixteenthLevel(k.r), sixteenthLevel(k.g), sixteenthLevel(k.b));
@@ -128,7 +149,13 @@ vec3 sampleModel(AxisPos ax, AxisPos ay, int ox, int oy) {
 // The GPU-model read half-way between texels a and b (weights 128 and 0 or 256): the sum
 // of sampleModel is 32768 (a + b), so k = 8 (a + b). Texels clamped like every fetch. The
 // CPU's pair planes hold these values (src/aa/luma_planes.hpp).
+// texture=srgb: 0.5 a + 0.5 b of the decoded texels (sampleModel's sum, whose other two
+// products are zero).
 vec3 pairRead(ivec2 a, ivec2 b) {
+    if (spec_srgb != 0) {
+        EXACT vec3 half_ = srgbDecoded(texel8(a.x, a.y)) * 0.5 + srgbDecoded(texel8(b.x, b.y)) * 0.5;
+        return half_;
+    }
     const uvec3 k = 8u * (texel8(a.x, a.y) + texel8(b.x, b.y));
     return vec3(sixteenthLevel(k.r), sixteenthLevel(k.g), sixteenthLevel(k.b));
 }
@@ -205,9 +232,38 @@ float lumaAt(int x, int y) {
 float lumaAt(int x, int y) { return edgeLuma(fetchValue(x, y)); }
 #endif
 
+// texture=srgb's exact encode (the CPU's encodeSrgb8): the number of thresholds <= v, by
+// binary search over the 255 (upper bound).
+uint encodeSrgbExact(float v) {
+    if (!(v > 0.0)) return 0u;  // and NaN
+    if (v >= 1.0) return 255u;
+    uint first = 0u, count = uint(SSFX_AA_SRGB_THRESHOLDS);
+    while (count > 0u) {
+        const uint half_ = count / 2u;
+        if (tables.srgbThresholds[first + half_] <= v) {
+            first += half_ + 1u;
+            count -= half_ + 1u;
+        } else {
+            count = half_;
+        }
+    }
+    return first;
+}
+
 // The output pixel: the colour quantised exactly (model) or by the device (hardware), alpha
-// from `alpha` (an 8-bit value).
+// from `alpha` (an 8-bit value). texture=srgb: encoded back to sRGB levels (the output is a
+// unorm image holding the sRGB bytes, as the CPU's output).
 void store(ivec2 p, vec3 c, uint alpha) {
+    if (spec_srgb != 0) {
+        uvec3 b;
+        if (spec_sampling != 0) {
+            b = srgbLevelsDevice(c);
+        } else {
+            b = uvec3(encodeSrgbExact(c.r), encodeSrgbExact(c.g), encodeSrgbExact(c.b));
+        }
+        imageStore(dst, p, vec4(vec3(b), float(alpha)) / 255.0);
+        return;
+    }
     if (spec_sampling != 0) {
         imageStore(dst, p, vec4(clamp(c, 0.0, 1.0), float(alpha) / 255.0));
         return;
@@ -215,10 +271,16 @@ void store(ivec2 p, vec3 c, uint alpha) {
     const uvec3 b = uvec3(toUnorm8(c.r), toUnorm8(c.g), toUnorm8(c.b));
     imageStore(dst, p, vec4(vec3(b), float(alpha)) / 255.0);
 }
-// The input pixel unchanged.
-void storeInput(ivec2 p) {
-    imageStore(dst, p, texelFetch(src, p, 0));
+// A fetched texel stored at p unchanged: its bytes (an sRGB view's recovered, srgb.glsl).
+void copyTexel(ivec2 p, vec4 raw) {
+    if (spec_srgb != 0) {
+        imageStore(dst, p, vec4(vec3(texelBytes(raw)), round(raw.a * 255.0)) / 255.0);
+        return;
+    }
+    imageStore(dst, p, raw);
 }
+// The input pixel unchanged.
+void storeInput(ivec2 p) { copyTexel(p, texelFetch(src, p, 0)); }
 uint alphaAt(int x, int y) { return uint(round(texelRaw(x, y).a * 255.0)); }
 
 // ---- the 3x3 luma neighbourhood, early exit, edge sides (src/aa/ppaa_common.hpp) -----------
@@ -266,10 +328,10 @@ struct EdgeSides {
     float g1, g2;  // luma1 - C, luma2 - C
 };
 EdgeSides edgeSides(Luma3x3 n) {
-    EXACT float edgeH = abs(-2.0 * n.W + (n.SW + n.NW)) + abs(-2.0 * n.C + (n.S + n.N)) * 2.0 +
-                          abs(-2.0 * n.E + (n.SE + n.NE));
-    EXACT float edgeV = abs(-2.0 * n.N + (n.NE + n.NW)) + abs(-2.0 * n.C + (n.W + n.E)) * 2.0 +
-                          abs(-2.0 * n.S + (n.SW + n.SE));
+    EXACT float edgeH =
+        abs(-2.0 * n.W + (n.SW + n.NW)) + abs(-2.0 * n.C + (n.S + n.N)) * 2.0 + abs(-2.0 * n.E + (n.SE + n.NE));
+    EXACT float edgeV =
+        abs(-2.0 * n.N + (n.NE + n.NW)) + abs(-2.0 * n.C + (n.W + n.E)) * 2.0 + abs(-2.0 * n.S + (n.SW + n.SE));
     EdgeSides s;
     s.horizontal = edgeH >= edgeV;
     s.luma1 = s.horizontal ? n.S : n.W;
