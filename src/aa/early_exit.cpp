@@ -53,12 +53,12 @@ namespace ssfx::aa::detail {
 
 HWY_EXPORT(ExitRow);
 
-LumaRows bandLumaRows(ImageView<const Rgba8> in, int y0, int y1) {
+LumaRows bandLumaRows(ImageView<const Rgba8> in, int y0, int y1, TextureFormat format) {
     thread_local std::vector<float> buffer;
     const int first = std::max(0, y0 - 1), last = std::min(in.height(), y1 + 1);
     buffer.resize(std::size_t(last - first) * std::size_t(in.width()));
     const ImageView<const Rgba8> rows(in.row(first), in.width(), last - first, in.stride());
-    lumaPlane(rows, ImageView<float>(buffer.data(), in.width(), last - first), Exec{1});
+    lumaPlane(rows, ImageView<float>(buffer.data(), in.width(), last - first), Exec{1}, format);
     return {buffer.data(), in.width(), in.height(), first};
 }
 

@@ -73,9 +73,9 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Fxaa3cParams& p,
         const Rgb result = (lumaB < lumaMin || lumaB > lumaMax) ? scale(A, 0.5f) : B;
         return toRgba8(result, m.a, p.texture);
     };
-    // Reference path, the colour-aware measure (chromaWeight > 0) and sRGB textures: the
-    // luma plane pixel by pixel, the scalar kernel everywhere, on all threads.
-    if (reference || p.chromaWeight != 0.0f || p.texture != TextureFormat::Unorm) {
+    // Reference path and the colour-aware measure (chromaWeight > 0): the luma plane pixel
+    // by pixel, the scalar kernel everywhere, on all threads.
+    if (reference || p.chromaWeight != 0.0f) {
         const ImageF plane = lumaPlaneReference(in, p.chromaWeight, p.texture);
         const LumaRows L{plane.data(), w, h, 0};
         parallelRows(h, exec, [&](int y0, int y1) {
@@ -86,12 +86,13 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Fxaa3cParams& p,
     }
     // Fast path, in bands of rows with their luma rows (SIMD, same bits). The vector kernel
     // across pixels covers the default (GPU model, diagonals at +-1 px); the first pixel and
-    // the tail of each row take the scalar kernel.
-    const bool vector = centres && p.filtering == Filtering::Gpu;
+    // the tail of each row take the scalar kernel. An sRGB texture: its decoded luma rows,
+    // and the scalar kernel (the vector kernel reads unorm texels).
+    const bool vector = centres && p.filtering == Filtering::Gpu && p.texture == TextureFormat::Unorm;
     parallelRows(
         h, exec,
         [&](int y0, int y1) {
-            const LumaRows L = bandLumaRows(in, y0, y1);
+            const LumaRows L = bandLumaRows(in, y0, y1, p.texture);
             for (int y = y0; y < y1; ++y) {
                 Rgba8* row = out.row(y);
                 int x = 0;

@@ -34,7 +34,8 @@ struct LumaRows {
 
 //! Luma rows [y0 - 1, y1 + 1) of `in` (clamped; SIMD, same bits as the reference plane)
 //! in a buffer kept per calling thread, valid until its next call (in early_exit.cpp).
-LumaRows bandLumaRows(ImageView<const Rgba8> in, int y0, int y1);
+//! `format`: the texels as the texture reads them (sRGB: the decoded values' luma).
+LumaRows bandLumaRows(ImageView<const Rgba8> in, int y0, int y1, TextureFormat format = TextureFormat::Unorm);
 
 //! exitMask[x] = 1 where pixel (x, y) is below the edge threshold (SIMD, in early_exit.cpp).
 void earlyExitRow(const LumaRows& L, int y, float thresholdMin, float threshold, std::uint8_t* exitMask);
@@ -85,19 +86,19 @@ struct NoRowKernel {
     void operator()(int, const LumaRows&, const LumaPlanes&, std::uint8_t*, const Rgba8*, Rgba8*) const {}
 };
 
-//! Scalar path (the reference, a colour-aware measure, chromaWeight > 0, or an sRGB texture): the luma plane
+//! Scalar path (the reference, or a colour-aware measure, chromaWeight > 0): the luma plane
 //! pixel by pixel, then every pixel through the scalar kernel `pixel`. Fast path: per band of kBandRows
 //! rows, in parallel, the band's luma rows, then per row the plane rows `needs` asks for
 //! and the early-exit mask; `rowKernel(y, L, planes, mask, src, dst)` may write pixels of row y
 //! itself (a vector kernel across pixels) and sets their mask bytes to kWritten; the
-//! driver copies kExit runs and runs `pixel` on the kEdge pixels.
+//! driver copies kExit runs and runs `pixel` on the kEdge pixels. An sRGB texture takes the
+//! fast path with its decoded luma rows; the vector row kernels read unorm texels only, so
+//! the methods give none for it and its edge pixels take `pixel`.
 template <class PixelFn, class RowKernel = NoRowKernel>
 void runLumaMethod(ImageView<const Rgba8> in, ImageView<Rgba8> out, bool scalar, float chromaWeight,
                    TextureFormat format, float thresholdMin, float threshold, const Exec& exec, const PlaneNeeds& needs,
                    const PixelFn& pixel, const RowKernel& rowKernel = {}) {
     const int w = in.width();
-    // The vector kernels and band luma rows read unorm texels only: an sRGB texture takes the scalar path.
-    SSFX_ASSERT(scalar || format == TextureFormat::Unorm);
     if (scalar) {
         const ImageF plane = lumaPlaneReference(in, chromaWeight, format);
         const LumaRows L{plane.data(), w, in.height(), 0};
@@ -120,7 +121,7 @@ void runLumaMethod(ImageView<const Rgba8> in, ImageView<Rgba8> out, bool scalar,
     parallelRows(
         in.height(), exec,
         [&](int y0, int y1) {
-            const LumaRows L = bandLumaRows(in, y0, y1);
+            const LumaRows L = bandLumaRows(in, y0, y1, format);
             std::vector<std::uint8_t> mask(static_cast<std::size_t>(w));
             for (int y = y0; y < y1; ++y) {
                 const LumaPlanes planes =
@@ -140,7 +141,7 @@ void runLumaMethod(ImageView<const Rgba8> in, ImageView<Rgba8> out, bool scalar,
                             const Luma3x3 n = neighbourhood(L, i, y);
                             float range;
                             belowEdgeThreshold(n, thresholdMin, threshold, &range);
-                            dst[i] = toRgba8(pixel(i, y, n, range), src[i].a);
+                            dst[i] = toRgba8(pixel(i, y, n, range), src[i].a, format);
                         }
                     }
                     x = end;

@@ -12,6 +12,7 @@
 #include <array>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <vector>
 
 #include "src/core/exact_div-inl.h"
@@ -44,6 +45,28 @@ void LumaRow(const Rgba8* HWY_RESTRICT in, float* HWY_RESTRICT out, int w) {
     for (; x < w; ++x) out[x] = luma(kUnorm8[in[x].r], kUnorm8[in[x].g], kUnorm8[in[x].b]);
 }
 
+// The same for an sRGB texture: each channel decoded by a gather from kSrgb8 (256 floats).
+void LumaRowSrgb(const Rgba8* HWY_RESTRICT in, float* HWY_RESTRICT out, int w) {
+    const hn::ScalableTag<float> df;
+    const hn::RebindToUnsigned<decltype(df)> du;
+    const hn::RebindToSigned<decltype(df)> di;
+    const int n = int(hn::Lanes(df));
+    const auto mask = hn::Set(du, 0xFFu);
+    const auto wr = hn::Set(df, 0.299f), wg = hn::Set(df, 0.587f), wb = hn::Set(df, 0.114f);
+    const float* table = kSrgb8.data();
+    auto decode = [&](auto byte) { return hn::GatherIndex(df, table, hn::BitCast(di, byte)); };
+    int x = 0;
+    for (; x + n <= w; x += n) {
+        const auto v = hn::LoadU(du, reinterpret_cast<const std::uint32_t*>(in + x));
+        const auto r = decode(hn::And(v, mask));
+        const auto g = decode(hn::And(hn::ShiftRight<8>(v), mask));
+        const auto b = decode(hn::And(hn::ShiftRight<16>(v), mask));
+        const auto y = hn::Add(hn::Add(hn::Mul(wr, r), hn::Mul(wg, g)), hn::Mul(wb, b));
+        hn::StoreU(hn::Sqrt(y), df, out + x);
+    }
+    for (; x < w; ++x) out[x] = luma(kSrgb8[in[x].r], kSrgb8[in[x].g], kSrgb8[in[x].b]);
+}
+
 // Number of k in [0, kMax] where DivExact(k, divisor) differs from the IEEE quotient.
 std::int64_t DivExactMismatches(float divisor, int kMax) {
     const hn::ScalableTag<float> df;
@@ -73,6 +96,7 @@ namespace ssfx {
 
 static_assert(std::endian::native == std::endian::little, "LumaRow assumes little-endian pixels");
 HWY_EXPORT(LumaRow);
+HWY_EXPORT(LumaRowSrgb);
 HWY_EXPORT(DivExactMismatches);
 
 namespace detail {
@@ -81,16 +105,22 @@ std::int64_t divExactMismatches(float divisor, int kMax) {
 }
 }  // namespace detail
 
-void lumaPlane(ImageView<const Rgba8> in, ImageView<float> out, const Exec& exec) {
+void lumaPlane(ImageView<const Rgba8> in, ImageView<float> out, const Exec& exec, TextureFormat format) {
     SSFX_ASSERT(out.width() == in.width() && out.height() == in.height());
+    const bool srgb = format == TextureFormat::Srgb;
     parallelRows(in.height(), exec, [&](int y0, int y1) {
-        for (int y = y0; y < y1; ++y) HWY_DYNAMIC_DISPATCH(LumaRow)(in.row(y), out.row(y), in.width());
+        for (int y = y0; y < y1; ++y) {
+            if (srgb)
+                HWY_DYNAMIC_DISPATCH(LumaRowSrgb)(in.row(y), out.row(y), in.width());
+            else
+                HWY_DYNAMIC_DISPATCH(LumaRow)(in.row(y), out.row(y), in.width());
+        }
     });
 }
 
-ImageF lumaPlane(ImageView<const Rgba8> in, const Exec& exec) {
+ImageF lumaPlane(ImageView<const Rgba8> in, const Exec& exec, TextureFormat format) {
     ImageF L(in.width(), in.height());
-    lumaPlane(in, L.view(), exec);
+    lumaPlane(in, L.view(), exec, format);
     return L;
 }
 
@@ -111,13 +141,28 @@ const std::array<float, 255>& srgbEncodeThresholds() {
     return thresholds;
 }
 
-std::uint8_t encodeSrgb8(float v) {
-    const std::array<float, 255>& t = srgbEncodeThresholds();
-    if (!(v > 0.0f)) return 0;  // and NaN
-    if (v >= 1.0f) return 255;
-    // The number of thresholds at or below v.
-    return static_cast<std::uint8_t>(std::upper_bound(t.begin(), t.end(), v) - t.begin());
+namespace detail {
+const SrgbEncodeTable& srgbEncodeTable() {
+    static const SrgbEncodeTable table = [] {
+        using T = SrgbEncodeTable;
+        const std::array<float, 255>& t = srgbEncodeThresholds();
+        // The defining rule: the number of thresholds at or below v.
+        auto level = [&](float v) { return std::int32_t(std::upper_bound(t.begin(), t.end(), v) - t.begin()); };
+        T built{};
+        for (std::uint32_t j = 0; j < T::kBuckets; ++j) {
+            const std::uint32_t lowest = T::kLowBits + (j << T::kShift), highest = lowest + (1u << T::kShift) - 1;
+            built.first[j] = level(std::bit_cast<float>(lowest));
+            // At most one threshold in the bucket (see the header).
+            SSFX_ASSERT(level(std::bit_cast<float>(highest)) <= built.first[j] + 1);
+        }
+        SSFX_ASSERT(level(std::bit_cast<float>(T::kLowBits - 1)) == 0);
+        std::copy(t.begin(), t.end(), built.next.begin());
+        built.next[255] = std::numeric_limits<float>::infinity();
+        return built;
+    }();
+    return table;
 }
+}  // namespace detail
 
 }  // namespace ssfx
 #endif

@@ -1,6 +1,7 @@
 // Luma and 8-bit quantisation shared by the anti-aliasing methods (spec ppaa.md section 1).
 #pragma once
 
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -45,15 +46,42 @@ inline std::uint8_t toUnorm8(float v) {
 inline double srgbToLinear(double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4); }
 inline double linearToSrgb(double l) { return l <= 0.0031308 ? 12.92 * l : 1.055 * std::pow(l, 1.0 / 2.4) - 0.055; }
 
-//! Linear light in [0, 1] (clamped; NaN gives 0) to the nearest sRGB-encoded 8-bit level:
-//! round(255 * linearToSrgb(v)) exactly, by comparing v with the 255 linear values where
-//! that rounding changes (decoded half-levels, in double), so no pow() rounding can move a
-//! result. encodeSrgb8(kSrgb8[k]) == k for every k.
-std::uint8_t encodeSrgb8(float v);
 //! encodeSrgb8's thresholds as floats: element k is the smallest float above the linear
 //! value of the half-level (k + 0.5) / 255, so encodeSrgb8(v) is the number of elements <= v
 //! for v in [0, 1) (the GPU passes' exact encode reads them: src/gpu/shaders/aa/ppaa.glsl).
 const std::array<float, 255>& srgbEncodeThresholds();
+
+namespace detail {
+//! encodeSrgb8's count of thresholds <= v in two loads instead of a search. The floats in
+//! [2^-14, 1) fall into buckets by their exponent and top 8 mantissa bits (a bucket spans
+//! 2^-8 of its value, 0.39 %; consecutive thresholds are at least 0.9 % apart), so a bucket
+//! holds at most one threshold: the level is its smallest float's level, plus one where v is
+//! at or above the next threshold. Below 2^-14 the level is 0 (the first threshold is
+//! 1.5e-4). The table checks the one-threshold property for every bucket when it is built.
+struct SrgbEncodeTable {
+    static constexpr std::uint32_t kShift = 15;            // 23 - 8 mantissa bits
+    static constexpr std::uint32_t kLowBits = 113u << 23;  // 2^-14
+    static constexpr std::uint32_t kBuckets = (127u - 113u) << 8;
+    std::array<std::int32_t, kBuckets> first;  //!< each bucket's smallest float's level
+    std::array<float, 256> next;               //!< the threshold above level k (255: +infinity)
+};
+const SrgbEncodeTable& srgbEncodeTable();
+}  // namespace detail
+
+//! Linear light in [0, 1] (clamped; NaN gives 0) to the nearest sRGB-encoded 8-bit level:
+//! round(255 * linearToSrgb(v)) exactly, by comparing v with the 255 linear values where
+//! that rounding changes (decoded half-levels, in double), so no pow() rounding can move a
+//! result. encodeSrgb8(kSrgb8[k]) == k for every k.
+inline std::uint8_t encodeSrgb8(float v) {
+    using T = detail::SrgbEncodeTable;
+    if (!(v > 0.0f)) return 0;  // and NaN
+    if (v >= 1.0f) return 255;
+    const std::uint32_t bits = std::bit_cast<std::uint32_t>(v);
+    if (bits < T::kLowBits) return 0;
+    const T& t = detail::srgbEncodeTable();
+    const std::int32_t k = t.first[(bits - T::kLowBits) >> T::kShift];
+    return static_cast<std::uint8_t>(k + (v >= t.next[std::size_t(k)] ? 1 : 0));
+}
 
 //! A filtered channel back to its texture's 8-bit encoding (toUnorm8 or encodeSrgb8).
 inline std::uint8_t encode8(float v, TextureFormat format) {
@@ -61,9 +89,11 @@ inline std::uint8_t encode8(float v, TextureFormat format) {
 }
 
 //! Luma plane of an RGBA8 image (one float per pixel; reads at pixel centres become lookups).
-//! SIMD and threaded; equal to luma() per pixel, bit for bit.
-ImageF lumaPlane(ImageView<const Rgba8> image, const Exec& exec = {});
+//! SIMD and threaded; equal to luma() per pixel, bit for bit, of the texels as `format`
+//! reads them (unorm: v / 255; sRGB: kSrgb8, the decoded linear values).
+ImageF lumaPlane(ImageView<const Rgba8> image, const Exec& exec = {}, TextureFormat format = TextureFormat::Unorm);
 //! The same into a caller's plane of the image's size.
-void lumaPlane(ImageView<const Rgba8> image, ImageView<float> out, const Exec& exec = {});
+void lumaPlane(ImageView<const Rgba8> image, ImageView<float> out, const Exec& exec = {},
+               TextureFormat format = TextureFormat::Unorm);
 
 }  // namespace ssfx
