@@ -1,6 +1,7 @@
 // Highway body of blur (compiled once per SIMD target; see blur.cpp).
 //
-// Rows are converted once to float (v / 255, the IEEE quotient by DivExact) with one pixel of clamped
+// Rows are converted once to float (v / 255, the IEEE quotient by DivExact; an sRGB
+// texture's decoded values, kSrgb8) with one pixel of clamped
 // padding at both ends, so the vector loop also covers the borders. Each lane is one
 // channel of one pixel; the sums run in blurChannel()'s order (no FMA), so every lane
 // equals the scalar reference; each vector is quantised as soon as it is computed.
@@ -16,6 +17,7 @@
 
 #include "src/aa/blur_kernel.hpp"
 #include "src/core/exact_div-inl.h"
+#include "src/core/srgb_encode-inl.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace ssfx::aa::detail {
@@ -37,6 +39,58 @@ inline void ToFloatRow(const Rgba8* HWY_RESTRICT in, int w, float* HWY_RESTRICT 
                    df, out + 4 + i);
     for (; i < count; ++i) out[4 + i] = kUnorm8[bytes[i]];
     for (int c = 0; c < 4; ++c) out[c] = out[4 + c], out[4 + count + c] = out[count + c];
+}
+
+// The same for an sRGB texture: each byte decoded by a gather from kSrgb8.
+inline void ToFloatRowSrgb(const Rgba8* HWY_RESTRICT in, int w, float* HWY_RESTRICT out) {
+    const hn::ScalableTag<float> df;
+    const hn::RebindToSigned<decltype(df)> di;
+    const hn::Rebind<std::uint8_t, decltype(df)> d8;
+    const int n = int(hn::Lanes(df));
+    const auto* bytes = reinterpret_cast<const std::uint8_t*>(in);
+    const int count = 4 * w;
+    int i = 0;
+    for (; i + n <= count; i += n)
+        hn::StoreU(hn::GatherIndex(df, kSrgb8.data(), hn::PromoteTo(di, hn::LoadU(d8, bytes + i))), df, out + 4 + i);
+    for (; i < count; ++i) out[4 + i] = kSrgb8[bytes[i]];
+    for (int c = 0; c < 4; ++c) out[c] = out[4 + c], out[4 + count + c] = out[count + c];
+}
+
+// BlurRowQuantized for an sRGB texture: rows decoded by ToFloatRowSrgb, the same sums, each
+// vector encoded by EncodeSrgb8 (exact, so no ties to take lane by lane).
+inline void BlurRowSrgb(const float* HWY_RESTRICT fa, const float* HWY_RESTRICT fc, const float* HWY_RESTRICT fb, int w,
+                        const BlurWeights& k, const Rgba8* HWY_RESTRICT src, Rgba8* HWY_RESTRICT dst) {
+    const hn::ScalableTag<float> df;
+    const hn::Rebind<std::uint8_t, decltype(df)> d8;
+    const int n = int(hn::Lanes(df));
+    const int count = 4 * w;
+    const auto w1 = hn::Set(df, k.w1), w2 = hn::Set(df, k.w2), norm = hn::Set(df, k.norm);
+    const auto three = hn::Set(d8, std::uint8_t{3});
+    auto* bytes = reinterpret_cast<std::uint8_t*>(dst);
+    const auto* srcBytes = reinterpret_cast<const std::uint8_t*>(src);
+    int i = 0;
+    for (; i + n <= count; i += n) {
+        const float* a = fa + 4 + i;
+        const float* c = fc + 4 + i;
+        const float* b = fb + 4 + i;
+        const auto horizontal = hn::Add(hn::LoadU(df, c - 4), hn::LoadU(df, c + 4));    // w + e
+        const auto vertical = hn::Add(hn::LoadU(df, a), hn::LoadU(df, b));              // s + n
+        const auto cornersAbove = hn::Add(hn::LoadU(df, a - 4), hn::LoadU(df, a + 4));  // sw + se
+        const auto cornersBelow = hn::Add(hn::LoadU(df, b - 4), hn::LoadU(df, b + 4));  // nw + ne
+        const auto direct = hn::Mul(hn::Add(horizontal, vertical), w1);
+        const auto corner = hn::Mul(hn::Add(cornersAbove, cornersBelow), w2);
+        const auto v = hn::Mul(hn::Add(hn::Add(hn::LoadU(df, c), direct), corner), norm);
+        const auto q = hn::DemoteTo(d8, ssfx::HWY_NAMESPACE::EncodeSrgb8(df, v));
+        const auto isAlpha = hn::Eq(hn::And(hn::Iota(d8, std::uint8_t(i & 3)), three), three);
+        hn::StoreU(hn::IfThenElse(isAlpha, hn::LoadU(d8, srcBytes + i), q), d8, bytes + i);
+    }
+    for (; i < count; ++i) {
+        const float* a = fa + 4 + i;
+        const float* c = fc + 4 + i;
+        const float* b = fb + 4 + i;
+        bytes[i] = i % 4 == 3 ? srcBytes[i]
+                              : encodeSrgb8(blurChannel(c[0], c[-4], c[4], a[0], b[0], a[-4], a[4], b[-4], b[4], k));
+    }
 }
 
 // One output row from three padded float rows (above, centre, below), quantised as it is
@@ -87,18 +141,24 @@ inline void BlurRowQuantized(const float* HWY_RESTRICT fa, const float* HWY_REST
     for (; i < count; ++i) bytes[i] = i % 4 == 3 ? srcBytes[i] : toUnorm8(scalar(i));
 }
 
-inline void BlurRows(ImageView<const Rgba8> in, ImageView<Rgba8> out, int y0, int y1, const BlurWeights& k) {
+inline void BlurRows(ImageView<const Rgba8> in, ImageView<Rgba8> out, int y0, int y1, const BlurWeights& k,
+                     TextureFormat format) {
     const int w = in.width(), h = in.height();
+    const bool srgb = format == TextureFormat::Srgb;
+    const auto toFloat = srgb ? ToFloatRowSrgb : ToFloatRow;
     const std::size_t stride = std::size_t(4 * w + 8);
     // Rolling window of three converted rows.
     const auto buf = hwy::AllocateAligned<float>(3 * stride);
     float* rows[3] = {buf.get(), buf.get() + stride, buf.get() + 2 * stride};
     auto clampY = [h](int y) { return y < 0 ? 0 : (y >= h ? h - 1 : y); };
-    ToFloatRow(in.row(clampY(y0 - 1)), w, rows[0]);
-    ToFloatRow(in.row(y0), w, rows[1]);
+    toFloat(in.row(clampY(y0 - 1)), w, rows[0]);
+    toFloat(in.row(y0), w, rows[1]);
     for (int y = y0; y < y1; ++y) {
-        ToFloatRow(in.row(clampY(y + 1)), w, rows[2]);
-        BlurRowQuantized(rows[0], rows[1], rows[2], w, k, in.row(y), out.row(y));
+        toFloat(in.row(clampY(y + 1)), w, rows[2]);
+        if (srgb)
+            BlurRowSrgb(rows[0], rows[1], rows[2], w, k, in.row(y), out.row(y));
+        else
+            BlurRowQuantized(rows[0], rows[1], rows[2], w, k, in.row(y), out.row(y));
         float* t = rows[0];
         rows[0] = rows[1], rows[1] = rows[2], rows[2] = t;
     }

@@ -43,15 +43,8 @@ void blur(ImageView<const Rgba8> in, ImageView<Rgba8> out, const BlurParams& par
     detail::checkInput("blur", in);
     detail::checkOutput("blur", in, out);
     const BlurWeights w = blurWeights(params);
-    if (params.texture != TextureFormat::Unorm) {  // sRGB textures: the scalar kernel, on all threads
-        parallelRows(in.height(), exec, [&](int y0, int y1) {
-            for (int y = y0; y < y1; ++y)
-                for (int x = 0; x < in.width(); ++x) out(x, y) = detail::blurPixel(in, x, y, w, params.texture);
-        });
-        return;
-    }
     parallelRows(in.height(), exec, [&](int y0, int y1) {
-        HWY_DYNAMIC_DISPATCH(detail::BlurRows)(in, out, y0, y1, w);
+        HWY_DYNAMIC_DISPATCH(detail::BlurRows)(in, out, y0, y1, w, params.texture);
     });
 }
 

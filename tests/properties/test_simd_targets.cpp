@@ -25,12 +25,19 @@ TEST(SimdTargets, EveryTargetEqualsTheReference) {
     ASSERT_FALSE(targets.empty());
     for (const std::int64_t target : targets) {
         hwy::SetSupportedTargetsForTest(target);
+        MethodSettings srgb;  // the sRGB-texture mode's vector parts (decoded luma rows, blur, the encode)
+        srgb.params = {{"texture", 1}};
         for (const MethodInfo& m : methods()) {
             const int s = m.inputScale;
             // 300 px wide: chunks far from the borders take the contiguous plane reads too.
             for (const auto& in : {eval::syntheticScene(300, 40, s), test::noise(67 * s, 9 * s, 11)}) {
                 EXPECT_EQ(m.run(in.view(), {}, {}), m.reference(in.view(), {}, {}))
                     << hwy::TargetName(target) << " " << m.id << " " << in.width() << "x" << in.height();
+                if (m.id != "noaa") {
+                    EXPECT_EQ(m.run(in.view(), srgb, {}), m.reference(in.view(), srgb, {}))
+                        << hwy::TargetName(target) << " " << m.id << " texture=srgb " << in.width() << "x"
+                        << in.height();
+                }
             }
         }
     }
