@@ -438,6 +438,7 @@ struct AaPass::Impl {
     std::vector<AaPass::DispatchTime> lastDispatches;
     vk::DeviceSize listedOf = 0;  // pixels the recorded list covers (0: no list)
     vkx::Buffer countReadback;    // the list header's pixel count, for the host
+    vkx::Buffer listStandIn;      // the one-pass path's stand-in for the list (unused by stage 0)
     double lastEdgeShare = -1;
 
     // What a dispatch's invocations cover: the output's pixels, the luma plane's texels (the
@@ -490,10 +491,14 @@ struct AaPass::Impl {
         if (edgePath == EdgePath::OnePass || pixels > maxListPixels) {
             // Stand-ins for the list and the luma plane, which stage 0 declares but does not use
             // (its lumas are in the work group's tile).
+            // (The list's is a buffer of its own: the shader declares the list writable, so
+            // binding the tables there would count as a write of them for synchronization.)
             if (!*luma.image) ensureLuma(1, 1);
+            if (!*listStandIn.buffer)
+                listStandIn = ctx->createBuffer(16, vk::BufferUsageFlagBits::eStorageBuffer, false);
             cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eComputeShader,
                                 {}, {}, {}, lumaDiscarded());
-            dispatch(onePassPipeline(c.width, c.height), cmd, in, inLayout, out, c, *tables.buffer, Grid::Pixels,
+            dispatch(onePassPipeline(c.width, c.height), cmd, in, inLayout, out, c, *listStandIn.buffer, Grid::Pixels,
                      "one pass");
             return;
         }
@@ -679,9 +684,14 @@ AaPass::AaPass(std::shared_ptr<vkx::Context> ctx, std::string_view method, const
         // Tap d of the x4 resolve, from output centre f = 2 (any pixel gives the same t = d + 0.5).
         for (int d = -8; d <= 7; ++d) t.push_back(aa::mitchell((float(2 + d) + 0.5f - 2.0f) / 4.0f, mp.B, mp.C));
         static_assert(SSFX_AA_MITCHELL4_COUNT == 16);
-        static_assert(SSFX_AA_SRGB_LEVELS == kSrgb8.size() && SSFX_AA_SRGB_THRESHOLDS == 255);
+        using Encode = ssfx::detail::SrgbEncodeTable;
+        static_assert(SSFX_AA_SRGB_LEVELS == kSrgb8.size() && SSFX_AA_SRGB_NEXT == 256 &&
+                      SSFX_AA_SRGB_BUCKETS == Encode::kBuckets && SSFX_AA_SRGB_LOW_BITS == Encode::kLowBits &&
+                      SSFX_AA_SRGB_SHIFT == Encode::kShift);
         t.insert(t.end(), kSrgb8.begin(), kSrgb8.end());
-        t.insert(t.end(), srgbEncodeThresholds().begin(), srgbEncodeThresholds().end());
+        const Encode& encode = ssfx::detail::srgbEncodeTable();
+        t.insert(t.end(), encode.next.begin(), encode.next.end());
+        for (const std::int32_t k : encode.first) t.push_back(std::bit_cast<float>(k));  // int bits
         m.tables = c.uploadBuffer(t.data(), t.size() * sizeof(float), vk::BufferUsageFlagBits::eStorageBuffer);
         detail::AaSpecialization first = spec;
         if (hasEdgePass(m.method->id)) {

@@ -104,9 +104,14 @@ SSFX_AA_SPECIALIZATION(SSFX_AA_SPEC_DECL)
 // indices that are the same for every invocation; the model's levels k / 4080 are computed,
 // exact.glsl's levelOver4080, as a per-pixel table lookup is slow on SIMD CPU drivers).
 #define SSFX_AA_MITCHELL4_COUNT 16
-// Then texture=srgb's tables: the 256 decoded levels (the CPU's kSrgb8) and the 255 encode
-// thresholds (ssfx::srgbEncodeThresholds), read by the model only.
+// Then texture=srgb's tables, read by the model only: the 256 decoded levels (the CPU's
+// kSrgb8), and encodeSrgb8's table (ssfx::detail::SrgbEncodeTable): the threshold above each
+// level (255: +infinity) and, as int bits, each bucket's first level (buckets of the floats
+// in [2^-14, 1) by exponent and top 8 mantissa bits).
 #define SSFX_AA_SRGB_LEVELS 256
-#define SSFX_AA_SRGB_THRESHOLDS 255
+#define SSFX_AA_SRGB_NEXT 256
+#define SSFX_AA_SRGB_BUCKETS 3584
+#define SSFX_AA_SRGB_LOW_BITS 0x38800000u
+#define SSFX_AA_SRGB_SHIFT 15
 
 #endif

@@ -34,7 +34,8 @@ layout(set = 0, binding = SSFX_AA_BINDING_OUTPUT, rgba8) uniform writeonly image
 layout(set = 0, binding = SSFX_AA_BINDING_TABLES, std430) readonly buffer Tables {
     float mitchell4[SSFX_AA_MITCHELL4_COUNT];
     float srgbLevels[SSFX_AA_SRGB_LEVELS];          // texture=srgb: the CPU's kSrgb8
-    float srgbThresholds[SSFX_AA_SRGB_THRESHOLDS];  // texture=srgb: srgbEncodeThresholds()
+    float srgbNext[SSFX_AA_SRGB_NEXT];              // texture=srgb: encodeSrgb8's thresholds
+    int srgbFirst[SSFX_AA_SRGB_BUCKETS];            // texture=srgb: encodeSrgb8's buckets
 }
 tables;
 layout(push_constant, std430) uniform Push { AaConstants pc; };
@@ -232,22 +233,14 @@ float lumaAt(int x, int y) {
 float lumaAt(int x, int y) { return edgeLuma(fetchValue(x, y)); }
 #endif
 
-// texture=srgb's exact encode (the CPU's encodeSrgb8): the number of thresholds <= v, by
-// binary search over the 255 (upper bound).
+// texture=srgb's exact encode (the CPU's encodeSrgb8, by its table: color.hpp): the level
+// of v's bucket, plus one at or above the next threshold; 0 below 2^-14 (and for NaN), 255
+// from 1.
 uint encodeSrgbExact(float v) {
-    if (!(v > 0.0)) return 0u;  // and NaN
+    if (!(v >= uintBitsToFloat(SSFX_AA_SRGB_LOW_BITS))) return 0u;
     if (v >= 1.0) return 255u;
-    uint first = 0u, count = uint(SSFX_AA_SRGB_THRESHOLDS);
-    while (count > 0u) {
-        const uint half_ = count / 2u;
-        if (tables.srgbThresholds[first + half_] <= v) {
-            first += half_ + 1u;
-            count -= half_ + 1u;
-        } else {
-            count = half_;
-        }
-    }
-    return first;
+    const uint k = uint(tables.srgbFirst[(floatBitsToUint(v) - SSFX_AA_SRGB_LOW_BITS) >> SSFX_AA_SRGB_SHIFT]);
+    return v >= tables.srgbNext[k] ? k + 1u : k;
 }
 
 // The output pixel: the colour quantised exactly (model) or by the device (hardware), alpha
