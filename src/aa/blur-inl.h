@@ -56,6 +56,20 @@ inline void ToFloatRowSrgb(const Rgba8* HWY_RESTRICT in, int w, float* HWY_RESTR
     for (int c = 0; c < 4; ++c) out[c] = out[4 + c], out[4 + count + c] = out[count + c];
 }
 
+// blurChannel() per lane for the channels at a, c, b (above, centre, below; the neighbours
+// 4 floats, one pixel, either side), in its order.
+template <class DF>
+HWY_INLINE hn::Vec<DF> BlurSum(DF df, const float* a, const float* c, const float* b, hn::Vec<DF> w1, hn::Vec<DF> w2,
+                               hn::Vec<DF> norm) {
+    const auto horizontal = hn::Add(hn::LoadU(df, c - 4), hn::LoadU(df, c + 4));    // w + e
+    const auto vertical = hn::Add(hn::LoadU(df, a), hn::LoadU(df, b));              // s + n
+    const auto cornersAbove = hn::Add(hn::LoadU(df, a - 4), hn::LoadU(df, a + 4));  // sw + se
+    const auto cornersBelow = hn::Add(hn::LoadU(df, b - 4), hn::LoadU(df, b + 4));  // nw + ne
+    const auto direct = hn::Mul(hn::Add(horizontal, vertical), w1);
+    const auto corner = hn::Mul(hn::Add(cornersAbove, cornersBelow), w2);
+    return hn::Mul(hn::Add(hn::Add(hn::LoadU(df, c), direct), corner), norm);
+}
+
 // BlurRowQuantized for an sRGB texture: rows decoded by ToFloatRowSrgb, the same sums, each
 // vector encoded by EncodeSrgb8 (exact, so no ties to take lane by lane).
 inline void BlurRowSrgb(const float* HWY_RESTRICT fa, const float* HWY_RESTRICT fc, const float* HWY_RESTRICT fb, int w,
@@ -70,16 +84,7 @@ inline void BlurRowSrgb(const float* HWY_RESTRICT fa, const float* HWY_RESTRICT 
     const auto* srcBytes = reinterpret_cast<const std::uint8_t*>(src);
     int i = 0;
     for (; i + n <= count; i += n) {
-        const float* a = fa + 4 + i;
-        const float* c = fc + 4 + i;
-        const float* b = fb + 4 + i;
-        const auto horizontal = hn::Add(hn::LoadU(df, c - 4), hn::LoadU(df, c + 4));    // w + e
-        const auto vertical = hn::Add(hn::LoadU(df, a), hn::LoadU(df, b));              // s + n
-        const auto cornersAbove = hn::Add(hn::LoadU(df, a - 4), hn::LoadU(df, a + 4));  // sw + se
-        const auto cornersBelow = hn::Add(hn::LoadU(df, b - 4), hn::LoadU(df, b + 4));  // nw + ne
-        const auto direct = hn::Mul(hn::Add(horizontal, vertical), w1);
-        const auto corner = hn::Mul(hn::Add(cornersAbove, cornersBelow), w2);
-        const auto v = hn::Mul(hn::Add(hn::Add(hn::LoadU(df, c), direct), corner), norm);
+        const auto v = BlurSum(df, fa + 4 + i, fc + 4 + i, fb + 4 + i, w1, w2, norm);
         const auto q = hn::DemoteTo(d8, ssfx::HWY_NAMESPACE::EncodeSrgb8(df, v));
         const auto isAlpha = hn::Eq(hn::And(hn::Iota(d8, std::uint8_t(i & 3)), three), three);
         hn::StoreU(hn::IfThenElse(isAlpha, hn::LoadU(d8, srcBytes + i), q), d8, bytes + i);
@@ -118,16 +123,7 @@ inline void BlurRowQuantized(const float* HWY_RESTRICT fa, const float* HWY_REST
     };
     int i = 0;
     for (; i + n <= count; i += n) {
-        const float* a = fa + 4 + i;
-        const float* c = fc + 4 + i;
-        const float* b = fb + 4 + i;
-        const auto horizontal = hn::Add(hn::LoadU(df, c - 4), hn::LoadU(df, c + 4));    // w + e
-        const auto vertical = hn::Add(hn::LoadU(df, a), hn::LoadU(df, b));              // s + n
-        const auto cornersAbove = hn::Add(hn::LoadU(df, a - 4), hn::LoadU(df, a + 4));  // sw + se
-        const auto cornersBelow = hn::Add(hn::LoadU(df, b - 4), hn::LoadU(df, b + 4));  // nw + ne
-        const auto direct = hn::Mul(hn::Add(horizontal, vertical), w1);
-        const auto corner = hn::Mul(hn::Add(cornersAbove, cornersBelow), w2);
-        const auto v = hn::Mul(hn::Add(hn::Add(hn::LoadU(df, c), direct), corner), norm);
+        const auto v = BlurSum(df, fa + 4 + i, fc + 4 + i, fb + 4 + i, w1, w2, norm);
         const auto t = hn::Add(hn::Mul(hn::Min(hn::Max(v, zero), one), k255), half);
         const auto fl = hn::Floor(t);
         if (!hn::AllFalse(df, hn::Lt(hn::Sub(t, fl), tieBand))) {
