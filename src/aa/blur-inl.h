@@ -25,7 +25,8 @@ namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
 // out[0..4] = pixel 0 (left padding), out[4 + 4x + c] = channel c of pixel x, then pixel w-1.
-inline void ToFloatRow(const Rgba8* HWY_RESTRICT in, int w, float* HWY_RESTRICT out) {
+// Each byte's texel value: v / 255, or with `srgb` its decoded level (a gather from kSrgb8).
+inline void ToFloatRow(const Rgba8* HWY_RESTRICT in, int w, float* HWY_RESTRICT out, bool srgb) {
     const hn::ScalableTag<float> df;
     const hn::RebindToSigned<decltype(df)> di;
     const hn::Rebind<std::uint8_t, decltype(df)> d8;
@@ -33,26 +34,14 @@ inline void ToFloatRow(const Rgba8* HWY_RESTRICT in, int w, float* HWY_RESTRICT 
     const auto* bytes = reinterpret_cast<const std::uint8_t*>(in);
     const int count = 4 * w;
     const ssfx::HWY_NAMESPACE::ExactDivisor<decltype(df)> k255(df, 255.0f);
+    const float* table = srgb ? kSrgb8.data() : kUnorm8.data();
     int i = 0;
-    for (; i + n <= count; i += n)
-        hn::StoreU(ssfx::HWY_NAMESPACE::DivExact(hn::ConvertTo(df, hn::PromoteTo(di, hn::LoadU(d8, bytes + i))), k255),
-                   df, out + 4 + i);
-    for (; i < count; ++i) out[4 + i] = kUnorm8[bytes[i]];
-    for (int c = 0; c < 4; ++c) out[c] = out[4 + c], out[4 + count + c] = out[count + c];
-}
-
-// The same for an sRGB texture: each byte decoded by a gather from kSrgb8.
-inline void ToFloatRowSrgb(const Rgba8* HWY_RESTRICT in, int w, float* HWY_RESTRICT out) {
-    const hn::ScalableTag<float> df;
-    const hn::RebindToSigned<decltype(df)> di;
-    const hn::Rebind<std::uint8_t, decltype(df)> d8;
-    const int n = int(hn::Lanes(df));
-    const auto* bytes = reinterpret_cast<const std::uint8_t*>(in);
-    const int count = 4 * w;
-    int i = 0;
-    for (; i + n <= count; i += n)
-        hn::StoreU(hn::GatherIndex(df, kSrgb8.data(), hn::PromoteTo(di, hn::LoadU(d8, bytes + i))), df, out + 4 + i);
-    for (; i < count; ++i) out[4 + i] = kSrgb8[bytes[i]];
+    for (; i + n <= count; i += n) {
+        const auto v = hn::PromoteTo(di, hn::LoadU(d8, bytes + i));
+        hn::StoreU(srgb ? hn::GatherIndex(df, table, v) : ssfx::HWY_NAMESPACE::DivExact(hn::ConvertTo(df, v), k255), df,
+                   out + 4 + i);
+    }
+    for (; i < count; ++i) out[4 + i] = table[bytes[i]];
     for (int c = 0; c < 4; ++c) out[c] = out[4 + c], out[4 + count + c] = out[count + c];
 }
 
@@ -70,7 +59,7 @@ HWY_INLINE hn::Vec<DF> BlurSum(DF df, const float* a, const float* c, const floa
     return hn::Mul(hn::Add(hn::Add(hn::LoadU(df, c), direct), corner), norm);
 }
 
-// BlurRowQuantized for an sRGB texture: rows decoded by ToFloatRowSrgb, the same sums, each
+// BlurRowQuantized for an sRGB texture: rows decoded by ToFloatRow, the same sums, each
 // vector encoded by EncodeSrgb8 (exact, so no ties to take lane by lane).
 inline void BlurRowSrgb(const float* HWY_RESTRICT fa, const float* HWY_RESTRICT fc, const float* HWY_RESTRICT fb, int w,
                         const BlurWeights& k, const Rgba8* HWY_RESTRICT src, Rgba8* HWY_RESTRICT dst) {
@@ -141,7 +130,7 @@ inline void BlurRows(ImageView<const Rgba8> in, ImageView<Rgba8> out, int y0, in
                      TextureFormat format) {
     const int w = in.width(), h = in.height();
     const bool srgb = format == TextureFormat::Srgb;
-    const auto toFloat = srgb ? ToFloatRowSrgb : ToFloatRow;
+    const auto toFloat = [srgb](const Rgba8* row, int width, float* rowOut) { ToFloatRow(row, width, rowOut, srgb); };
     const std::size_t stride = std::size_t(4 * w + 8);
     // Rolling window of three converted rows.
     const auto buf = hwy::AllocateAligned<float>(3 * stride);
