@@ -35,6 +35,14 @@ void setParam(AlchemyParams& p, const std::string& name, double v) {
     ssfx::setParam(kAlchemyParams, &p, "alchemy", name, v);
 }
 
+SampleConstants sampleConstants(const AlchemyParams& p) {
+    validate(p);
+    SampleConstants k;
+    k.bias = p.beta, k.epsilon = p.epsilon, k.scale = 2.0f * p.sigma / float(p.numSamples), k.exponent = p.k;
+    detail::spiral({p.numSamples, p.numSpiralTurns, 0, 0, p.radius, false, false}, k.alpha, k.dirX, k.dirY, k.tapAngle);
+    return k;
+}
+
 namespace {
 ImageF alchemyImpl(ImageView<const float> depth, const Camera& camera, const AlchemyParams& p, const Exec& exec,
                    bool vector);
@@ -66,8 +74,8 @@ ImageF alchemy(ImageView<const float> depth, const Camera& camera, const Alchemy
 namespace {
 ImageF samplePassImpl(const ZPyramid& level0, const Projection& proj, Region region, const AlchemyParams& p,
                       const Exec& exec, bool vector) {
-    validate(p);
-    const AlchemyEstimator est{p.beta, p.epsilon, 2.0f * p.sigma / float(p.numSamples), p.k};
+    const SampleConstants k = sampleConstants(p);
+    const AlchemyEstimator est{k.bias, k.epsilon, k.scale, k.exponent};
     const detail::SampleSetup setup{p.numSamples, p.numSpiralTurns, 0, 0, p.radius, false, vector};
     ImageF out;
     detail::samplePass(level0, proj, region, setup, est, exec, out);

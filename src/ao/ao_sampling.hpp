@@ -55,13 +55,9 @@ inline int findMsb(int n) { return n <= 0 ? -1 : int(std::bit_width(unsigned(n))
 struct PositionTables {
     float ax, bx, ay, by;
     std::vector<float> fx, fy;
-    PositionTables(const Projection& p)
-        : ax(float((1.0 - 1.0 / p.width) / p.p00)),
-          bx(float(-2.0 / (double(p.width) * p.p00))),
-          ay(float((1.0 / p.height - 1.0) / p.p11)),
-          by(float(2.0 / (double(p.height) * p.p11))),
-          fx(std::size_t(p.width)),
-          fy(std::size_t(p.height)) {
+    PositionTables(const Projection& p) : PositionTables(p, positionFactors(p)) {}
+    PositionTables(const Projection& p, PositionFactors f)
+        : ax(f.ax), bx(f.bx), ay(f.ay), by(f.by), fx(std::size_t(p.width)), fy(std::size_t(p.height)) {
         for (int x = 0; x < p.width; ++x) fx[std::size_t(x)] = fxAt(x);
         for (int y = 0; y < p.height; ++y) fy[std::size_t(y)] = fyAt(y);
     }
@@ -101,6 +97,25 @@ inline void copyPyramid(const std::vector<ImageF>& pyr, ZPyramid& out) {
     }
 }
 
+//! The spiral (eqs. 6-7), once per pass: tap k's alpha_k = (k + 0.5) / s and its unit
+//! direction at angle alpha_k 2 pi tau (in double, rounded); with spinInFloat, alpha_k =
+//! (k + 0.5) float(1 / s) and tapAngle_k = alpha_k float(tau turnAngle) (releasedTapAngle()
+//! with phi = 0: the pixel adds its phi in float), else tapAngle is empty.
+inline void spiral(const SampleSetup& s, std::vector<float>& alpha, std::vector<float>& dirX, std::vector<float>& dirY,
+                   std::vector<float>& tapAngle) {
+    alpha.assign(std::size_t(s.numSamples), 0.0f), dirX.assign(alpha.size(), 0.0f), dirY.assign(alpha.size(), 0.0f);
+    tapAngle.assign(s.spinInFloat ? alpha.size() : 0, 0.0f);
+    for (int k = 0; k < s.numSamples; ++k) {
+        const double a = (k + 0.5) / s.numSamples, theta = a * s.turnAngle * s.spiralTurns;
+        alpha[std::size_t(k)] = float(a), dirX[std::size_t(k)] = float(std::cos(theta)),
+        dirY[std::size_t(k)] = float(std::sin(theta));
+        if (s.spinInFloat) {
+            alpha[std::size_t(k)] = (float(k) + 0.5f) * (1.0f / float(s.numSamples));
+            tapAngle[std::size_t(k)] = releasedTapAngle(k, s.numSamples, s.spiralTurns, s.turnAngle, 0.0f);
+        }
+    }
+}
+
 //! Runs the sample loop for every pixel of `region`; est.term(vv, vn, zC) accumulates one
 //! tap, est.finish(sum) gives A.
 //!
@@ -118,19 +133,8 @@ void samplePass(const ZPyramid& pyr, const Projection& proj, Region region, cons
     const int w = z0.width(), h = z0.height();
     if (out.width() != region.width || out.height() != region.height) out = ImageF(region.width, region.height);
     const int levels = s.usePyramid ? std::min<int>(s.maxMip, pyr.levels() - 1) : 0;
-    std::vector<float> alpha(std::size_t(s.numSamples)), dirX(alpha.size()), dirY(alpha.size());
-    // spinInFloat: alpha_k float(tau turnAngle) per tap (releasedTapAngle() with phi = 0; the
-    // pixel adds its phi in float).
-    std::vector<float> tapAngle(s.spinInFloat ? alpha.size() : 0);
-    for (int k = 0; k < s.numSamples; ++k) {
-        const double a = (k + 0.5) / s.numSamples, theta = a * s.turnAngle * s.spiralTurns;
-        alpha[std::size_t(k)] = float(a), dirX[std::size_t(k)] = float(std::cos(theta)),
-        dirY[std::size_t(k)] = float(std::sin(theta));
-        if (s.spinInFloat) {
-            alpha[std::size_t(k)] = (float(k) + 0.5f) * (1.0f / float(s.numSamples));
-            tapAngle[std::size_t(k)] = releasedTapAngle(k, s.numSamples, s.spiralTurns, s.turnAngle, 0.0f);
-        }
-    }
+    std::vector<float> alpha, dirX, dirY, tapAngle;
+    spiral(s, alpha, dirX, dirY, tapAngle);
     const PositionTables pos(proj);
     const bool vector = s.vector && w >= 2 && h >= 2;
     SimdSampleInput vin{};
@@ -217,14 +221,6 @@ void samplePass(const ZPyramid& pyr, const Projection& proj, Region region, cons
             }
         }
     });
-}
-
-//! The output region grown to whole 2x2 quads of the buffer grid (clamped to the buffer),
-//! so that every output pixel's quad partner has a sample-pass value.
-inline Region quadAligned(Region r, int w, int h) {
-    const int x0 = r.x0 & ~1, y0 = r.y0 & ~1;
-    const int x1 = std::min(w, (r.x0 + r.width + 1) & ~1), y1 = std::min(h, (r.y0 + r.height + 1) & ~1);
-    return {x0, y0, x1 - x0, y1 - y0};
 }
 
 }  // namespace ssfx::ao::detail

@@ -136,22 +136,59 @@ ImageF saoReference(ImageView<const float> depth, const Camera& camera, const Sa
 }
 
 namespace {
+detail::SampleSetup sampleSetup(const SaoParams& p, bool vector) {
+    return {p.numSamples, p.numSpiralTurns,  p.logQ,       p.maxMip, p.radius, p.usePyramid,
+            vector,       p.spiralTurnAngle, p.spinInFloat};
+}
+
 void samplePassImpl(const ZPyramid& pyramid, const Projection& proj, Region region, const SaoParams& p,
                     const Exec& exec, bool vector, ImageF& out) {
-    validate(p);
-    const float r2 = p.radius * p.radius;
-    // linearIntensity: the released host's intensityDivR6 = intensity / pow(radius, 6) (float),
-    // times the shader's constant 5.0 / NUM_SAMPLES.
-    const SaoEstimator est =
-        p.linearIntensity
-            ? SaoEstimator{r2,  p.bias, p.epsilon, p.intensity / std::pow(p.radius, 6.0f), 5.0f / float(p.numSamples),
-                           1.0f}
-            : SaoEstimator{r2, p.bias, p.epsilon, 5.0f / (r2 * r2 * r2 * float(p.numSamples)), 1.0f, p.intensity};
-    const detail::SampleSetup setup{p.numSamples, p.numSpiralTurns,  p.logQ,       p.maxMip, p.radius, p.usePyramid,
-                                    vector,       p.spiralTurnAngle, p.spinInFloat};
-    detail::samplePass(pyramid, proj, region, setup, est, exec, out);
+    const SampleConstants k = sampleConstants(p);
+    const SaoEstimator est{k.r2, k.bias, k.epsilon, k.scale, k.scale2, k.exponent};
+    detail::samplePass(pyramid, proj, region, sampleSetup(p, vector), est, exec, out);
 }
 }  // namespace
+
+SampleConstants sampleConstants(const SaoParams& p) {
+    validate(p);
+    SampleConstants k;
+    k.r2 = p.radius * p.radius, k.bias = p.bias, k.epsilon = p.epsilon;
+    if (p.linearIntensity) {
+        // The released host's intensityDivR6 = intensity / pow(radius, 6) (float), times the
+        // shader's constant 5.0 / NUM_SAMPLES; no exponent.
+        k.scale = p.intensity / std::pow(p.radius, 6.0f), k.scale2 = 5.0f / float(p.numSamples), k.exponent = 1.0f;
+    } else {
+        k.scale = 5.0f / (k.r2 * k.r2 * k.r2 * float(p.numSamples)), k.scale2 = 1.0f, k.exponent = p.intensity;
+    }
+    detail::spiral(sampleSetup(p, false), k.alpha, k.dirX, k.dirY, k.tapAngle);
+    return k;
+}
+
+PositionFactors positionFactors(const Projection& p) {
+    return {float((1.0 - 1.0 / p.width) / p.p00), float(-2.0 / (double(p.width) * p.p00)),
+            float((1.0 / p.height - 1.0) / p.p11), float(2.0 / (double(p.height) * p.p11))};
+}
+
+BilateralTaps bilateralTaps(const BilateralParams& p) {
+    // Section 2.4's spatial weights in summation order: t = -R..R with exp(-t^2 / (2 sigma^2))
+    // (the centre 1), or the released blur's order and weights (the centre first with
+    // gaussian[0], then t = -R..-1, 1..R with 0.3 + gaussian[|t|]).
+    const int R = p.blurRadius;
+    BilateralTaps taps;
+    if (p.blurReleasedWeights) {
+        if (R > 4) throw Error(fmt::format("bilateralPass: blurReleasedWeights needs blurRadius <= 4 (got {})", R));
+        taps.offset.push_back(0), taps.weight.push_back(kReleasedGaussian[0]);
+        for (int t = -R; t <= R; ++t)
+            if (t != 0) taps.offset.push_back(t), taps.weight.push_back(0.3f + kReleasedGaussian[std::abs(t)]);
+    } else {
+        for (int t = -R; t <= R; ++t)
+            taps.offset.push_back(t),
+                taps.weight.push_back(std::exp(-float(t * t) / (2.0f * p.blurSigma * p.blurSigma)));
+    }
+    return taps;
+}
+
+namespace {}  // namespace
 
 std::vector<Vec3> faceNormals(ImageView<const float> z, const Projection& proj, const Exec& exec) {
     if (z.width() != proj.width || z.height() != proj.height)
@@ -215,21 +252,11 @@ ImageF bilateralPass(const ImageF& a, ImageView<const float> z, Region region, c
 void bilateralPass(const ImageF& a, ImageView<const float> z, Region region, const BilateralParams& p, bool horizontal,
                    ImageF& out, const Exec& exec) {
     // Section 2.4: spatial weights times max(0, 1 - k |dz|); sky does not contribute. Taps in
-    // summation order with their spatial weights: t = -R..R with exp(-t^2 / (2 sigma^2)) (the
-    // centre 1), or the released blur's order and weights (the centre first with gaussian[0],
-    // then t = -R..-1, 1..R with 0.3 + gaussian[|t|]).
+    // summation order with their spatial weights (bilateralTaps).
     const int W = region.width, H = region.height, R = p.blurRadius, S = p.blurStride;
-    std::vector<int> order;
-    std::vector<float> weight;
-    if (p.blurReleasedWeights) {
-        if (R > 4) throw Error(fmt::format("bilateralPass: blurReleasedWeights needs blurRadius <= 4 (got {})", R));
-        order.push_back(0), weight.push_back(kReleasedGaussian[0]);
-        for (int t = -R; t <= R; ++t)
-            if (t != 0) order.push_back(t), weight.push_back(0.3f + kReleasedGaussian[std::abs(t)]);
-    } else {
-        for (int t = -R; t <= R; ++t)
-            order.push_back(t), weight.push_back(std::exp(-float(t * t) / (2.0f * p.blurSigma * p.blurSigma)));
-    }
+    const BilateralTaps tapList = bilateralTaps(p);
+    const std::vector<int>& order = tapList.offset;
+    const std::vector<float>& weight = tapList.weight;
     const int taps = int(order.size());
     if (out.width() != region.width || out.height() != region.height) out = ImageF(region.width, region.height);
     // blurZeroOutside: a vertical tap beyond the region reads these rows (a key of -inf weighs
@@ -325,7 +352,7 @@ ImageF saoImpl(ImageView<const float> depth, const Camera& camera, const SaoPara
         zPyramidLevel(std::as_const(ws.pyr).level(m - 1), ws.pyr.level(m), p.pyramidFilter, exec);
     const auto t2 = Clock::now();
     const Region out{g, g, depth.width() - 2 * g, depth.height() - 2 * g};
-    const Region work = detail::quadAligned(out, depth.width(), depth.height());
+    const Region work = quadAligned(out, depth.width(), depth.height());
     samplePassImpl(ws.pyr, proj, work, p, exec, vector, ws.a);
     quadBilateral(ws.a, z, work, p.quadThreshold, exec);
     const auto t3 = Clock::now();

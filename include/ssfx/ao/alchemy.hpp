@@ -44,6 +44,9 @@ void validate(const AlchemyParams& p);
 //! Sets a field by name (blur fields as for SaoParams); throws ssfx::Error for an unknown one.
 void setParam(AlchemyParams& p, const std::string& name, double value);
 
+//! The sample pass's constants (see SampleConstants in sao.hpp): AlchemyAO's estimator.
+SampleConstants sampleConstants(const AlchemyParams& p);
+
 //! The raw sample pass over `region` of the z buffer (before the blur).
 ImageF alchemySamplePass(ImageView<const float> z, const Projection& proj, Region region, const AlchemyParams& p,
                          const Exec& exec = {});

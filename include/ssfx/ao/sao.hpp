@@ -12,6 +12,7 @@
 // same bytes for any thread count.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <string>
 #include <vector>
@@ -47,6 +48,15 @@ struct BilateralParams {
     //! A = sum / (sum of weights + blurEpsilon); the released blur adds 1e-4. Default 0.
     float blurEpsilon = 0.0f;
 };
+
+//! The region SAO's sample pass and 2x2 quad pass cover: the output region grown to whole
+//! 2x2 quads of the buffer grid (clamped to the buffer), so that every output pixel's quad
+//! partner has a sample-pass value.
+inline Region quadAligned(Region r, int w, int h) {
+    const int x0 = r.x0 & ~1, y0 = r.y0 & ~1;
+    const int x1 = std::min(w, (r.x0 + r.width + 1) & ~1), y1 = std::min(h, (r.y0 + r.height + 1) & ~1);
+    return {x0, y0, x1 - x0, y1 - y0};
+}
 
 //! The bilateral rows of a table, for an Owner (SaoParams, AlchemyParams) whose member
 //! `Blur` is a BilateralParams; names as in BilateralParams.
@@ -217,6 +227,30 @@ ImageF sao(ImageView<const float> depth, const Camera& camera, const SaoParams& 
 //! The scalar oracle: the same pipeline with the sample pass's scalar loop only, one thread.
 //! The vector kernel matches it within the tolerance stated in tests/ao/test_sao.cpp.
 ImageF saoReference(ImageView<const float> depth, const Camera& camera, const SaoParams& params = {});
+
+//! What the passes compute once per call, as the CPU's floats. The GPU passes
+//! (ssfx/gpu/ao.hpp) take these very values, so the two agree on them bit for bit.
+//! The sample pass's estimator and spiral: A = max(0, 1 - (sum scale) scale2)^exponent, with
+//! SAO's term f^3 max((v.n - bias) / (v.v + epsilon), 0), f = max(r2 - v.v, 0), or AlchemyAO's
+//! max(0, v.n + z_C bias) / (v.v + epsilon); per tap its alpha_k, the unrotated spiral's
+//! direction, and with spinInFloat its float angle (else tapAngle is empty).
+struct SampleConstants {
+    float r2 = 0, bias = 0, epsilon = 0, scale = 0, scale2 = 1, exponent = 1;
+    std::vector<float> alpha, dirX, dirY, tapAngle;
+};
+SampleConstants sampleConstants(const SaoParams& p);
+//! Camera-space position of pixel (x, y)'s centre at depth z: (z fx(x), z fy(y), z) with
+//! fx(x) = ax + bx x and fy(y) = ay + by y (paper eq. 3, y down), each evaluated in float.
+struct PositionFactors {
+    float ax, bx, ay, by;
+};
+PositionFactors positionFactors(const Projection& p);
+//! The bilateral blur's taps in summation order: offsets t (in taps) and spatial weights.
+struct BilateralTaps {
+    std::vector<int> offset;
+    std::vector<float> weight;
+};
+BilateralTaps bilateralTaps(const BilateralParams& p);
 
 //! Per-pass timings of one sao() run, for the speed experiments (milliseconds).
 struct SaoTimings {

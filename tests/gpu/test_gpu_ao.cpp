@@ -1,0 +1,410 @@
+// The GPU AO passes (ssfx/gpu/ao.hpp) against the CPU's (ssfx/ao/sao.hpp, alchemy.hpp), on
+// lavapipe or any Vulkan device, with the validation layer and synchronization validation on
+// (a validation message fails the test).
+//
+// Pass by pass, each GPU pass is compared with the CPU pass run on the GPU's own input (its
+// previous stage read back), so each comparison isolates one pass:
+//  - depth -> z: the GPU evaluates eq. 2 in float, the CPU in double rounded once. The GPU's
+//    five correctly rounded operations (1 - d, two products, a sum of two terms of one sign,
+//    the quotient) and the float constants zn, zf and zn zf (rounded once each) each add at
+//    most half an ulp of relative error, and the CPU's rounding another half: relative error
+//    at most 8 half-ulps, 8 * 2^-24, which the test takes as 2^-20. A device's decode of a
+//    D16 or D24 value is also allowed one ulp of d (Vulkan), which moves z by |dz/dd| ulp(d):
+//    the bound adds that where the format is not D32F.
+//  - the pyramid, the 2x2 quad pass, the packing and both bilateral passes: every operation
+//    is the CPU's, in its order, correctly rounded and not fused: the same float bits.
+//  - the sample pass: the same floats but for the hash rotation's sine and cosine, which
+//    are the device's (Vulkan leaves their precision to the implementation) where the CPU
+//    takes double ones. The CPU's own vector kernel differs from its scalar oracle in the same
+//    way (tests/ao/test_sao.cpp: every pixel within 2e-3, mean below 1e-6): a tap whose
+//    truncated offset sits on a pixel boundary can move by one pixel. The same bounds here.
+//  - the whole pipeline: the bound, at least 99.9 % of pixels within 1/255 and none
+//    beyond 4/255 (here the only differences are the sample pass's, filtered by the blur).
+#include <gtest/gtest.h>
+
+#include <fmt/format.h>
+
+#include <bit>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+
+#include "ssfx/ao/alchemy.hpp"
+#include "ssfx/ao/sao.hpp"
+#include "ssfx/core/error.hpp"
+#include "ssfx/gpu/ao.hpp"
+#include "ssfx/scene/analytic.hpp"
+#include "ssfx/vk/resources.hpp"
+
+namespace ssfx {
+namespace {
+
+std::shared_ptr<vkx::Context> context() {
+    static std::shared_ptr<vkx::Context> ctx = [] {
+        vkx::ContextOptions o;
+        o.validation = true;
+        try {
+            return vkx::Context::create(o);
+        } catch (const Error& e) {
+            std::fprintf(stderr, "no Vulkan device: %s\n", e.what());
+            return std::shared_ptr<vkx::Context>();
+        }
+    }();
+    return ctx;
+}
+
+#define REQUIRE_DEVICE()                                                                               \
+    do {                                                                                               \
+        if (!context()) GTEST_SKIP() << "no Vulkan device (install mesa-vulkan-drivers for lavapipe)"; \
+    } while (0)
+
+void expectNoValidationMessages() {
+    const auto messages = context()->validationMessages();
+    EXPECT_TRUE(messages.empty()) << messages.size() << " validation message(s), the first: " << messages.front();
+}
+
+template <class F>
+void forEachPixel(ImageF& img, F f) {
+    float* p = img.data();
+    for (std::int64_t i = 0; i < img.pixelCount(); ++i) f(p[i]);
+}
+
+bool sameBits(float a, float b) { return std::bit_cast<std::uint32_t>(a) == std::bit_cast<std::uint32_t>(b); }
+
+// Pixels whose bits differ (NaN never appears here; -inf equals -inf).
+std::int64_t bitsDiffer(const ImageF& a, const ImageF& b, std::string* first = nullptr) {
+    EXPECT_EQ(a.width(), b.width());
+    EXPECT_EQ(a.height(), b.height());
+    std::int64_t n = 0;
+    for (int y = 0; y < std::min(a.height(), b.height()); ++y)
+        for (int x = 0; x < std::min(a.width(), b.width()); ++x)
+            if (!sameBits(a(x, y), b(x, y)) && n++ == 0 && first)
+                *first = fmt::format("({}, {}): {} vs {}", x, y, a(x, y), b(x, y));
+    return n;
+}
+
+struct AbsDiff {
+    double max = 0, mean = 0, within1 = 0;  // within1: the share within 1/255
+};
+AbsDiff absDiff(const ImageF& a, const ImageF& b) {
+    EXPECT_EQ(a.width(), b.width());
+    EXPECT_EQ(a.height(), b.height());
+    AbsDiff d;
+    double sum = 0;
+    std::int64_t close = 0;
+    for (std::size_t i = 0; i < a.pixels().size(); ++i) {
+        const double e = std::abs(double(a.pixels()[i]) - double(b.pixels()[i]));
+        d.max = std::max(d.max, e), sum += e;
+        close += e <= 1.0 / 255.0;
+    }
+    d.mean = sum / double(a.pixels().size());
+    d.within1 = double(close) / double(a.pixels().size());
+    return d;
+}
+
+// A depth buffer of an analytic scene, with a sky band (depth 1) cut into its top rows and a
+// sky column, so that every pass meets sky next to geometry.
+ImageF sceneDepth(const char* scene, const Camera& cam, int w, int h) {
+    ImageF d = scene::castGeometry(scene::analyticSceneByName(scene), cam, w, h).depth;
+    for (int y = 0; y < h / 6; ++y)
+        for (int x = w / 3; x < w; ++x) d(x, y) = 1.0f;
+    for (int y = 0; y < h; ++y) d(w / 2, y) = 1.0f;
+    return d;
+}
+
+// The depth a buffer of `format` stores, as floats (what the CPU reads).
+ImageF quantized(const ImageF& depth, DepthFormat format) {
+    ImageF q = depth;
+    forEachPixel(q, [&](float& v) { v = float(quantizeDepth(v, format)); });
+    return q;
+}
+
+// |z_gpu - z_cpu| within the bound derived at the top, sky for sky.
+void expectZWithinBound(const ImageF& gpu, const ImageF& depth, const Camera& cam, DepthFormat format,
+                        const std::string& what) {
+    const ImageF cpu = ao::depthToZ(depth.view(), cam);
+    std::int64_t bad = 0;
+    std::string first;
+    for (int y = 0; y < cpu.height(); ++y)
+        for (int x = 0; x < cpu.width(); ++x) {
+            const double zc = cpu(x, y), zg = gpu(x, y), d = depth(x, y);
+            if (std::isinf(zc) || std::isinf(zg)) {
+                if (!sameBits(float(zc), float(zg)) && bad++ == 0)
+                    first = fmt::format("({}, {}): {} vs {}", x, y, zg, zc);
+                continue;
+            }
+            double bound = std::abs(zc) * std::ldexp(1.0, -20);
+            if (format != DepthFormat::D32F) {
+                // |dz/dd| = |z| |zn - zf| / |zf (1 - d) + zn d| (finite), |z| / (1 - d) (infinite).
+                const double slope = std::isinf(cam.zFar) ? std::abs(zc) / (1.0 - d)
+                                                          : std::abs(zc) * std::abs(cam.zNear - cam.zFar) /
+                                                                std::abs(cam.zFar * (1.0 - d) + cam.zNear * d);
+                bound += slope * std::ldexp(1.0, std::ilogb(std::max(d, 1e-30)) - 23);  // one ulp of d
+            }
+            if (!(std::abs(zg - zc) <= bound) && bad++ == 0)
+                first = fmt::format("({}, {}): {} vs {} (bound {})", x, y, zg, zc, bound);
+        }
+    EXPECT_EQ(bad, 0) << what << ": first " << first;
+}
+
+ao::SaoParams saoWith(const char* preset, int guardBand) {
+    ao::SaoParams p = ao::saoPreset(preset);
+    p.guardBand = guardBand;
+    return p;
+}
+
+// Every SAO stage against the CPU pass on the GPU's previous stage.
+void expectStagesMatch(const ao::SaoParams& p, const char* scene, const Camera& cam, int w, int h,
+                       DepthFormat format = DepthFormat::D32F) {
+    const std::string what =
+        fmt::format("{} {}x{} guard {} filter {} pyramid {} packing {}{} far {} {}", scene, w, h, p.guardBand,
+                    ao::kPyramidFilterNames[std::size_t(p.pyramidFilter)], p.usePyramid, p.packBlurInput,
+                    p.releasedPacking ? " (released)" : "", cam.zFar, int(format));
+    SCOPED_TRACE(what);
+    const ImageF depth = quantized(sceneDepth(scene, cam, w, h), format);
+    gpu::Sao sao(context(), p);
+    const gpu::AoStages st = sao.runStages(depth.view(), cam, format);
+    const Projection proj = projection(cam, w, h);
+    // depth -> z
+    expectZWithinBound(st.z, depth, cam, format, what);
+    // the pyramid, from the GPU's z
+    const int levels = p.usePyramid ? p.maxMip : 0;
+    ASSERT_EQ(int(st.pyramid.size()), levels);
+    const std::vector<ImageF> pyr = ao::zPyramid(st.z.view(), levels, p.pyramidFilter);
+    std::string first;
+    for (int m = 1; m <= levels; ++m)
+        EXPECT_EQ(bitsDiffer(st.pyramid[std::size_t(m) - 1], pyr[std::size_t(m)], &first), 0)
+            << "level " << m << ": " << first;
+    // the sample pass, on the GPU's pyramid
+    const ao::Region out{p.guardBand, p.guardBand, w - 2 * p.guardBand, h - 2 * p.guardBand};
+    const ao::Region work = ao::quadAligned(out, w, h);
+    EXPECT_EQ(st.work.x0, work.x0);
+    EXPECT_EQ(st.work.width, work.width);
+    std::vector<ImageF> gpuPyr{st.z};
+    for (const ImageF& l : st.pyramid) gpuPyr.push_back(l);
+    const ImageF raw = ao::saoSamplePass(gpuPyr, proj, work, p);
+    const AbsDiff dr = absDiff(st.raw, raw);
+    if (std::getenv("SSFX_TEST_VERBOSE")) std::printf("%s: sample max %.3g mean %.3g\n", what.c_str(), dr.max, dr.mean);
+    EXPECT_LE(dr.max, 2e-3) << "sample pass";
+    EXPECT_LE(dr.mean, 1e-6) << "sample pass";
+    // the 2x2 quad pass (and the packing), on the GPU's raw A
+    ImageF quad = st.raw;
+    ao::quadBilateral(quad, st.z.view(), work, p.quadThreshold);
+    ImageF zBlur = st.z;
+    if (p.packBlurInput) {
+        forEachPixel(quad, [](float& v) { v = ao::packAo(v); });
+        ImageF key(work.width, work.height);
+        for (int y = 0; y < work.height; ++y)
+            for (int x = 0; x < work.width; ++x) {
+                const float z = st.z(work.x0 + x, work.y0 + y);
+                key(x, y) = zBlur(work.x0 + x, work.y0 + y) =
+                    p.releasedPacking ? ao::releasedKey(z, p.packZMin) : ao::packZ(z, p.packZMin);
+            }
+        EXPECT_EQ(bitsDiffer(st.zBlur, key, &first), 0) << "packed z: " << first;
+    }
+    EXPECT_EQ(bitsDiffer(st.quad, quad, &first), 0) << "quad pass: " << first;
+    // the bilateral passes, on the GPU's previous pass
+    ImageF hz = ao::bilateralPass(st.quad, zBlur.view(), work, p.blur, true);
+    if (p.releasedPacking) forEachPixel(hz, [](float& v) { v = ao::packAo(v); });
+    EXPECT_EQ(bitsDiffer(st.horizontal, hz, &first), 0) << "horizontal blur: " << first;
+    const ImageF vt = ao::bilateralPass(st.horizontal, zBlur.view(), work, p.blur, false);
+    ImageF cropped(out.width, out.height);
+    for (int y = 0; y < out.height; ++y)
+        for (int x = 0; x < out.width; ++x) cropped(x, y) = vt(x + out.x0 - work.x0, y + out.y0 - work.y0);
+    EXPECT_EQ(bitsDiffer(st.result, cropped, &first), 0) << "vertical blur: " << first;
+    // and the whole pipeline against the CPU's
+    const AbsDiff df = absDiff(st.result, ao::sao(depth.view(), cam, p));
+    if (std::getenv("SSFX_TEST_VERBOSE"))
+        std::printf("%s: pipeline max %.3g within 1/255 %.5f\n", what.c_str(), df.max, df.within1);
+    EXPECT_GE(df.within1, 0.999) << "whole pipeline";
+    EXPECT_LE(df.max, 4.0 / 255.0) << "whole pipeline";
+}
+
+TEST(GpuAo, SaoStagesMatchTheCpuPassByPass) {
+    REQUIRE_DEVICE();
+    Camera cam;
+    expectStagesMatch(saoWith("paper", 0), "room", cam, 96, 64);
+    expectStagesMatch(saoWith("released", 8), "room", cam, 112, 80);
+    // Odd sizes and an odd guard band: the work region grows by a row and a column.
+    expectStagesMatch(saoWith("paper", 5), "corner", cam, 101, 77);
+    cam.zFar = -40.0;  // a finite far plane
+    expectStagesMatch(saoWith("paper", 3), "corner", cam, 97, 61);
+    expectNoValidationMessages();
+}
+
+TEST(GpuAo, EveryPyramidFilterAndSamplingOption) {
+    REQUIRE_DEVICE();
+    Camera cam;
+    for (std::size_t f = 0; f < ao::kPyramidFilterNames.size(); ++f) {
+        ao::SaoParams p = saoWith("paper", 4);
+        p.pyramidFilter = ao::PyramidFilter(f);
+        expectStagesMatch(p, "room", cam, 90, 70);
+    }
+    ao::SaoParams p = saoWith("paper", 2);
+    p.usePyramid = false;  // "SAO without the pyramid": every tap reads level 0
+    expectStagesMatch(p, "room", cam, 90, 70);
+    p = saoWith("paper", 2);
+    p.packBlurInput = true;  // the paper's 16-bit key, without the released storage
+    p.radius = 2.5f, p.intensity = 1.7f, p.numSamples = 13, p.numSpiralTurns = ao::spiralTurnsFor(13);
+    p.logQ = 2, p.maxMip = 3;
+    expectStagesMatch(p, "corner", cam, 90, 70);
+    p = saoWith("released", 6);
+    p.blur.blurZeroOutside = false;
+    p.blur.blurEpsilon = 0;
+    expectStagesMatch(p, "room", cam, 90, 70);
+    expectNoValidationMessages();
+}
+
+TEST(GpuAo, DepthFormats) {
+    REQUIRE_DEVICE();
+    Camera cam;
+    for (const DepthFormat f : {DepthFormat::D16, DepthFormat::D24, DepthFormat::D32F}) {
+        expectStagesMatch(saoWith("paper", 4), "room", cam, 80, 60, f);
+        Camera finite = cam;
+        finite.zFar = -60.0;
+        expectStagesMatch(saoWith("released", 4), "corner", finite, 80, 60, f);
+    }
+    expectNoValidationMessages();
+}
+
+TEST(GpuAo, AlchemyStagesMatchTheCpu) {
+    REQUIRE_DEVICE();
+    Camera cam;
+    for (const int g : {0, 7}) {
+        ao::AlchemyParams p;
+        p.guardBand = g;
+        const int w = 99, h = 75;
+        SCOPED_TRACE(fmt::format("guard {}", g));
+        const ImageF depth = sceneDepth("room", cam, w, h);
+        gpu::Alchemy alchemy(context(), p);
+        const gpu::AoStages st = alchemy.runStages(depth.view(), cam);
+        expectZWithinBound(st.z, depth, cam, DepthFormat::D32F, "alchemy");
+        EXPECT_TRUE(st.pyramid.empty());
+        const ao::Region out{g, g, w - 2 * g, h - 2 * g};
+        EXPECT_EQ(st.work.x0, out.x0);
+        EXPECT_EQ(st.work.width, out.width);
+        const ImageF raw = ao::alchemySamplePass(st.z.view(), projection(cam, w, h), out, p);
+        const AbsDiff dr = absDiff(st.raw, raw);
+        EXPECT_LE(dr.max, 2e-3);
+        EXPECT_LE(dr.mean, 1e-6);
+        std::string first;
+        const ImageF hz = ao::bilateralPass(st.raw, st.z.view(), out, p.blur, true);
+        EXPECT_EQ(bitsDiffer(st.horizontal, hz, &first), 0) << "horizontal: " << first;
+        const ImageF vt = ao::bilateralPass(st.horizontal, st.z.view(), out, p.blur, false);
+        EXPECT_EQ(bitsDiffer(st.result, vt, &first), 0) << "vertical: " << first;
+        const AbsDiff df = absDiff(st.result, ao::alchemy(depth.view(), cam, p));
+        EXPECT_GE(df.within1, 0.999);
+        EXPECT_LE(df.max, 4.0 / 255.0);
+        // run() gives runStages()'s result
+        EXPECT_EQ(bitsDiffer(alchemy.run(depth.view(), cam), st.result), 0);
+    }
+    expectNoValidationMessages();
+}
+
+TEST(GpuAo, WholePipelineOnLargerViews) {
+    // The bound on whole frames: at least 99.9 % of pixels within 1/255, none beyond
+    // 4/255, SAO (both presets) and AlchemyAO, with the paper's guard band ratio.
+    REQUIRE_DEVICE();
+    Camera cam;
+    for (const char* scene : {"room", "corner"}) {
+        const ImageF depth = sceneDepth(scene, cam, 320 + 32, 180 + 32);
+        for (const char* preset : {"paper", "released"}) {
+            const ao::SaoParams p = saoWith(preset, 16);
+            gpu::Sao sao(context(), p);
+            const AbsDiff d = absDiff(sao.run(depth.view(), cam), ao::sao(depth.view(), cam, p));
+            EXPECT_GE(d.within1, 0.999) << scene << " " << preset;
+            EXPECT_LE(d.max, 4.0 / 255.0) << scene << " " << preset;
+            EXPECT_GT(sao.lastDispatches().size(), 4u);
+        }
+        ao::AlchemyParams ap;
+        ap.guardBand = 16;
+        gpu::Alchemy alchemy(context(), ap);
+        const AbsDiff d = absDiff(alchemy.run(depth.view(), cam), ao::alchemy(depth.view(), cam, ap));
+        EXPECT_GE(d.within1, 0.999) << scene << " alchemy";
+        EXPECT_LE(d.max, 4.0 / 255.0) << scene << " alchemy";
+    }
+    expectNoValidationMessages();
+}
+
+TEST(GpuAo, BadInputsGiveErrors) {
+    REQUIRE_DEVICE();
+    Camera cam;
+    gpu::Sao sao(context(), saoWith("paper", 4));
+    ImageF depth(16, 12, 0.5f);
+    depth(3, 2) = std::nanf("");
+    EXPECT_THROW(
+        {
+            try {
+                sao.run(depth.view(), cam);
+            } catch (const Error& e) {
+                EXPECT_NE(std::string(e.what()).find("pixel (3, 2)"), std::string::npos) << e.what();
+                throw;
+            }
+        },
+        Error);
+    depth(3, 2) = 1.5f;
+    EXPECT_THROW(sao.run(depth.view(), cam), Error);
+    // No pixels inside the guard band.
+    EXPECT_THROW(sao.run(ImageF(8, 8, 0.5f).view(), cam), Error);
+    // A bad camera, a bad parameter.
+    Camera bad;
+    bad.zNear = 0.1;
+    EXPECT_THROW(sao.run(ImageF(16, 12, 0.5f).view(), bad), Error);
+    ao::SaoParams p;
+    p.numSamples = 0;
+    EXPECT_THROW(gpu::Sao(context(), p), Error);
+
+    // record()'s contract: formats, usage, layouts, sizes.
+    vkx::Context& c = *context();
+    const vkx::Image d = c.createImage(vk::Format::eD32Sfloat, 16, 12,
+                                       vk::ImageUsageFlagBits::eSampled | vk::ImageUsageFlagBits::eTransferDst,
+                                       vk::ImageAspectFlagBits::eDepth);
+    const vk::raii::ImageView dv(
+        c.device, vk::ImageViewCreateInfo({}, *d.image, vk::ImageViewType::e2D, vk::Format::eD32Sfloat, {},
+                                          {vk::ImageAspectFlagBits::eDepth, 0, 1, 0, 1}));
+    const vkx::Image o =
+        c.createImage(vk::Format::eR32Sfloat, 8, 4, vk::ImageUsageFlagBits::eStorage, vk::ImageAspectFlagBits::eColor);
+    const vk::raii::ImageView ov(
+        c.device, vk::ImageViewCreateInfo({}, *o.image, vk::ImageViewType::e2D, vk::Format::eR32Sfloat, {},
+                                          {vk::ImageAspectFlagBits::eColor, 0, 1, 0, 1}));
+    const gpu::ImageRef goodDepth{*dv,
+                                  vk::Format::eD32Sfloat,
+                                  vk::ImageUsageFlagBits::eSampled,
+                                  16,
+                                  12,
+                                  vk::ImageLayout::eDepthStencilReadOnlyOptimal};
+    const gpu::ImageRef goodOut{*ov, vk::Format::eR32Sfloat,   vk::ImageUsageFlagBits::eStorage, 8,
+                                4,   vk::ImageLayout::eGeneral};
+    auto expectError = [&](gpu::ImageRef depthRef, gpu::ImageRef outRef, const char* needle) {
+        vkx::Recording rec(c, [&](const vk::raii::CommandBuffer& cmd) {
+            try {
+                sao.record(cmd, depthRef, cam, outRef);
+                ADD_FAILURE() << "no error for: " << needle;
+            } catch (const Error& e) {
+                EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
+            }
+        });
+    };
+    gpu::ImageRef r = goodDepth;
+    r.format = vk::Format::eR32Sfloat;
+    expectError(r, goodOut, "depth format");
+    r = goodDepth;
+    r.usage = vk::ImageUsageFlagBits::eStorage;
+    expectError(r, goodOut, "SAMPLED");
+    r = goodDepth;
+    r.layout = vk::ImageLayout::eTransferDstOptimal;
+    expectError(r, goodOut, "depth layout");
+    gpu::ImageRef out = goodOut;
+    out.format = vk::Format::eR8Unorm;
+    expectError(goodDepth, out, "output format");
+    out = goodOut;
+    out.width = 9;
+    expectError(goodDepth, out, "expected 8x4");
+    out = goodOut;
+    out.layout = vk::ImageLayout::eShaderReadOnlyOptimal;
+    expectError(goodDepth, out, "output layout");
+    expectNoValidationMessages();
+}
+
+}  // namespace
+}  // namespace ssfx
