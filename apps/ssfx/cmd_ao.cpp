@@ -17,6 +17,12 @@
 #include "ssfx/render/renderer.hpp"
 #include "ssfx/scene/raytrace.hpp"
 #endif
+#ifdef SSFX_HAVE_GPU
+#include <cstring>
+
+#include "ssfx/gpu/ao.hpp"
+#include "ssfx/vk/compute.hpp"
+#endif
 
 namespace ssfx::cli {
 
@@ -24,6 +30,7 @@ namespace {
 
 struct AoOptions {
     std::string method = "sao", depth, camera, scene, view, size, output, saveDepth, saveCamera, device, preset;
+    std::string backend = "cpu", savePasses;
     std::vector<std::string> params;
     double fovDeg = 60;
     int threads = 0, rays = 256;
@@ -46,21 +53,62 @@ void writeAo(const std::string& path, const ImageF& a) {
     }
 }
 
+// --save-passes DIR: every intermediate as a float EXR (channel Y).
+void writeStages(const std::string& dir, const ao::AoStages& st) {
+    std::filesystem::create_directories(dir);
+    auto write = [&](const std::string& name, const ImageF& img) {
+        if (img.pixelCount() > 0) io::writeExr((std::filesystem::path(dir) / name).string(), img.view(), "Y");
+    };
+    write("z.exr", st.z);
+    for (std::size_t m = 0; m < st.pyramid.size(); ++m) write(fmt::format("z{}.exr", m + 1), st.pyramid[m]);
+    write("raw.exr", st.raw);
+    write("quad.exr", st.quad);
+    write("zblur.exr", st.zBlur);
+    write("horizontal.exr", st.horizontal);
+    write("ao.exr", st.result);
+}
+
+#ifdef SSFX_HAVE_GPU
+std::shared_ptr<vkx::Context> gpuContext(const AoOptions& o, bool graphics) {
+    vkx::ContextOptions co;
+    co.device = o.device;
+    co.graphics = graphics;
+    try {
+        return vkx::Context::create(co);
+    } catch (const Error& e) {
+        throw Error(fmt::format("--backend vulkan looked for a Vulkan 1.3 device with a compute queue{}{}: {}",
+                                graphics ? " and graphics" : "",
+                                o.device.empty() ? "" : fmt::format(" matching '{}'", o.device), e.what()));
+    }
+}
+#endif
+
 void run(const AoOptions& o, const CLI::App& cmd) {
-    if (o.output.empty() && o.saveDepth.empty()) throw Error("no output file given (use -o FILE)");
+    if (o.output.empty() && o.saveDepth.empty() && o.savePasses.empty())
+        throw Error("no output file given (use -o FILE)");
+    const bool vulkan = o.backend == "vulkan";
     // Options that do not apply to the input chosen are refused, not ignored.
     const bool analyticScene = o.scene == "corner" || o.scene == "room";
     if (!o.depth.empty())
-        for (const char* opt : {"--size", "--fov", "--view", "--device"})
+        for (const char* opt : {"--size", "--fov", "--view"})
             if (cmd.count(opt))
                 throw Error(fmt::format("{} does not apply to --depth (the depth file has its size and camera)", opt));
-    if (analyticScene)
-        for (const char* opt : {"--view", "--device"})
-            if (cmd.count(opt)) throw Error(fmt::format("{} does not apply to the analytic scene '{}'", opt, o.scene));
+    if (analyticScene && cmd.count("--view"))
+        throw Error(fmt::format("--view does not apply to the analytic scene '{}'", o.scene));
+    if (cmd.count("--device") && !vulkan && (analyticScene || !o.depth.empty()))
+        throw Error("--device goes with --backend vulkan or a rendered scene");
     if (!o.scene.empty() && !analyticScene && cmd.count("--fov"))
         throw Error("--fov does not apply to a rendered scene (its views have their own)");
     const ao::AoMethodInfo& method = ao::aoMethodById(o.method);
     if (cmd.count("--rays") && !method.needsGeometry) throw Error("--rays applies to -m raytraced only");
+#ifdef SSFX_HAVE_GPU
+    if (vulkan && !gpu::hasGpuAo(method.id))
+        throw Error(fmt::format("{} has no GPU pass (--backend vulkan runs sao and alchemy)", method.id));
+#else
+    if (vulkan) throw Error("--backend vulkan: this ssfx was built without the GPU backend");
+#endif
+    if (!o.savePasses.empty() && method.needsGeometry)
+        throw Error("--save-passes: the ray-traced truth has no passes (it reads the geometry)");
     if (!o.output.empty()) {  // the output format, before any work
         const std::string ext = std::filesystem::path(o.output).extension().string();
         if (ext != ".png" && ext != ".exr")
@@ -89,6 +137,47 @@ void run(const AoOptions& o, const CLI::App& cmd) {
         const auto [w, h] = parseSize(o.size);
         const scene::Scene rs = scene::loadScene(o.scene);
         const scene::View view = o.view.empty() ? rs.views.at(0).second : rs.view(o.view);
+#ifdef SSFX_HAVE_GPU
+        if (vulkan && o.savePasses.empty() && o.saveDepth.empty()) {
+            // The renderer and the AO on one device: the AO passes read the depth image where
+            // the draw left it, recorded into the draw's command buffer; only A comes back.
+            if (o.output.empty()) return;
+            auto ctx = gpuContext(o, true);
+            render::Renderer renderer(ctx);
+            gpu::AoPass pass(ctx, method.id, params);
+            const std::uint32_t ow = std::uint32_t(w), oh = std::uint32_t(h);
+            const auto outUsage = vk::ImageUsageFlagBits::eStorage | vk::ImageUsageFlagBits::eTransferSrc;
+            const vkx::Image out = ctx->createImage(vk::Format::eR32Sfloat, ow, oh, outUsage,
+                                                    vk::ImageAspectFlagBits::eColor);
+            const vk::raii::ImageView outView(
+                ctx->device, vk::ImageViewCreateInfo({}, *out.image, vk::ImageViewType::e2D, vk::Format::eR32Sfloat,
+                                                     {}, {vk::ImageAspectFlagBits::eColor, 0, 1, 0, 1}));
+            const vkx::Buffer download =
+                ctx->createBuffer(vk::DeviceSize(ow) * oh * 4, vk::BufferUsageFlagBits::eTransferDst, true);
+            using S = vk::PipelineStageFlagBits;
+            using A = vk::AccessFlagBits;
+            using L = vk::ImageLayout;
+            const scene::CameraSetup setup = scene::cameraSetup(view, w, h, guard);
+            renderer.renderDepthOnDevice(
+                rs, view, w, h, DepthFormat::D32F, guard,
+                [&](const vk::raii::CommandBuffer& c, const render::DeviceDepth& d) {
+                    vkx::transition(c, out, L::eUndefined, L::eGeneral, S::eTopOfPipe, {}, S::eComputeShader,
+                                    A::eShaderWrite);
+                    pass.record(c, gpu::ImageRef{d.view, d.format, d.usage, d.width, d.height, d.layout},
+                                setup.camera, gpu::ImageRef{*outView, out.format, outUsage, ow, oh, L::eGeneral});
+                    vkx::transition(c, out, L::eGeneral, L::eTransferSrcOptimal, S::eComputeShader,
+                                    A::eShaderWrite, S::eTransfer, A::eTransferRead);
+                    c.copyImageToBuffer(*out.image, L::eTransferSrcOptimal, *download.buffer,
+                                        vk::BufferImageCopy(0, 0, 0, {vk::ImageAspectFlagBits::eColor, 0, 0, 1},
+                                                            {0, 0, 0}, {ow, oh, 1}));
+                });
+            ImageF a(w, h);
+            std::memcpy(a.data(), download.mapped, std::size_t(ow) * oh * 4);
+            if (!o.saveCamera.empty()) io::writeCameraJson(o.saveCamera, setup.camera);
+            writeAo(o.output, a);
+            return;
+        }
+#endif
         render::Renderer renderer({o.device, false});
         auto r = renderer.renderDepth(rs, view, w, h, DepthFormat::D32F, guard);
         depth = std::move(r.depth);
@@ -127,12 +216,32 @@ void run(const AoOptions& o, const CLI::App& cmd) {
     }
     if (!o.saveDepth.empty()) io::writeExr(o.saveDepth, depth.view(), "Z");
     if (!o.saveCamera.empty()) io::writeCameraJson(o.saveCamera, cam);
-    if (o.output.empty()) return;
-    ProgressLine line("ao");
-    ao::AoInput input{depth.view(), cam, nullptr, line.fn()};
-    if (method.needsGeometry) input.geometry = meshScene ? meshScene.get() : static_cast<const ao::RayScene*>(&*scene);
-    const ImageF a = method.run(input, params, exec);
-    writeAo(o.output, a);
+    if (o.output.empty() && o.savePasses.empty()) return;
+    ImageF a;
+    ao::AoStages stages;
+    ao::AoStages* st = o.savePasses.empty() ? nullptr : &stages;
+    if (vulkan) {
+#ifdef SSFX_HAVE_GPU
+        gpu::AoPass pass(gpuContext(o, false), method.id, params);
+        if (st)
+            stages = pass.runStages(depth.view(), cam), a = stages.result;
+        else
+            a = pass.run(depth.view(), cam);
+#endif
+    } else if (st) {
+        if (const auto* p = std::get_if<ao::SaoParams>(&params))
+            a = ao::sao(depth.view(), cam, *p, exec, st);
+        else
+            a = ao::alchemy(depth.view(), cam, std::get<ao::AlchemyParams>(params), exec, st);
+    } else {
+        ProgressLine line("ao");
+        ao::AoInput input{depth.view(), cam, nullptr, line.fn()};
+        if (method.needsGeometry)
+            input.geometry = meshScene ? meshScene.get() : static_cast<const ao::RayScene*>(&*scene);
+        a = method.run(input, params, exec);
+    }
+    if (st) writeStages(o.savePasses, stages);
+    if (!o.output.empty()) writeAo(o.output, a);
 }
 
 }  // namespace
@@ -149,7 +258,12 @@ void addAoCommand(CLI::App& app) {
                     "Scene instead of a depth file: analytic corner or room; or rendered with Vulkan: atrium, "
                     "cornell, a scene .json or a model file");
     cmd->add_option("--view", o->view, "With a rendered scene: its named viewpoint (default: the first)");
-    cmd->add_option("--device", o->device, "With a rendered scene: Vulkan device index or name part");
+    cmd->add_option("--backend", o->backend,
+                    "cpu (default) or vulkan: sao and alchemy as Vulkan compute passes (docs/gpu.md); with a "
+                    "rendered scene the render and the AO run on one device and only A is read back")
+        ->check(CLI::IsMember({"cpu", "vulkan"}));
+    cmd->add_option("--device", o->device,
+                    "With a rendered scene or --backend vulkan: Vulkan device index or name part ('ssfx devices')");
     cmd->add_option("--size", o->size, "With --scene: output size WxH (the buffer adds the guard band)")
         ->default_val("960x540");
     cmd->add_option("--fov", o->fovDeg, "With an analytic scene: vertical field of view in degrees (default 60)")
@@ -173,6 +287,10 @@ void addAoCommand(CLI::App& app) {
     cmd->add_option("--rays", o->rays, "raytraced: rays per pixel (default 256)")->check(CLI::Range(1, 65536));
     cmd->add_option("--save-depth", o->saveDepth, "Also write the depth buffer used (EXR, channel Z)");
     cmd->add_option("--save-camera", o->saveCamera, "Also write its camera (JSON)");
+    cmd->add_option("--save-passes", o->savePasses,
+                    "sao, alchemy: also write every intermediate into this directory as float EXRs: z.exr, the "
+                    "pyramid's z1.exr.., raw.exr (sample pass), quad.exr (2x2 pass), zblur.exr (packed key), "
+                    "horizontal.exr, ao.exr (with --backend vulkan and a rendered scene, from the read-back depth)");
     cmd->add_option("--threads", o->threads, "Worker threads (0 = all)")->check(CLI::Range(0, 1024));
     cmd->footer(
         "Depth d in [0, 1] (0 = near plane); d = 1 exactly is nothing drawn (sky, A = 1) for any far plane;\n"
@@ -182,7 +300,9 @@ void addAoCommand(CLI::App& app) {
         "  ssfx ao --scene atrium --view colonnade --size 960x540 -p guardBand=64 -o ao.png\n"
         "  ssfx ao --preset released --depth d.exr --camera c.json -p guardBand=64 -o released.png\n"
         "  ssfx ao -m raytraced --scene scenes/sponza.json --size 480x270 --rays 256 -o truth.exr\n"
-        "  ssfx ao -m alchemy --depth d.exr --camera c.json -p guardBand=64 -o alchemy.exr");
+        "  ssfx ao -m alchemy --depth d.exr --camera c.json -p guardBand=64 -o alchemy.exr\n"
+        "  ssfx ao --backend vulkan --scene atrium --size 1920x1080 -p guardBand=192 -o ao.png\n"
+        "  ssfx ao --backend vulkan --depth d.exr --camera c.json -p guardBand=64 --save-passes passes -o ao.exr");
     cmd->callback([o, cmd] {
         io::OutputSet outputs;  // -o, --save-depth and --save-camera: all or none
         run(*o, *cmd);

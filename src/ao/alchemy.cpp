@@ -45,7 +45,7 @@ SampleConstants sampleConstants(const AlchemyParams& p) {
 
 namespace {
 ImageF alchemyImpl(ImageView<const float> depth, const Camera& camera, const AlchemyParams& p, const Exec& exec,
-                   bool vector);
+                   bool vector, AoStages* stages = nullptr);
 ImageF samplePassImpl(const ZPyramid& z, const Projection& proj, Region region, const AlchemyParams& p,
                       const Exec& exec, bool vector);
 }  // namespace
@@ -71,6 +71,12 @@ ImageF alchemy(ImageView<const float> depth, const Camera& camera, const Alchemy
     return alchemyImpl(depth, camera, p, exec, true);
 }
 
+ImageF alchemy(ImageView<const float> depth, const Camera& camera, const AlchemyParams& p, const Exec& exec,
+               AoStages* stages) {
+    if (!stages) throw Error("alchemy: no AoStages to fill");
+    return alchemyImpl(depth, camera, p, exec, true, stages);
+}
+
 namespace {
 ImageF samplePassImpl(const ZPyramid& level0, const Projection& proj, Region region, const AlchemyParams& p,
                       const Exec& exec, bool vector) {
@@ -83,7 +89,7 @@ ImageF samplePassImpl(const ZPyramid& level0, const Projection& proj, Region reg
 }
 
 ImageF alchemyImpl(ImageView<const float> depth, const Camera& camera, const AlchemyParams& p, const Exec& exec,
-                   bool vector) {
+                   bool vector, AoStages* stages) {
     validate(p);
     const int g = p.guardBand;
     if (depth.width() <= 2 * g || depth.height() <= 2 * g)
@@ -96,9 +102,16 @@ ImageF alchemyImpl(ImageView<const float> depth, const Camera& camera, const Alc
     depthToZ(depth, camera, level0.level(0), exec);
     const ImageView<const float> z = std::as_const(level0).level(0);
     const Region out{g, g, depth.width() - 2 * g, depth.height() - 2 * g};
-    const ImageF a = samplePassImpl(level0, proj, out, p, exec, vector);
-    const ImageF h = bilateralPass(a, z, out, p.blur, true, exec);
-    return bilateralPass(h, z, out, p.blur, false, exec);
+    ImageF a = samplePassImpl(level0, proj, out, p, exec, vector);
+    ImageF h = bilateralPass(a, z, out, p.blur, true, exec);
+    ImageF result = bilateralPass(h, z, out, p.blur, false, exec);
+    if (stages) {
+        *stages = AoStages{};
+        stages->z = ImageF(z.width(), z.height());
+        for (int y = 0; y < z.height(); ++y) std::copy(z.row(y), z.row(y) + z.width(), &stages->z(0, y));
+        stages->work = out, stages->raw = std::move(a), stages->horizontal = std::move(h), stages->result = result;
+    }
+    return result;
 }
 }  // namespace
 

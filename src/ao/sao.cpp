@@ -112,7 +112,7 @@ namespace {
 void samplePassImpl(const ZPyramid& pyramid, const Projection& proj, Region region, const SaoParams& p,
                     const Exec& exec, bool vector, ImageF& out);
 ImageF saoImpl(ImageView<const float> depth, const Camera& camera, const SaoParams& p, const Exec& exec,
-               SaoTimings* timings, bool vector);
+               SaoTimings* timings, bool vector, AoStages* stages = nullptr);
 }  // namespace
 
 ImageF saoSamplePass(const std::vector<ImageF>& pyramid, const Projection& proj, Region region, const SaoParams& p,
@@ -315,7 +315,7 @@ void bilateralPass(const ImageF& a, ImageView<const float> z, Region region, con
 }
 
 ImageF sao(ImageView<const float> depth, const Camera& camera, const SaoParams& p, const Exec& exec) {
-    return sao(depth, camera, p, exec, nullptr);
+    return saoImpl(depth, camera, p, exec, nullptr, true);
 }
 
 ImageF sao(ImageView<const float> depth, const Camera& camera, const SaoParams& p, const Exec& exec,
@@ -323,9 +323,22 @@ ImageF sao(ImageView<const float> depth, const Camera& camera, const SaoParams& 
     return saoImpl(depth, camera, p, exec, timings, true);
 }
 
+ImageF sao(ImageView<const float> depth, const Camera& camera, const SaoParams& p, const Exec& exec,
+           AoStages* stages) {
+    if (!stages) throw Error("sao: no AoStages to fill");
+    return saoImpl(depth, camera, p, exec, nullptr, true, stages);
+}
+
 namespace {
+// A copy of the region r of `img`.
+ImageF cropped(ImageView<const float> img, Region r) {
+    ImageF out(r.width, r.height);
+    for (int y = 0; y < r.height; ++y) std::copy(img.row(r.y0 + y) + r.x0, img.row(r.y0 + y) + r.x0 + r.width, &out(0, y));
+    return out;
+}
+
 ImageF saoImpl(ImageView<const float> depth, const Camera& camera, const SaoParams& p, const Exec& exec,
-               SaoTimings* timings, bool vector) {
+               SaoTimings* timings, bool vector, AoStages* stages) {
     validate(p);
     const int g = p.guardBand;
     if (depth.width() <= 2 * g || depth.height() <= 2 * g)
@@ -354,6 +367,16 @@ ImageF saoImpl(ImageView<const float> depth, const Camera& camera, const SaoPara
     const Region out{g, g, depth.width() - 2 * g, depth.height() - 2 * g};
     const Region work = quadAligned(out, depth.width(), depth.height());
     samplePassImpl(ws.pyr, proj, work, p, exec, vector, ws.a);
+    if (stages) {
+        *stages = AoStages{};
+        stages->z = cropped(z, {0, 0, z.width(), z.height()});
+        for (int m = 1; m <= levels; ++m) {
+            const ImageView<const float> l = std::as_const(ws.pyr).level(m);
+            stages->pyramid.push_back(cropped(l, {0, 0, l.width(), l.height()}));
+        }
+        stages->work = work;
+        stages->raw = ws.a;
+    }
     quadBilateral(ws.a, z, work, p.quadThreshold, exec);
     const auto t3 = Clock::now();
     ImageView<const float> zBlur = z;
@@ -367,11 +390,16 @@ ImageF saoImpl(ImageView<const float> depth, const Camera& camera, const SaoPara
         for (std::int64_t i = 0; i < ws.a.pixelCount(); ++i) av[i] = packAo(av[i]);
         zBlur = ws.zp.view();
     }
+    if (stages) {
+        stages->quad = ws.a;
+        if (p.packBlurInput) stages->zBlur = cropped(zBlur, work);
+    }
     bilateralPass(ws.a, zBlur, work, p.blur, true, ws.h, exec);
     if (p.releasedPacking) {  // the horizontal pass's output is stored in 8 bits too
         float* hv = ws.h.data();
         for (std::int64_t i = 0; i < ws.h.pixelCount(); ++i) hv[i] = packAo(hv[i]);
     }
+    if (stages) stages->horizontal = ws.h;
     ImageF result(out.width, out.height);
     if (work.x0 == out.x0 && work.y0 == out.y0 && work.width == out.width && work.height == out.height) {
         bilateralPass(ws.h, zBlur, work, p.blur, false, result, exec);  // the usual case: even sizes
@@ -383,6 +411,7 @@ ImageF saoImpl(ImageView<const float> depth, const Camera& camera, const SaoPara
     }
     const auto t4 = Clock::now();
     if (timings) *timings = {ms(t0, t1), ms(t1, t2), ms(t2, t3), ms(t3, t4), ms(t0, t4)};
+    if (stages) stages->result = result;
     return result;
 }
 }  // namespace

@@ -620,40 +620,36 @@ vk::Format depthVkFormat(DepthFormat format) {
     }
 }
 
-Sao::Sao(std::shared_ptr<vkx::Context> ctx, const ao::SaoParams& params)
-    : params_(params), impl_(std::make_unique<AoPipeline>(std::move(ctx), configOf(params))) {}
-Sao::~Sao() = default;
-void Sao::record(const vk::raii::CommandBuffer& cmd, const ImageRef& depth, const Camera& camera,
-                 const ImageRef& output) {
-    impl_->record(cmd, depth, camera, output);
-}
-ImageF Sao::run(ImageView<const float> depth, const Camera& camera, DepthFormat format) {
-    return impl_->run(depth, camera, format, nullptr);
-}
-AoStages Sao::runStages(ImageView<const float> depth, const Camera& camera, DepthFormat format) {
-    AoStages st;
-    impl_->run(depth, camera, format, &st);
-    return st;
-}
-double Sao::lastMilliseconds() const { return impl_->lastMilliseconds(); }
-const std::vector<AoDispatchTime>& Sao::lastDispatches() const { return impl_->lastDispatches(); }
+bool hasGpuAo(std::string_view method) { return method == "sao" || method == "alchemy"; }
 
-Alchemy::Alchemy(std::shared_ptr<vkx::Context> ctx, const ao::AlchemyParams& params)
-    : params_(params), impl_(std::make_unique<AoPipeline>(std::move(ctx), configOf(params))) {}
-Alchemy::~Alchemy() = default;
-void Alchemy::record(const vk::raii::CommandBuffer& cmd, const ImageRef& depth, const Camera& camera,
-                     const ImageRef& output) {
+namespace {
+AoConfig configOf(std::string_view method, const ao::AoParams& params) {
+    if (!hasGpuAo(method)) throw Error(fmt::format("{}: no GPU pass (the GPU has sao and alchemy)", method));
+    if (method == "sao") {
+        if (const auto* p = std::get_if<ao::SaoParams>(&params)) return configOf(*p);
+    } else if (const auto* p = std::get_if<ao::AlchemyParams>(&params)) {
+        return configOf(*p);
+    }
+    throw Error(fmt::format("gpu::AoPass: the params are not {}'s", method));
+}
+}  // namespace
+
+AoPass::AoPass(std::shared_ptr<vkx::Context> ctx, std::string_view method, const ao::AoParams& params)
+    : impl_(std::make_unique<AoPipeline>(std::move(ctx), configOf(method, params))) {}
+AoPass::~AoPass() = default;
+void AoPass::record(const vk::raii::CommandBuffer& cmd, const ImageRef& depth, const Camera& camera,
+                    const ImageRef& output) {
     impl_->record(cmd, depth, camera, output);
 }
-ImageF Alchemy::run(ImageView<const float> depth, const Camera& camera, DepthFormat format) {
+ImageF AoPass::run(ImageView<const float> depth, const Camera& camera, DepthFormat format) {
     return impl_->run(depth, camera, format, nullptr);
 }
-AoStages Alchemy::runStages(ImageView<const float> depth, const Camera& camera, DepthFormat format) {
+AoStages AoPass::runStages(ImageView<const float> depth, const Camera& camera, DepthFormat format) {
     AoStages st;
     impl_->run(depth, camera, format, &st);
     return st;
 }
-double Alchemy::lastMilliseconds() const { return impl_->lastMilliseconds(); }
-const std::vector<AoDispatchTime>& Alchemy::lastDispatches() const { return impl_->lastDispatches(); }
+double AoPass::lastMilliseconds() const { return impl_->lastMilliseconds(); }
+const std::vector<AoDispatchTime>& AoPass::lastDispatches() const { return impl_->lastDispatches(); }
 
 }  // namespace ssfx::gpu

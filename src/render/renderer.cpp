@@ -216,8 +216,9 @@ struct Renderer::Impl {
     };
 
     // One draw of `scene` from `cam` into width x height attachments; returns their contents.
+    // `after`: the depth stays on the device for work recorded after the draw (not read back).
     Result draw(const scene::Scene& scene, const scene::CameraSetup& cam, Pass pass, vk::Format depthFormat,
-                const std::vector<ColorTarget>& targets, float derivativeScale) {
+                const std::vector<ColorTarget>& targets, float derivativeScale, const DepthRecorder& after = {}) {
         scene.validate();
         const auto w = std::uint32_t(cam.bufferWidth()), h = std::uint32_t(cam.bufferHeight());
         ctx.requireImageSize(w, h, "render size");
@@ -264,10 +265,16 @@ struct Renderer::Impl {
             result.colors.push_back(
                 ctx.createBuffer(vk::DeviceSize(w) * h * t.bytesPerTexel, vk::BufferUsageFlagBits::eTransferDst, true));
         }
-        vkx::Image depthImage =
-            ctx.createImage(depthFormat, w, h, vk::ImageUsageFlagBits::eDepthStencilAttachment | usage,
-                            vk::ImageAspectFlagBits::eDepth);
-        const bool readDepth = pass != Pass::Forward;
+        const vk::ImageUsageFlags depthUsage = vk::ImageUsageFlagBits::eDepthStencilAttachment | usage |
+                                               (after ? vk::ImageUsageFlagBits::eSampled : vk::ImageUsageFlags{});
+        vkx::Image depthImage = ctx.createImage(depthFormat, w, h, depthUsage, vk::ImageAspectFlagBits::eDepth);
+        vk::raii::ImageView depth2d{nullptr};  // for `after`: a 2-D view (a sampled image's own is an array)
+        if (after)
+            depth2d = vk::raii::ImageView(ctx.device, vk::ImageViewCreateInfo({}, *depthImage.image,
+                                                                              vk::ImageViewType::e2D, depthFormat, {},
+                                                                              {vk::ImageAspectFlagBits::eDepth, 0, 1,
+                                                                               0, 1}));
+        const bool readDepth = pass != Pass::Forward && !after;
         if (readDepth)
             result.depth = ctx.createBuffer(vk::DeviceSize(w) * h * depthBytes(depthFormat),
                                             vk::BufferUsageFlagBits::eTransferDst, true);
@@ -315,6 +322,12 @@ struct Renderer::Impl {
                     *colorImages[i].image, vk::ImageLayout::eTransferSrcOptimal, *result.colors[i].buffer,
                     vk::BufferImageCopy(0, 0, 0, vk::ImageSubresourceLayers(vk::ImageAspectFlagBits::eColor, 0, 0, 1),
                                         {0, 0, 0}, {w, h, 1}));
+            }
+            if (after) {
+                vkx::transition(cmd, depthImage, vk::ImageLayout::eDepthAttachmentOptimal,
+                                vk::ImageLayout::eDepthReadOnlyOptimal, S::eEarlyFragmentTests | S::eLateFragmentTests,
+                                A::eDepthStencilAttachmentWrite, S::eComputeShader, A::eShaderRead);
+                after(cmd, DeviceDepth{*depth2d, depthFormat, depthUsage, w, h, vk::ImageLayout::eDepthReadOnlyOptimal});
             }
             if (readDepth) {
                 vkx::transition(cmd, depthImage, vk::ImageLayout::eDepthAttachmentOptimal,
@@ -365,6 +378,18 @@ DepthRender Renderer::renderDepth(const scene::Scene& scene, const scene::View& 
         const vk::Format f = vkDepthFormat(format);
         auto r = impl_->draw(scene, out.camera, Pass::Depth, f, {}, 1.0f);
         out.depth = depthFromBytes(r.depth.mapped, f, out.camera.bufferWidth(), out.camera.bufferHeight());
+        out.gpuMs = r.gpuMs;
+        return out;
+    });
+}
+
+DepthRender Renderer::renderDepthOnDevice(const scene::Scene& scene, const scene::View& view, int width, int height,
+                                          DepthFormat format, int guard, const DepthRecorder& after) {
+    if (!after) throw Error("renderDepthOnDevice: no work to record after the draw");
+    return guarded("rendering depth", [&] {
+        DepthRender out;
+        out.camera = scene::cameraSetup(view, width, height, guard);
+        const auto r = impl_->draw(scene, out.camera, Pass::Depth, vkDepthFormat(format), {}, 1.0f, after);
         out.gpuMs = r.gpuMs;
         return out;
     });

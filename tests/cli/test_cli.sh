@@ -334,6 +334,32 @@ if "$SSFX" --help 2>/dev/null | grep -qE '^ +render '; then
     check aa_vulkan_noicd 2 env VK_ICD_FILENAMES=/nonexistent.json $VK "$SSFX" aa -m ddaa2 --backend vulkan "$OUT/scene/scene.png" -o "$OUT/x.png"
     contains aa_vulkan_noicd "$OUT/aa_vulkan_noicd.err" "looked for a Vulkan 1.3 device with a compute queue"
     [ ! -e "$OUT/x.png" ] || { echo "FAIL aa_vulkan: a failed run left x.png"; fail=1; }
+    # The AO passes on the GPU (#36): the rendered scene's depth never leaves the device; the
+    # PNG within the parity bound of tests/gpu/test_gpu_ao.cpp (none beyond 4/255, at least
+    # 99.9 % within 1/255); the upload path; --save-passes on both backends; errors.
+    PNGDIFF="$(dirname "$0")/png_diff.py"
+    for preset in paper released; do
+      check ao_vulkan_$preset 0 $VK "$SSFX" ao --backend vulkan --scene atrium --size 96x54 -p guardBand=8 --preset $preset -o "$OUT/ao_vk_$preset.png"
+      check ao_cpu_$preset 0 $VK "$SSFX" ao --scene atrium --size 96x54 -p guardBand=8 --preset $preset -o "$OUT/ao_cpu_$preset.png"
+      python3 "$PNGDIFF" "$OUT/ao_cpu_$preset.png" "$OUT/ao_vk_$preset.png" --max 4 --share 0.001 || { echo "FAIL ao_vulkan_$preset: beyond the parity bound"; fail=1; }
+    done
+    check ao_vulkan_depth 0 $VK "$SSFX" ao -m alchemy --backend vulkan --depth "$OUT/r/depth.exr" --camera "$OUT/r/camera.json" -p guardBand=8 -o "$OUT/r_alchemy_vk.png" --save-passes "$OUT/passes_vk"
+    check ao_cpu_depth 0 "$SSFX" ao -m alchemy --depth "$OUT/r/depth.exr" --camera "$OUT/r/camera.json" -p guardBand=8 -o "$OUT/r_alchemy.png" --save-passes "$OUT/passes_cpu"
+    python3 "$PNGDIFF" "$OUT/r_alchemy.png" "$OUT/r_alchemy_vk.png" --max 4 --share 0.001 || { echo "FAIL ao_vulkan_depth: beyond the parity bound"; fail=1; }
+    for f in z.exr raw.exr horizontal.exr ao.exr; do
+      [ -s "$OUT/passes_vk/$f" ] && [ -s "$OUT/passes_cpu/$f" ] || { echo "FAIL ao save-passes: no $f"; fail=1; }
+    done
+    check ao_vulkan_passes 0 $VK "$SSFX" ao --backend vulkan --scene room --size 64x36 -p guardBand=4 --save-passes "$OUT/passes_sao"
+    for f in z.exr z1.exr z5.exr raw.exr quad.exr horizontal.exr ao.exr; do
+      [ -s "$OUT/passes_sao/$f" ] || { echo "FAIL ao_vulkan_passes: no $f"; fail=1; }
+    done
+    check ao_vulkan_rt 2 $VK "$SSFX" ao -m raytraced --backend vulkan --scene room --size 32x18 -o "$OUT/x.png"
+    contains ao_vulkan_rt "$OUT/ao_vulkan_rt.err" "no GPU pass"
+    check ao_vulkan_nodevice 2 $VK "$SSFX" ao --backend vulkan --device no-such-gpu --scene room --size 32x18 -o "$OUT/x.png"
+    contains ao_vulkan_nodevice "$OUT/ao_vulkan_nodevice.err" "no-such-gpu"
+    check ao_device_cpu 2 "$SSFX" ao --device 0 --scene room --size 32x18 -o "$OUT/x.png"
+    contains ao_device_cpu "$OUT/ao_device_cpu.err" "--device goes with --backend vulkan"
+    [ ! -e "$OUT/x.png" ] || { echo "FAIL ao_vulkan: a failed run left x.png"; fail=1; }
     check bench_vulkan 0 $VK "$SSFX" bench --backend vulkan --size 64 --reps 4 --warmup 0 --methods blur,ddaa2 -p edges=list --json "$OUT/bench_vk.json"
     contains bench_vulkan "$OUT/bench_vk.json" '"edges": "list"'
     contains bench_vulkan "$OUT/bench_vk.json" '"backend": "vulkan"'

@@ -33,7 +33,9 @@
 #include "ssfx/ao/sao.hpp"
 #include "ssfx/core/error.hpp"
 #include "ssfx/gpu/ao.hpp"
+#include "ssfx/render/renderer.hpp"
 #include "ssfx/scene/analytic.hpp"
+#include "ssfx/scene/scene.hpp"
 #include "ssfx/vk/resources.hpp"
 
 namespace ssfx {
@@ -404,6 +406,65 @@ TEST(GpuAo, BadInputsGiveErrors) {
     out.layout = vk::ImageLayout::eShaderReadOnlyOptimal;
     expectError(goodDepth, out, "output layout");
     expectNoValidationMessages();
+}
+
+TEST(GpuAo, RendererAndSaoOnOneDevice) {
+    // The renderer's depth image read in place (DEPTH_READ_ONLY_OPTIMAL, recorded into the
+    // draw's command buffer), against the CPU's SAO on the same draw read back.
+    REQUIRE_DEVICE();
+    vkx::ContextOptions o;
+    o.validation = true;
+    o.graphics = true;
+    std::shared_ptr<vkx::Context> ctx;
+    try {
+        ctx = vkx::Context::create(o);
+    } catch (const Error& e) {
+        GTEST_SKIP() << "no Vulkan device with graphics: " << e.what();
+    }
+    render::Renderer renderer(ctx);
+    const scene::Scene atrium = scene::loadScene("atrium");
+    const scene::View view = atrium.views.at(0).second;
+    const int w = 160, h = 90, g = 12;
+    for (const DepthFormat format : {DepthFormat::D32F, DepthFormat::D16}) {
+        const ao::SaoParams p = saoWith("paper", g);
+        gpu::Sao sao(ctx, p);
+        const vkx::Image out = ctx->createImage(vk::Format::eR32Sfloat, w, h,
+                                                vk::ImageUsageFlagBits::eStorage | vk::ImageUsageFlagBits::eTransferSrc,
+                                                vk::ImageAspectFlagBits::eColor);
+        const vk::raii::ImageView outView(
+            ctx->device, vk::ImageViewCreateInfo({}, *out.image, vk::ImageViewType::e2D, vk::Format::eR32Sfloat, {},
+                                                 {vk::ImageAspectFlagBits::eColor, 0, 1, 0, 1}));
+        const vkx::Buffer download =
+            ctx->createBuffer(vk::DeviceSize(w) * h * 4, vk::BufferUsageFlagBits::eTransferDst, true);
+        using S = vk::PipelineStageFlagBits;
+        using A = vk::AccessFlagBits;
+        using L = vk::ImageLayout;
+        const scene::CameraSetup setup = scene::cameraSetup(view, w, h, g);
+        renderer.renderDepthOnDevice(
+            atrium, view, w, h, format, g, [&](const vk::raii::CommandBuffer& cmd, const render::DeviceDepth& d) {
+                vkx::transition(cmd, out, L::eUndefined, L::eGeneral, S::eTopOfPipe, {}, S::eComputeShader,
+                                A::eShaderWrite);
+                sao.record(cmd, gpu::ImageRef{d.view, d.format, d.usage, d.width, d.height, d.layout}, setup.camera,
+                           gpu::ImageRef{*outView, vk::Format::eR32Sfloat, vk::ImageUsageFlagBits::eStorage,
+                                         std::uint32_t(w), std::uint32_t(h), L::eGeneral});
+                vkx::transition(cmd, out, L::eGeneral, L::eTransferSrcOptimal, S::eComputeShader, A::eShaderWrite,
+                                S::eTransfer, A::eTransferRead);
+                cmd.copyImageToBuffer(*out.image, L::eTransferSrcOptimal, *download.buffer,
+                                      vk::BufferImageCopy(0, 0, 0, {vk::ImageAspectFlagBits::eColor, 0, 0, 1},
+                                                          {0, 0, 0}, {std::uint32_t(w), std::uint32_t(h), 1}));
+            });
+        ImageF gpuAo(w, h);
+        std::memcpy(gpuAo.data(), download.mapped, std::size_t(w) * h * 4);
+        const render::DepthRender cpuDepth = renderer.renderDepth(atrium, view, w, h, format, g);
+        const AbsDiff d = absDiff(gpuAo, ao::sao(cpuDepth.depth.view(), cpuDepth.camera.camera, p));
+        EXPECT_GE(d.within1, 0.999) << int(format);
+        EXPECT_LE(d.max, 4.0 / 255.0) << int(format);
+        double sum = 0;  // not a blank image
+        for (const float v : gpuAo.pixels()) sum += v;
+        EXPECT_LT(sum / double(gpuAo.pixelCount()), 0.99);
+    }
+    const auto messages = ctx->validationMessages();
+    EXPECT_TRUE(messages.empty()) << messages.size() << " validation message(s), the first: " << messages.front();
 }
 
 }  // namespace

@@ -60,5 +60,8 @@ ImageF alchemyReference(ImageView<const float> depth, const Camera& camera, cons
 //! The whole baseline: depth (guard band included) -> A for the inner region.
 ImageF alchemy(ImageView<const float> depth, const Camera& camera, const AlchemyParams& params = {},
                const Exec& exec = {});
+//! The same, with every intermediate copied into `stages` (not null; no pyramid, no quad pass).
+ImageF alchemy(ImageView<const float> depth, const Camera& camera, const AlchemyParams& params, const Exec& exec,
+               AoStages* stages);
 
 }  // namespace ssfx::ao

@@ -252,11 +252,26 @@ struct BilateralTaps {
 };
 BilateralTaps bilateralTaps(const BilateralParams& p);
 
+//! Every intermediate of one run (`ssfx ao --save-passes`, the GPU passes' parity tests).
+struct AoStages {
+    ImageF z;                     //!< camera-space z of the whole buffer (-infinity: sky)
+    std::vector<ImageF> pyramid;  //!< SAO with usePyramid: levels 1..maxMip
+    Region work;                  //!< the region that raw, quad and horizontal cover (buffer pixels)
+    ImageF raw;                   //!< the sample pass's A
+    ImageF quad;                  //!< SAO: after the 2x2 quad bilateral (packBlurInput: 8-bit A)
+    ImageF zBlur;                 //!< SAO with packBlurInput: the z the blur reads (work region; else empty)
+    ImageF horizontal;            //!< after the horizontal bilateral pass (releasedPacking: 8-bit A)
+    ImageF result;                //!< the output: A of the inner region
+};
+
 //! Per-pass timings of one sao() run, for the speed experiments (milliseconds).
 struct SaoTimings {
     double z, pyramid, sample, blur, total;
 };
 ImageF sao(ImageView<const float> depth, const Camera& camera, const SaoParams& params, const Exec& exec,
            SaoTimings* timings);
+//! The same, with every intermediate copied into `stages` (not null).
+ImageF sao(ImageView<const float> depth, const Camera& camera, const SaoParams& params, const Exec& exec,
+           AoStages* stages);
 
 }  // namespace ssfx::ao

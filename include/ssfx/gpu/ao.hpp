@@ -37,10 +37,10 @@
 
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
-#include "ssfx/ao/alchemy.hpp"
-#include "ssfx/ao/sao.hpp"
+#include "ssfx/ao/registry.hpp"
 #include "ssfx/core/camera.hpp"
 #include "ssfx/core/image.hpp"
 #include "ssfx/gpu/aa.hpp"
@@ -48,17 +48,8 @@
 
 namespace ssfx::gpu {
 
-//! Every intermediate of one run, read back (tests, `ssfx ao --save-passes`).
-struct AoStages {
-    ImageF z;                     //!< camera-space z of the whole buffer (-infinity: sky)
-    std::vector<ImageF> pyramid;  //!< SAO with usePyramid: levels 1..maxMip
-    ao::Region work;              //!< the region that raw, quad and horizontal cover (buffer pixels)
-    ImageF raw;                   //!< the sample pass's A
-    ImageF quad;                  //!< SAO: after the 2x2 quad bilateral (packBlurInput: 8-bit A)
-    ImageF zBlur;                 //!< SAO with packBlurInput: the z the blur reads (work region; else empty)
-    ImageF horizontal;            //!< after the horizontal bilateral pass
-    ImageF result;                //!< the output: A of the inner region
-};
+//! Every intermediate of one run, read back (the CPU's struct: ao::AoStages).
+using ao::AoStages;
 
 //! One dispatch group of the last run(): its stage and GPU time (timestamps around it).
 struct AoDispatchTime {
@@ -68,55 +59,60 @@ struct AoDispatchTime {
 
 class AoPipeline;
 
-//! SAO (ao::sao()) on one device.
-class Sao {
+//! An AO method's GPU pipeline on one device (the shared part of Sao and Alchemy).
+class AoPass {
 public:
-    //! Throws ssfx::Error for a bad parameter (ao::validate) or a device without push descriptors.
-    Sao(std::shared_ptr<vkx::Context> ctx, const ao::SaoParams& params = {});
-    ~Sao();
-    Sao(const Sao&) = delete;
-    Sao& operator=(const Sao&) = delete;
+    //! By the AO registry's id ("sao" or "alchemy"; ao::aoMethods()) and its params struct.
+    //! Throws ssfx::Error for a method without a GPU pipeline (raytraced), a bad parameter
+    //! (ao::validate) or a device without push descriptors.
+    AoPass(std::shared_ptr<vkx::Context> ctx, std::string_view method, const ao::AoParams& params);
+    ~AoPass();
+    AoPass(const AoPass&) = delete;
+    AoPass& operator=(const AoPass&) = delete;
 
-    const ao::SaoParams& params() const { return params_; }
     //! Records the passes (see the contract above). Throws ssfx::Error when an image has the
     //! wrong format, usage, layout or size, or exceeds the device's limits.
     void record(const vk::raii::CommandBuffer& cmd, const ImageRef& depth, const Camera& camera,
                 const ImageRef& output);
     //! Convenience: uploads `depth` into an image of `format` (values rounded to the format as
     //! ssfx::quantizeDepth does), runs, waits and returns A for the inner region. Throws
-    //! ssfx::Error naming the first depth that is NaN or outside [0, 1], as ao::sao().
+    //! ssfx::Error naming the first depth that is NaN or outside [0, 1], as the CPU does.
     ImageF run(ImageView<const float> depth, const Camera& camera, DepthFormat format = DepthFormat::D32F);
     //! The same, with every intermediate read back.
     AoStages runStages(ImageView<const float> depth, const Camera& camera, DepthFormat format = DepthFormat::D32F);
-    //! GPU time of the last run() in milliseconds (0 when the queue has no timestamps), and per stage.
+    //! GPU time of the last run() in milliseconds (0 when the queue has no timestamps), and
+    //! per stage. record() into a caller's command buffer writes no timestamps.
     double lastMilliseconds() const;
     const std::vector<AoDispatchTime>& lastDispatches() const;
+
+private:
+    std::unique_ptr<AoPipeline> impl_;
+};
+
+//! SAO (ao::sao()) on one device.
+class Sao : public AoPass {
+public:
+    Sao(std::shared_ptr<vkx::Context> ctx, const ao::SaoParams& params = {})
+        : AoPass(std::move(ctx), "sao", params), params_(params) {}
+    const ao::SaoParams& params() const { return params_; }
 
 private:
     ao::SaoParams params_;
-    std::unique_ptr<AoPipeline> impl_;
 };
 
-//! The AlchemyAO baseline (ao::alchemy()) on one device: the same contract as Sao.
-class Alchemy {
+//! The AlchemyAO baseline (ao::alchemy()) on one device.
+class Alchemy : public AoPass {
 public:
-    Alchemy(std::shared_ptr<vkx::Context> ctx, const ao::AlchemyParams& params = {});
-    ~Alchemy();
-    Alchemy(const Alchemy&) = delete;
-    Alchemy& operator=(const Alchemy&) = delete;
-
+    Alchemy(std::shared_ptr<vkx::Context> ctx, const ao::AlchemyParams& params = {})
+        : AoPass(std::move(ctx), "alchemy", params), params_(params) {}
     const ao::AlchemyParams& params() const { return params_; }
-    void record(const vk::raii::CommandBuffer& cmd, const ImageRef& depth, const Camera& camera,
-                const ImageRef& output);
-    ImageF run(ImageView<const float> depth, const Camera& camera, DepthFormat format = DepthFormat::D32F);
-    AoStages runStages(ImageView<const float> depth, const Camera& camera, DepthFormat format = DepthFormat::D32F);
-    double lastMilliseconds() const;
-    const std::vector<AoDispatchTime>& lastDispatches() const;
 
 private:
     ao::AlchemyParams params_;
-    std::unique_ptr<AoPipeline> impl_;
 };
+
+//! The AO registry's methods that have a GPU pipeline: sao, alchemy.
+bool hasGpuAo(std::string_view method);
 
 //! The Vulkan format of a depth format's images (D16_UNORM, X8_D24_UNORM_PACK32, D32_SFLOAT).
 vk::Format depthVkFormat(DepthFormat format);

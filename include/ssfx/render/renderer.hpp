@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -16,6 +17,8 @@
 #include "ssfx/scene/gbuffer.hpp"
 #include "ssfx/scene/scene.hpp"
 #include "ssfx/vk/device.hpp"
+
+#include <vulkan/vulkan_raii.hpp>
 
 namespace ssfx::vkx {
 class Context;
@@ -42,6 +45,17 @@ struct ColorRender {
     double gpuMs = 0;
 };
 
+//! A depth image while it is on the device (Renderer::renderDepthOnDevice).
+struct DeviceDepth {
+    vk::ImageView view;  //!< a 2-D view of the depth aspect
+    vk::Format format = vk::Format::eUndefined;
+    vk::ImageUsageFlags usage;  //!< includes SAMPLED
+    std::uint32_t width = 0, height = 0;
+    vk::ImageLayout layout = vk::ImageLayout::eDepthReadOnlyOptimal;
+};
+//! Records GPU work after the draw, into the draw's command buffer.
+using DepthRecorder = std::function<void(const vk::raii::CommandBuffer&, const DeviceDepth&)>;
+
 class Renderer {
 public:
     //! Creates its own Vulkan context (instance, device, a graphics queue). Throws ssfx::Error
@@ -63,6 +77,13 @@ public:
     //! Depth of `view` at width x height plus a guard band of `guard` pixels on each side.
     DepthRender renderDepth(const scene::Scene& scene, const scene::View& view, int width, int height,
                             DepthFormat format = DepthFormat::D32F, int guard = 0);
+    //! The same draw, with the depth left on the device: `after` records into the draw's
+    //! command buffer, after it, with the depth image in DEPTH_READ_ONLY_OPTIMAL and the
+    //! draw's writes made visible to compute-shader reads (how the GPU AO passes read the
+    //! renderer's depth without a copy). Nothing is read back; returns when the submission
+    //! is done, with DepthRender::depth empty.
+    DepthRender renderDepthOnDevice(const scene::Scene& scene, const scene::View& view, int width, int height,
+                                    DepthFormat format, int guard, const DepthRecorder& after);
     //! G-buffer at m x m supersampling (m = 1..4) of a width x height image.
     scene::GBuffer renderGBuffer(const scene::Scene& scene, const scene::View& view, int width, int height, int m);
     //! Forward-shaded colour at (scale width) x (scale height).
