@@ -32,6 +32,7 @@
 #include "ssfx/io/png.hpp"
 #ifdef SSFX_HAVE_GPU
 #include "ssfx/gpu/aa.hpp"
+#include "ssfx/gpu/ao.hpp"
 #endif
 
 namespace py = pybind11;
@@ -476,10 +477,16 @@ Camera cameraFrom(const py::handle& camera) {
 }
 
 py::array_t<float> runAo(const char* id, const py::handle& depthArg, const py::handle& camera,
-                         const py::handle& presetArg, const py::handle& threadsArg_, const py::kwargs& kwargs) {
+                         const py::handle& presetArg, const py::handle& threadsArg_, const py::handle& backendArg,
+                         const py::handle& deviceArg, const py::kwargs& kwargs) {
     const py::array depth = arrayArg(depthArg, "depth");
     const std::optional<std::string> preset = optionalStrArg(presetArg, "preset");
     const int threads = threadsArg(threadsArg_);
+    const std::string backend = strArg(backendArg, "backend");
+    if (backend != "cpu" && backend != "vulkan")
+        throw Error(fmt::format("backend: '{}' is not cpu or vulkan", backend));
+    const std::optional<std::string> device = optionalStrArg(deviceArg, "device");
+    if (device && backend != "vulkan") throw Error("device: goes with backend='vulkan'");
     const ao::AoMethodInfo& m = ao::aoMethodById(id);
     ImageF copy;
     const ImageView<const float> view = floatView(depth, "depth", copy);
@@ -489,7 +496,17 @@ py::array_t<float> runAo(const char* id, const py::handle& depthArg, const py::h
     m.validate(params);
     const Exec exec{threads};
     ImageF a;
-    {
+    if (backend == "vulkan") {
+#ifdef SSFX_HAVE_GPU
+        GpuContext& g = gpuContext(device.value_or(""));
+        ao::depthToZ(view, cam, exec);  // the CPU's checks and messages, before any GPU work
+        py::gil_scoped_release release;
+        std::lock_guard lock(g.mutex);
+        a = gpu::AoPass(g.ctx, id, params).run(view, cam);
+#else
+        throw Error("backend: this ssfx was built without the GPU backend (SSFX_BUILD_GPU=OFF); use backend='cpu'");
+#endif
+    } else {
         py::gil_scoped_release release;
         a = m.run(ao::AoInput{view, cam, nullptr, {}}, params, exec);
     }
@@ -592,17 +609,22 @@ PYBIND11_MODULE(_ssfx, m) {
     m.def(
         "sao",
         [](const py::handle& d, const py::handle& c, const py::handle& preset, const py::handle& threads,
-           const py::kwargs& kw) { return runAo("sao", d, c, preset, threads, kw); },
+           const py::handle& backend, const py::handle& device,
+           const py::kwargs& kw) { return runAo("sao", d, c, preset, threads, backend, device, kw); },
         py::arg("depth"), py::arg("camera"), py::arg("preset") = py::none(), py::arg("threads") = 0,
+        py::arg("backend") = "cpu", py::arg("device") = py::none(),
         "Scalable Ambient Obscurance: depth (H, W) float32 depth-buffer values in [0, 1], camera a dict "
         "{'fov_y_deg', 'z_near', 'z_far'} or a camera .json path; returns visibility (H - 2g, W - 2g) float32 "
-        "(g = guardBand). preset: 'released' for the authors' released shaders' configuration.");
+        "(g = guardBand). preset: 'released' for the authors' released shaders' configuration. backend: 'cpu' "
+        "(default) or 'vulkan' (the GPU passes on one context per process and device, made when first needed; "
+        "the same result as the CLI's --backend vulkan); device: with 'vulkan', an index or part of a name.");
     m.def(
         "alchemy",
         [](const py::handle& d, const py::handle& c, const py::handle& preset, const py::handle& threads,
-           const py::kwargs& kw) { return runAo("alchemy", d, c, preset, threads, kw); },
+           const py::handle& backend, const py::handle& device,
+           const py::kwargs& kw) { return runAo("alchemy", d, c, preset, threads, backend, device, kw); },
         py::arg("depth"), py::arg("camera"), py::arg("preset") = py::none(), py::arg("threads") = 0,
-        "The AlchemyAO baseline, as sao().");
+        py::arg("backend") = "cpu", py::arg("device") = py::none(), "The AlchemyAO baseline, as sao().");
     m.def(
         "read_png", [](const py::handle& path) { return toArray(io::readPng(pathArg(path, "path")).view(), 4); },
         py::arg("path"), "A PNG as (H, W, 4) uint8.");

@@ -399,6 +399,14 @@ void addAo(CLI::App& eval) {
                     "Rendered scenes for the accuracy table, SCENE[:VIEW] (repeatable; "
                     "'none' for none)");
     cmd->add_option("--threads", *threads, "Worker threads (0 = all)")->check(CLI::Range(0, 1024));
+    cmd->add_option("--backend", o->backend,
+                    "cpu (default) or vulkan: also the GPU passes, their accuracy beside the CPU's and their GPU "
+                    "timestamps (radius sweep, per-pass table)")
+        ->check(CLI::IsMember({"cpu", "vulkan"}));
+    cmd->add_option("--device", o->device, "With --backend vulkan: a device index or part of its name");
+    cmd->add_flag("--speed-only", o->speedOnly,
+                  "Only the speed experiments: Figure 5 (radius sweep) and Table 3 (per-pass times), with "
+                  "--backend vulkan also from GPU timestamps");
     cmd->footer(
         "Scenes: 'corner' (floor meeting a wall) and 'room' (walls, boxes from 5 cm to 2 m, a stair, a\n"
         "column, spheres), ray cast exactly; for the accuracy table also the atrium, the Cornell box,\n"
@@ -406,6 +414,7 @@ void addAo(CLI::App& eval) {
         "their triangles ray traced with Embree. The ground truth is ray-traced obscurance with SAO's\n"
         "falloff (docs/evaluation.md).");
     cmd->callback([o, threads, scenes] {
+        if (!o->device.empty() && o->backend != "vulkan") throw Error("--device goes with --backend vulkan");
         ProgressLine line("eval", true);
         if (!(scenes->size() == 1 && scenes->front() == "none")) o->renderedScenes = renderedAoScenes(*scenes);
         o->exec = Exec{*threads};

@@ -17,6 +17,9 @@
 #include "ssfx/eval/timing.hpp"
 #include "ssfx/io/png.hpp"
 #include "ssfx/scene/analytic.hpp"
+#ifdef SSFX_HAVE_GPU
+#include "ssfx/gpu/ao.hpp"
+#endif
 
 namespace ssfx::eval {
 
@@ -71,6 +74,9 @@ struct Context {
     const AoExperimentOptions& o;
     fs::path out;
     nlohmann::ordered_json& j;
+#ifdef SSFX_HAVE_GPU
+    std::shared_ptr<vkx::Context> gpu;  //!< --backend vulkan
+#endif
     void say(const std::string& s) const {
         if (o.progress) o.progress({s});
     }
@@ -375,6 +381,8 @@ Block accuracyBlock(const Context& c, const std::vector<AoRenderedScene>& entrie
         "differences from SAO without a pyramid x4 around grey: images/ao_SCENE_METHOD_diff.png.",
         rays, aw, ah, guard);
     std::vector<std::vector<double>> psnrTable(variants.size(), std::vector<double>(entries.size()));
+    std::vector<std::vector<double>> gpuRows(2);  // --backend vulkan: sao (rotated grid), alchemy
+    double gpuGap = 0;                            // the largest |GPU - CPU| PSNR difference (dB)
     for (std::size_t si = 0; si < entries.size(); ++si) {
         const AoRenderedScene& e = entries[si];
         c.say(fmt::format("ao: {} ray-traced truth ({} rays per pixel)", e.name, rays));
@@ -409,6 +417,21 @@ Block accuracyBlock(const Context& c, const std::vector<AoRenderedScene>& entrie
                              grey(difference(a, noPyramid), 0.5f, 4.0f).view());
             c.j["accuracy"][e.name][variants[v].name] = {{"psnr_vs_raytraced", psnrTable[v][si]}};
         }
+#ifdef SSFX_HAVE_GPU
+        if (c.gpu) {  // the GPU passes on the same depth, against the same truth
+            ao::SaoParams sp;
+            sp.guardBand = guard;
+            ao::AlchemyParams ap;
+            ap.guardBand = guard;
+            const double gs = psnrFromMse(mse(gpu::Sao(c.gpu, sp).run(e.depth.view(), e.camera).view(), truth.view()));
+            const double ga =
+                psnrFromMse(mse(gpu::Alchemy(c.gpu, ap).run(e.depth.view(), e.camera).view(), truth.view()));
+            gpuRows[0].push_back(gs), gpuRows[1].push_back(ga);
+            c.j["accuracy"][e.name]["sao, rotated grid (vulkan)"] = {{"psnr_vs_raytraced", gs}};
+            c.j["accuracy"][e.name]["alchemy (vulkan)"] = {{"psnr_vs_raytraced", ga}};
+            gpuGap = std::max({gpuGap, std::abs(gs - psnrTable[2][si]), std::abs(ga - psnrTable[0][si])});
+        }
+#endif
     }
     b.table.header = {"method"};
     for (const auto& e : entries) b.table.header.push_back(e.name);
@@ -416,6 +439,16 @@ Block accuracyBlock(const Context& c, const std::vector<AoRenderedScene>& entrie
         std::vector<std::string> row{variants[v].name};
         for (std::size_t si = 0; si < entries.size(); ++si) row.push_back(fmt::format("{:.2f}", psnrTable[v][si]));
         b.table.addRow(row);
+    }
+    if (!gpuRows[0].empty()) {
+        for (std::size_t k = 0; k < 2; ++k) {
+            std::vector<std::string> row{k == 0 ? "sao, rotated grid (vulkan)" : "alchemy (vulkan)"};
+            for (double v : gpuRows[k]) row.push_back(fmt::format("{:.2f}", v));
+            b.table.addRow(row);
+        }
+        b.after = fmt::format(
+            "The GPU passes (--backend vulkan) against the same truth: at most {:.4f} dB from the CPU's rows.", gpuGap);
+        c.j["accuracy"]["gpu_max_abs_db_difference"] = gpuGap;
     }
     // The pictures: the room with every filter, the first rendered scene with the main three.
     for (const char* name :
@@ -529,6 +562,122 @@ Block passTimesBlock(const Context& c, const scene::AnalyticScene& room, int rep
     return b;
 }
 
+#ifdef SSFX_HAVE_GPU
+// ---- Figure 5 and Table 3 on the GPU: timestamps around each pass ------------------------
+// A pass's time in one run of `pass` (0 when the stage did not run).
+double stageMs(const gpu::AoPass& pass, const char* stage) {
+    for (const auto& d : pass.lastDispatches())
+        if (d.stage == stage) return d.milliseconds;
+    return 0;
+}
+
+Block gpuRadiusScalingBlock(const Context& c, const scene::AnalyticScene& room, int reps) {
+    const int fw = c.o.quick ? 320 : 2560, fh = c.o.quick ? 200 : 1600;
+    c.say(fmt::format("ao: GPU sample-pass time vs radius at {}x{} (Figure 5, {})", fw, fh, c.gpu->info.name));
+    const std::vector<double> radii{0.1, 0.25, 0.5, 1.0, 1.5, 2.0, 3.0, 4.0};
+    std::vector<Series> timing{{"alchemy", {}}, {"sao, no pyramid", {}}, {"sao", {}}};
+    const scene::GeometryBuffer g = scene::castGeometry(room, kCamera, fw, fh, c.o.exec);
+    // One pipeline per method and radius, made first; then interleaved rounds (every
+    // pipeline once per round), so that a change of the device's clock hits all alike.
+    std::vector<std::vector<std::unique_ptr<gpu::AoPass>>> passes(3);
+    for (double r : radii) {
+        ao::AlchemyParams ap;
+        ap.radius = float(r);
+        ao::SaoParams sp;
+        sp.radius = float(r);
+        ao::SaoParams flat = sp;
+        flat.usePyramid = false;
+        passes[0].push_back(std::make_unique<gpu::AoPass>(c.gpu, "alchemy", ap));
+        passes[1].push_back(std::make_unique<gpu::AoPass>(c.gpu, "sao", flat));
+        passes[2].push_back(std::make_unique<gpu::AoPass>(c.gpu, "sao", sp));
+    }
+    std::vector<std::vector<std::vector<double>>> ms(3, std::vector<std::vector<double>>(radii.size()));
+    for (int round = -1; round < reps; ++round)  // round -1: warm-up
+        for (std::size_t ri = 0; ri < radii.size(); ++ri)
+            for (std::size_t m = 0; m < 3; ++m) {
+                passes[m][ri]->run(g.depth.view(), kCamera);
+                if (round >= 0) ms[m][ri].push_back(stageMs(*passes[m][ri], "sample"));
+            }
+    for (std::size_t m = 0; m < 3; ++m)
+        for (std::size_t ri = 0; ri < radii.size(); ++ri) timing[m].values.push_back(median(ms[m][ri]));
+    io::writePng((c.out / "plots" / "ao_radius_scaling_gpu.png").string(),
+                 lineChart(radii, timing,
+                           {880, 420, fmt::format("GPU AO sample pass time vs radius, {}x{}", fw, fh),
+                            "world-space radius (m)", "median time (ms)", false, true})
+                     .view());
+    Block b;
+    b.heading = fmt::format("GPU sample-pass time vs radius (paper Figure 5), {}x{}, {}, median of {} (ms)", fw, fh,
+                            c.gpu->info.name, reps);
+    b.table.header = {"method"};
+    for (double r : radii) b.table.header.push_back(fmt::format("{} m", r));
+    for (const auto& s : timing) {
+        std::vector<std::string> row{s.name};
+        for (double v : s.values) row.push_back(fmt::format("{:.3f}", v));
+        b.table.addRow(row);
+        c.j["gpu"]["radius_scaling"][s.name] = s.values;
+    }
+    const double saoFlat = timing[2].values[7] / timing[2].values[1];
+    const double alchemyGrowth = timing[0].values[7] / timing[0].values[1];
+    const double speedup = timing[0].values[4] / timing[2].values[4];
+    b.after = fmt::format(
+        "GPU timestamps around the sample pass, interleaved rounds. Time at r = 4 m over r = 0.25 m: sao {:.2f}x, "
+        "alchemy {:.2f}x. alchemy / sao at r = 1.5 m: {:.2f}x.",
+        saoFlat, alchemyGrowth, speedup);
+    b.figures.push_back({"plots/ao_radius_scaling_gpu.png", "GPU AO time vs radius", Figure::Kind::Plot, 880, 420});
+    c.j["gpu"]["device"] = c.gpu->info.name;
+    c.j["gpu"]["radius_scaling"]["radii_m"] = radii;
+    c.j["gpu"]["radius_scaling"]["sao_r4_over_r025"] = saoFlat;
+    c.j["gpu"]["radius_scaling"]["alchemy_r4_over_r025"] = alchemyGrowth;
+    c.j["gpu"]["radius_scaling"]["alchemy_over_sao_r15"] = speedup;
+    return b;
+}
+
+Block gpuPassTimesBlock(const Context& c, const scene::AnalyticScene& room, int reps) {
+    c.say(fmt::format("ao: GPU per-pass times (Table 3, {})", c.gpu->info.name));
+    struct Res {
+        int w, h, g;
+    };
+    const std::vector<Res> sizes =
+        c.o.quick ? std::vector<Res>{{320, 180, 32}}
+                  : std::vector<Res>{{1280, 720, 128}, {1920, 1080, 192}, {1920, 1200, 192}, {2560, 1600, 256}};
+    Block b;
+    b.heading = fmt::format("GPU per-pass times (paper Table 3), {}, r = 1 m, median of {} runs (ms)",
+                            c.gpu->info.name, reps + 2);
+    b.table.header = {"resolution", "guard band", "z", "z pyramid", "AO samples", "2x2", "blur", "total", "alchemy total"};
+    for (const Res& r : sizes) {
+        const int bw = r.w + 2 * r.g, bh = r.h + 2 * r.g;
+        const scene::GeometryBuffer g = scene::castGeometry(room, kCamera, bw, bh, c.o.exec);
+        ao::SaoParams p;
+        p.guardBand = r.g;
+        ao::AlchemyParams ap;
+        ap.guardBand = r.g;
+        gpu::Sao sao(c.gpu, p);
+        gpu::Alchemy alchemy(c.gpu, ap);
+        std::vector<double> z, pyr, sample, quad, blur, total, alchemyTotal;
+        for (int k = -1; k < reps + 2; ++k) {  // k = -1: warm-up; the two methods interleaved
+            sao.run(g.depth.view(), kCamera);
+            alchemy.run(g.depth.view(), kCamera);
+            if (k < 0) continue;
+            z.push_back(stageMs(sao, "z")), pyr.push_back(stageMs(sao, "pyramid"));
+            sample.push_back(stageMs(sao, "sample")), quad.push_back(stageMs(sao, "quad"));
+            blur.push_back(stageMs(sao, "blur h") + stageMs(sao, "blur v"));
+            total.push_back(sao.lastMilliseconds()), alchemyTotal.push_back(alchemy.lastMilliseconds());
+        }
+        auto f = [](const std::vector<double>& v) { return fmt::format("{:.3f}", median(v)); };
+        b.table.addRow({fmt::format("{}x{}", r.w, r.h), std::to_string(r.g), f(z), f(pyr), f(sample), f(quad), f(blur),
+                        f(total), f(alchemyTotal)});
+        c.j["gpu"]["pass_times"][fmt::format("{}x{}", r.w, r.h)] = {
+            {"guard", r.g},           {"z_ms", median(z)},         {"pyramid_ms", median(pyr)},
+            {"sample_ms", median(sample)}, {"quad_ms", median(quad)}, {"blur_ms", median(blur)},
+            {"total_ms", median(total)},  {"alchemy_total_ms", median(alchemyTotal)}};
+    }
+    b.after =
+        "GPU timestamps around each pass (the pyramid's levels together, both blur passes together) and around the "
+        "whole pipeline (total, which also counts the barriers between the passes).";
+    return b;
+}
+#endif
+
 }  // namespace
 
 Section runAoExperiments(const AoExperimentOptions& o) {
@@ -536,7 +685,22 @@ Section runAoExperiments(const AoExperimentOptions& o) {
     const fs::path out(o.outDir);
     for (const char* sub : {"images", "plots", "data"}) io::makeDirectories((out / sub).string());
     nlohmann::ordered_json j;
+#ifdef SSFX_HAVE_GPU
+    Context c{o, out, j, {}};
+#else
     const Context c{o, out, j};
+#endif
+    if (o.backend != "cpu" && o.backend != "vulkan")
+        throw Error(fmt::format("eval ao: backend '{}' (expected cpu or vulkan)", o.backend));
+    if (o.backend == "vulkan") {
+#ifdef SSFX_HAVE_GPU
+        vkx::ContextOptions co;
+        co.device = o.device;
+        c.gpu = vkx::Context::create(co);
+#else
+        throw Error("eval ao --backend vulkan: this ssfx was built without the GPU backend");
+#endif
+    }
     const scene::AnalyticScene room = scene::roomScene();
     const int aw = o.quick ? 192 : 960, ah = o.quick ? 108 : 540, guard = o.quick ? 16 : 64;
     const int rays = o.quick ? 32 : 256, reps = o.quick ? 1 : 3;
@@ -549,13 +713,21 @@ Section runAoExperiments(const AoExperimentOptions& o) {
         "and ray-traced ground truth ([doc](methods/raytraced.html)) on analytic scenes rendered by exact ray "
         "casting and, in the accuracy table, on scenes rasterised by the Vulkan renderer (D32F depth) with Embree ray "
         "tracing their triangles for the truth. Data: [ao/data/ao.json](ao/data/ao.json).";
-    s.blocks.push_back(zPrecisionBlock(c));
-    s.blocks.push_back(normalPrecisionBlock(c, room));
-    const std::vector<AoRenderedScene> entries = accuracyScenes(c, aw, ah, guard);
-    s.blocks.push_back(accuracyBlock(c, entries, aw, ah, guard, rays));
-    s.blocks.push_back(releasedComparison(c, entries, aw, ah, guard, rays));
+    if (!o.speedOnly) {
+        s.blocks.push_back(zPrecisionBlock(c));
+        s.blocks.push_back(normalPrecisionBlock(c, room));
+        const std::vector<AoRenderedScene> entries = accuracyScenes(c, aw, ah, guard);
+        s.blocks.push_back(accuracyBlock(c, entries, aw, ah, guard, rays));
+        s.blocks.push_back(releasedComparison(c, entries, aw, ah, guard, rays));
+    }
     s.blocks.push_back(radiusScalingBlock(c, room, reps));
     s.blocks.push_back(passTimesBlock(c, room, reps));
+#ifdef SSFX_HAVE_GPU
+    if (c.gpu) {
+        s.blocks.push_back(gpuRadiusScalingBlock(c, room, o.quick ? 1 : 5));
+        s.blocks.push_back(gpuPassTimesBlock(c, room, o.quick ? 1 : 5));
+    }
+#endif
 
     io::writeTextAtomic((out / "data" / "ao.json").string(), j.dump(1) + "\n");
     io::writeTextAtomic((out / "data" / "ao.md").string(), markdown(s));

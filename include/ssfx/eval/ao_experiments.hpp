@@ -44,6 +44,13 @@ struct AoExperimentOptions {
     Exec exec;
     ProgressFn progress;
     AoSceneSource renderedScenes;  //!< optional: real scenes joining the accuracy table
+    //! "cpu" (default) or "vulkan": also run SAO and AlchemyAO as the GPU passes
+    //! (ssfx/gpu/ao.hpp) on `device`: their accuracy beside the CPU's, the radius sweep and the
+    //! per-pass table from GPU timestamps. Needs a build with the GPU backend.
+    std::string backend = "cpu";
+    std::string device;
+    //! Only the speed experiments (Figure 5, Table 3 and, with vulkan, their GPU forms).
+    bool speedOnly = false;
 };
 
 //! Runs every experiment, writes the images, plots and data/ao.json, data/ao.md, and
