@@ -147,11 +147,11 @@ void run(const AoOptions& o, const CLI::App& cmd) {
             gpu::AoPass pass(ctx, method.id, params);
             const std::uint32_t ow = std::uint32_t(w), oh = std::uint32_t(h);
             const auto outUsage = vk::ImageUsageFlagBits::eStorage | vk::ImageUsageFlagBits::eTransferSrc;
-            const vkx::Image out = ctx->createImage(vk::Format::eR32Sfloat, ow, oh, outUsage,
-                                                    vk::ImageAspectFlagBits::eColor);
+            const vkx::Image out =
+                ctx->createImage(vk::Format::eR32Sfloat, ow, oh, outUsage, vk::ImageAspectFlagBits::eColor);
             const vk::raii::ImageView outView(
-                ctx->device, vk::ImageViewCreateInfo({}, *out.image, vk::ImageViewType::e2D, vk::Format::eR32Sfloat,
-                                                     {}, {vk::ImageAspectFlagBits::eColor, 0, 1, 0, 1}));
+                ctx->device, vk::ImageViewCreateInfo({}, *out.image, vk::ImageViewType::e2D, vk::Format::eR32Sfloat, {},
+                                                     {vk::ImageAspectFlagBits::eColor, 0, 1, 0, 1}));
             const vkx::Buffer download =
                 ctx->createBuffer(vk::DeviceSize(ow) * oh * 4, vk::BufferUsageFlagBits::eTransferDst, true);
             using S = vk::PipelineStageFlagBits;
@@ -163,10 +163,10 @@ void run(const AoOptions& o, const CLI::App& cmd) {
                 [&](const vk::raii::CommandBuffer& c, const render::DeviceDepth& d) {
                     vkx::transition(c, out, L::eUndefined, L::eGeneral, S::eTopOfPipe, {}, S::eComputeShader,
                                     A::eShaderWrite);
-                    pass.record(c, gpu::ImageRef{d.view, d.format, d.usage, d.width, d.height, d.layout},
-                                setup.camera, gpu::ImageRef{*outView, out.format, outUsage, ow, oh, L::eGeneral});
-                    vkx::transition(c, out, L::eGeneral, L::eTransferSrcOptimal, S::eComputeShader,
-                                    A::eShaderWrite, S::eTransfer, A::eTransferRead);
+                    pass.record(c, gpu::ImageRef{d.view, d.format, d.usage, d.width, d.height, d.layout}, setup.camera,
+                                gpu::ImageRef{*outView, out.format, outUsage, ow, oh, L::eGeneral});
+                    vkx::transition(c, out, L::eGeneral, L::eTransferSrcOptimal, S::eComputeShader, A::eShaderWrite,
+                                    S::eTransfer, A::eTransferRead);
                     c.copyImageToBuffer(*out.image, L::eTransferSrcOptimal, *download.buffer,
                                         vk::BufferImageCopy(0, 0, 0, {vk::ImageAspectFlagBits::eColor, 0, 0, 1},
                                                             {0, 0, 0}, {ow, oh, 1}));

@@ -323,8 +323,7 @@ ImageF sao(ImageView<const float> depth, const Camera& camera, const SaoParams& 
     return saoImpl(depth, camera, p, exec, timings, true);
 }
 
-ImageF sao(ImageView<const float> depth, const Camera& camera, const SaoParams& p, const Exec& exec,
-           AoStages* stages) {
+ImageF sao(ImageView<const float> depth, const Camera& camera, const SaoParams& p, const Exec& exec, AoStages* stages) {
     if (!stages) throw Error("sao: no AoStages to fill");
     return saoImpl(depth, camera, p, exec, nullptr, true, stages);
 }
@@ -333,7 +332,8 @@ namespace {
 // A copy of the region r of `img`.
 ImageF cropped(ImageView<const float> img, Region r) {
     ImageF out(r.width, r.height);
-    for (int y = 0; y < r.height; ++y) std::copy(img.row(r.y0 + y) + r.x0, img.row(r.y0 + y) + r.x0 + r.width, &out(0, y));
+    for (int y = 0; y < r.height; ++y)
+        std::copy(img.row(r.y0 + y) + r.x0, img.row(r.y0 + y) + r.x0 + r.width, &out(0, y));
     return out;
 }
 

@@ -641,9 +641,10 @@ Block gpuPassTimesBlock(const Context& c, const scene::AnalyticScene& room, int 
         c.o.quick ? std::vector<Res>{{320, 180, 32}}
                   : std::vector<Res>{{1280, 720, 128}, {1920, 1080, 192}, {1920, 1200, 192}, {2560, 1600, 256}};
     Block b;
-    b.heading = fmt::format("GPU per-pass times (paper Table 3), {}, r = 1 m, median of {} runs (ms)",
-                            c.gpu->info.name, reps + 2);
-    b.table.header = {"resolution", "guard band", "z", "z pyramid", "AO samples", "2x2", "blur", "total", "alchemy total"};
+    b.heading = fmt::format("GPU per-pass times (paper Table 3), {}, r = 1 m, median of {} runs (ms)", c.gpu->info.name,
+                            reps + 2);
+    b.table.header = {"resolution", "guard band", "z",     "z pyramid",    "AO samples",
+                      "2x2",        "blur",       "total", "alchemy total"};
     for (const Res& r : sizes) {
         const int bw = r.w + 2 * r.g, bh = r.h + 2 * r.g;
         const scene::GeometryBuffer g = scene::castGeometry(room, kCamera, bw, bh, c.o.exec);
@@ -666,10 +667,14 @@ Block gpuPassTimesBlock(const Context& c, const scene::AnalyticScene& room, int 
         auto f = [](const std::vector<double>& v) { return fmt::format("{:.3f}", median(v)); };
         b.table.addRow({fmt::format("{}x{}", r.w, r.h), std::to_string(r.g), f(z), f(pyr), f(sample), f(quad), f(blur),
                         f(total), f(alchemyTotal)});
-        c.j["gpu"]["pass_times"][fmt::format("{}x{}", r.w, r.h)] = {
-            {"guard", r.g},           {"z_ms", median(z)},         {"pyramid_ms", median(pyr)},
-            {"sample_ms", median(sample)}, {"quad_ms", median(quad)}, {"blur_ms", median(blur)},
-            {"total_ms", median(total)},  {"alchemy_total_ms", median(alchemyTotal)}};
+        c.j["gpu"]["pass_times"][fmt::format("{}x{}", r.w, r.h)] = {{"guard", r.g},
+                                                                    {"z_ms", median(z)},
+                                                                    {"pyramid_ms", median(pyr)},
+                                                                    {"sample_ms", median(sample)},
+                                                                    {"quad_ms", median(quad)},
+                                                                    {"blur_ms", median(blur)},
+                                                                    {"total_ms", median(total)},
+                                                                    {"alchemy_total_ms", median(alchemyTotal)}};
     }
     b.after =
         "GPU timestamps around each pass (the pyramid's levels together, both blur passes together) and around the "

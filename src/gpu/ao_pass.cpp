@@ -390,8 +390,14 @@ private:
 
         AoConstants pc{};
         pc.width = proj.width, pc.height = proj.height;
-        pc.zNear = float(camera.zNear), pc.zFar = float(camera.zFar);
-        pc.zNearFar = std::isinf(camera.zFar) ? 0.0f : float(camera.zNear * camera.zFar);
+        // The camera's doubles as float pairs hi + lo (depth_to_z.comp); zNear zFar rounded as the CPU's c0.
+        auto pair = [](double v, float& hi, float& lo) {
+            hi = float(v);
+            lo = std::isinf(v) ? 0.0f : float(v - double(hi));
+        };
+        pair(camera.zNear, pc.zNear, pc.zNearLo);
+        pair(camera.zFar, pc.zFar, pc.zFarLo);
+        pair(std::isinf(camera.zFar) ? 0.0 : camera.zNear * camera.zFar, pc.zNearFar, pc.zNearFarLo);
         const ao::PositionFactors f = ao::positionFactors(proj);
         pc.ax = f.ax, pc.bx = f.bx, pc.ay = f.ay, pc.by = f.by;
         pc.radiusS = -cfg_.radius * proj.pixelsPerMeter;  // as the CPU: (-radius * S) / z

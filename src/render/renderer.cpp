@@ -270,10 +270,9 @@ struct Renderer::Impl {
         vkx::Image depthImage = ctx.createImage(depthFormat, w, h, depthUsage, vk::ImageAspectFlagBits::eDepth);
         vk::raii::ImageView depth2d{nullptr};  // for `after`: a 2-D view (a sampled image's own is an array)
         if (after)
-            depth2d = vk::raii::ImageView(ctx.device, vk::ImageViewCreateInfo({}, *depthImage.image,
-                                                                              vk::ImageViewType::e2D, depthFormat, {},
-                                                                              {vk::ImageAspectFlagBits::eDepth, 0, 1,
-                                                                               0, 1}));
+            depth2d = vk::raii::ImageView(
+                ctx.device, vk::ImageViewCreateInfo({}, *depthImage.image, vk::ImageViewType::e2D, depthFormat, {},
+                                                    {vk::ImageAspectFlagBits::eDepth, 0, 1, 0, 1}));
         const bool readDepth = pass != Pass::Forward && !after;
         if (readDepth)
             result.depth = ctx.createBuffer(vk::DeviceSize(w) * h * depthBytes(depthFormat),
@@ -327,7 +326,8 @@ struct Renderer::Impl {
                 vkx::transition(cmd, depthImage, vk::ImageLayout::eDepthAttachmentOptimal,
                                 vk::ImageLayout::eDepthReadOnlyOptimal, S::eEarlyFragmentTests | S::eLateFragmentTests,
                                 A::eDepthStencilAttachmentWrite, S::eComputeShader, A::eShaderRead);
-                after(cmd, DeviceDepth{*depth2d, depthFormat, depthUsage, w, h, vk::ImageLayout::eDepthReadOnlyOptimal});
+                after(cmd,
+                      DeviceDepth{*depth2d, depthFormat, depthUsage, w, h, vk::ImageLayout::eDepthReadOnlyOptimal});
             }
             if (readDepth) {
                 vkx::transition(cmd, depthImage, vk::ImageLayout::eDepthAttachmentOptimal,

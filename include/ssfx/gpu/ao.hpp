@@ -30,9 +30,9 @@
 //    pipeline run at the same time (one pipeline per frame in flight).
 //
 // Parity with the CPU (docs/gpu.md gives the measured figures): every step but the sample
-// pass's sine and cosine is the CPU's float arithmetic, correctly rounded (depth -> z in
-// float rather than the CPU's double: a few ulps); the final A is within the bound that
-// tests/gpu/test_gpu_ao.cpp states.
+// pass's sine and cosine is the CPU's float arithmetic, correctly rounded, and depth -> z is
+// the CPU's double rounded once, in float pairs (one ulp off in rare pixels); the final A is
+// within the bound that tests/gpu/test_gpu_ao.cpp states (on lavapipe: the CPU's floats).
 #pragma once
 
 #include <memory>

@@ -11,25 +11,28 @@
 
 // X(type, name): the push constants in order, what changes with the call (sizes, regions,
 // the camera); what changes only with the params is in the tables buffer (below).
-#define SSFX_AO_CONSTANTS(X)                                                                         \
-    X(int, width) /* the z buffer (guard band included) */                                           \
-    X(int, height)                                                                                   \
-    X(int, regionX) /* the region the dispatch computes, in buffer pixels */                         \
-    X(int, regionY)                                                                                  \
-    X(int, regionW)                                                                                  \
-    X(int, regionH)                                                                                  \
-    X(int, srcX) /* bilateral: the source region (its taps' range), buffer pixels; pyramid: */       \
-    X(int, srcY) /* srcW x srcH is the finer level's size */                                         \
-    X(int, srcW)                                                                                     \
-    X(int, srcH)                                                                                     \
-    X(int, levels)     /* sample pass: pyramid levels above 0 that taps may read */                  \
-    X(float, zNear)    /* depth -> z (negative, m) */                                                \
-    X(float, zFar)     /* -infinity for an infinite far plane */                                     \
-    X(float, zNearFar) /* zNear zFar, rounded once */                                                \
-    X(float, ax)       /* position factors fx(x) = ax + bx x, fy(y) = ay + by y (ao_sampling.hpp) */ \
-    X(float, bx)                                                                                     \
-    X(float, ay)                                                                                     \
-    X(float, by)                                                                                     \
+#define SSFX_AO_CONSTANTS(X)                                                                   \
+    X(int, width) /* the z buffer (guard band included) */                                     \
+    X(int, height)                                                                             \
+    X(int, regionX) /* the region the dispatch computes, in buffer pixels */                   \
+    X(int, regionY)                                                                            \
+    X(int, regionW)                                                                            \
+    X(int, regionH)                                                                            \
+    X(int, srcX) /* bilateral: the source region (its taps' range), buffer pixels; pyramid: */ \
+    X(int, srcY) /* srcW x srcH is the finer level's size */                                   \
+    X(int, srcW)                                                                               \
+    X(int, srcH)                                                                               \
+    X(int, levels)  /* sample pass: pyramid levels above 0 that taps may read */               \
+    X(float, zNear) /* depth -> z: the camera's planes (negative, m) as float pairs hi + lo */ \
+    X(float, zNearLo)                                                                          \
+    X(float, zFar) /* -infinity for an infinite far plane (zFarLo 0) */                        \
+    X(float, zFarLo)                                                                           \
+    X(float, zNearFar) /* zNear zFar, its double rounded, as hi + lo */                        \
+    X(float, zNearFarLo)                                                                       \
+    X(float, ax) /* position factors fx(x) = ax + bx x, fy(y) = ay + by y (ao_sampling.hpp) */ \
+    X(float, bx)                                                                               \
+    X(float, ay)                                                                               \
+    X(float, by)                                                                               \
     X(float, radiusS) /* -radius * pixelsPerMeter: ssRadius = radiusS / z (eq. 5) */
 
 // X(type, name): the scalars at the start of the tables buffer, in order.

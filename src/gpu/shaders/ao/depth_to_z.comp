@@ -6,11 +6,11 @@
 // NaN or outside [0, 1] (the CPU refuses those with an error; the upload path checks them
 // before they reach here).
 //
-// Float arithmetic, not the CPU's double: z = zn zf / (zf (1 - d) + zn d) for a finite far
-// plane (eq. 2 rearranged so that the denominator adds two terms of one sign: no
-// cancellation as d -> 1, where c0 / (d c1 + c2) loses |zf / zn| ulps), zn / (1 - d) for an
-// infinite one; every step correctly rounded, so z is within a few ulps of the CPU's
-// correctly rounded value (the bound is derived in tests/gpu/test_gpu_ao.cpp).
+// The CPU evaluates eq. 2 in double and rounds once; so does this pass, in float pairs of
+// about 46 bits (exact.glsl), as z = zn zf / (zf (1 - d) + zn d) for a finite far plane and
+// zn / (1 - d) for an infinite one, zn, zf and zn zf given as pairs from the host's doubles:
+// z is the CPU's float but where the exact value lies within about 2^-40 (the CPU's own
+// error near the far plane) of a rounding boundary, then one ulp away (tests/gpu/test_gpu_ao.cpp).
 #include "ao.glsl"
 
 layout(set = 0, binding = 0) uniform sampler2D depthTex;
@@ -22,12 +22,15 @@ void main() {
     const float d = texelFetch(depthTex, p, 0).r;
     float z = -1.0 / 0.0;
     if (d >= 0.0 && d < 1.0) {
-        precise float oneMinus = 1.0 - d;
+        float s, e;
+        twoSum(1.0, -d, s, e);
+        const vec2 oneMinus = vec2(s, e);  // 1 - d, exactly
+        const vec2 zNear = vec2(pc.zNear, pc.zNearLo);
         if (isinf(pc.zFar)) {
-            z = crDiv(pc.zNear, oneMinus);
+            z = pairDivToFloat(zNear, oneMinus);
         } else {
-            precise float den = pc.zFar * oneMinus + pc.zNear * d;
-            z = crDiv(pc.zNearFar, den);
+            const vec2 den = pairAdd(pairMul(vec2(pc.zFar, pc.zFarLo), oneMinus), pairMul(zNear, vec2(d, 0.0)));
+            z = pairDivToFloat(vec2(pc.zNearFar, pc.zNearFarLo), den);
         }
     }
     imageStore(zOut, p, vec4(z));

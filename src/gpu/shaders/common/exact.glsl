@@ -19,6 +19,48 @@ void twoProduct(float a, float b, out float p, out float e) {
     e = ee;
 }
 
+// a + b == s + e exactly (Knuth's two-sum; correctly rounded add and subtract only).
+void twoSum(float a, float b, out float s, out float e) {
+    precise float ss = a + b;
+    precise float bb = ss - a;
+    precise float ee = (a - (ss - bb)) + (b - bb);
+    s = ss;
+    e = ee;
+}
+
+// Float pairs hi + lo (|lo| at most half an ulp of hi): about 48 significant bits from float
+// arithmetic alone, for the few values that must agree with the CPU's double (the AO passes'
+// depth -> z). Products and sums of pairs keep about 46 bits.
+vec2 pairFrom(float s, float e) {  // renormalised: |e| <= ulp(s) / 2 after
+    float hi, lo;
+    twoSum(s, e, hi, lo);
+    return vec2(hi, lo);
+}
+vec2 pairAdd(vec2 a, vec2 b) {
+    float s, e;
+    twoSum(a.x, b.x, s, e);
+    precise float t = e + (a.y + b.y);
+    return pairFrom(s, t);
+}
+vec2 pairMul(vec2 a, vec2 b) {
+    float p, e;
+    twoProduct(a.x, b.x, p, e);
+    precise float t = e + (a.x * b.y + a.y * b.x);
+    return pairFrom(p, t);
+}
+// a / b rounded to float: q1 the correctly rounded quotient of the high parts, q2 the
+// remainder's share; q1 + q2 is a / b within about 2^-46, and its one float rounding is the
+// correctly rounded quotient except where a / b lies that close to a rounding boundary.
+float crDiv(float a, float b);
+float pairDivToFloat(vec2 a, vec2 b) {
+    const float q1 = crDiv(a.x, b.x);
+    float p, e;
+    twoProduct(q1, b.x, p, e);
+    precise float r = (((a.x - p) - e) + a.y) - q1 * b.y;
+    precise float q = q1 + r / b.x;
+    return q;
+}
+
 // The next float from q towards +inf (dir > 0) or -inf; q finite and non-zero.
 float nextFloat(float q, float dir) {
     const uint bits = floatBitsToUint(q);
