@@ -484,6 +484,8 @@ TEST(GpuAo, RendererAndAoOnOneDevice) {
             gpu::Sao sao(ctx, sp);
             const ImageF a = aoOnTheRenderersDepth(renderer, sao, sc, view, w, h, g, format);
             const AbsDiff d = absDiff(a, ao::sao(cpuDepth.depth.view(), cpuDepth.camera.camera, sp));
+            EXPECT_GE(d.within1, 0.999);
+            EXPECT_LE(d.max, 4.0 / 255.0);
             double sum = 0;  // not a blank image
             for (const float v : a.pixels()) sum += v;
             EXPECT_LT(sum / double(a.pixelCount()), 0.99);
