@@ -326,6 +326,13 @@ private:
         ao::Region work, out;
         vkx::Image z, key, raw, quad, horiz;
         std::vector<vk::raii::ImageView> zLevel;  // storage views, one per level
+        //! The images this method has (AlchemyAO: no quad, no key).
+        std::vector<const vkx::Image*> images() const {
+            std::vector<const vkx::Image*> v;
+            for (const vkx::Image* img : {&z, &raw, &quad, &key, &horiz})
+                if (*img->image) v.push_back(img);
+            return v;
+        }
         vk::raii::ImageView zAll{nullptr}, keyView{nullptr}, rawView{nullptr}, quadView{nullptr}, horizView{nullptr};
     };
 
@@ -346,16 +353,18 @@ private:
                              aspect, 1, levels);
         for (std::uint32_t m = 0; m < levels; ++m) s->zLevel.push_back(view2d(c, s->z, m, 1));
         s->zAll = view2d(c, s->z, 0, levels);
-        // (The key is written over the work region only; the blur reads nothing else of it.)
-        s->key = c.createImage(kZFormat, std::uint32_t(w), std::uint32_t(h), storage, aspect);
-        s->keyView = view2d(c, s->key, 0, 1);
         const std::uint32_t ww = std::uint32_t(s->work.width), wh = std::uint32_t(s->work.height);
         s->raw = c.createImage(kZFormat, ww, wh, storage, aspect);
-        s->quad = c.createImage(kZFormat, ww, wh, storage, aspect);
         s->horiz = c.createImage(kZFormat, ww, wh, storage, aspect);
         s->rawView = view2d(c, s->raw, 0, 1);
-        s->quadView = view2d(c, s->quad, 0, 1);
         s->horizView = view2d(c, s->horiz, 0, 1);
+        if (cfg_.sao) {  // the 2x2 pass's output, and the packed key (which its shader declares either way)
+            s->quad = c.createImage(kZFormat, ww, wh, storage, aspect);
+            s->quadView = view2d(c, s->quad, 0, 1);
+            // (The key is written over the work region only; the blur reads nothing else of it.)
+            s->key = c.createImage(kZFormat, std::uint32_t(w), std::uint32_t(h), storage, aspect);
+            s->keyView = view2d(c, s->key, 0, 1);
+        }
         scratch_ = std::move(s);
         return *scratch_;
     }
@@ -381,7 +390,7 @@ private:
         // The scratch images to GENERAL, their old contents dropped, after an earlier
         // recording's reads and writes.
         std::vector<vk::ImageMemoryBarrier> discard;
-        for (const vkx::Image* img : {&s.z, &s.key, &s.raw, &s.quad, &s.horiz})
+        for (const vkx::Image* img : s.images())
             discard.emplace_back(A::eShaderRead | A::eShaderWrite | A::eTransferRead, A::eShaderWrite | A::eShaderRead,
                                  L::eUndefined, L::eGeneral, VK_QUEUE_FAMILY_IGNORED, VK_QUEUE_FAMILY_IGNORED,
                                  *img->image,
@@ -544,7 +553,7 @@ private:
             }
     }
 
-    // runStages(): every scratch image copied into one host buffer after the passes.
+    // runStages(): every scratch image (each level of z) copied into one host buffer after the passes.
     struct StageCopy {
         const vkx::Image* image;
         std::uint32_t level, w, h;
@@ -561,13 +570,13 @@ private:
             stageCopies_.push_back({&img, level, w, h, total});
             total += vk::DeviceSize(w) * h * 4;
         };
-        for (int m = 0; m <= cfg_.levels; ++m) add(s.z, std::uint32_t(m));
-        add(s.raw, 0), add(s.quad, 0), add(s.key, 0), add(s.horiz, 0);
+        for (const vkx::Image* img : s.images())
+            for (std::uint32_t m = 0; m < img->levels; ++m) add(*img, m);
         RunImages& r = *run_;
         if (r.stages.size < total) r.stages = ctx_->createBuffer(total, vk::BufferUsageFlagBits::eTransferDst, true);
         // (The next recording drops these layouts with its own barrier from UNDEFINED.)
         std::vector<vk::ImageMemoryBarrier> toCopy;
-        for (const vkx::Image* img : {&s.z, &s.raw, &s.quad, &s.key, &s.horiz})
+        for (const vkx::Image* img : s.images())
             toCopy.emplace_back(A::eShaderWrite, A::eTransferRead, L::eGeneral, L::eTransferSrcOptimal,
                                 VK_QUEUE_FAMILY_IGNORED, VK_QUEUE_FAMILY_IGNORED, *img->image,
                                 vk::ImageSubresourceRange(vk::ImageAspectFlagBits::eColor, 0, img->levels, 0, 1));
@@ -586,21 +595,27 @@ private:
                         std::size_t(c.w) * c.h * 4);
             return img;
         };
-        std::size_t k = 0;
         st = AoStages{};
-        st.z = read(stageCopies_[k++]);
-        for (int m = 1; m <= cfg_.levels; ++m) st.pyramid.push_back(read(stageCopies_[k++]));
         st.work = s.work;
-        st.raw = read(stageCopies_[k++]);
-        ImageF quad = read(stageCopies_[k++]);
-        ImageF key = read(stageCopies_[k++]);
-        if (cfg_.sao) st.quad = std::move(quad);
-        if (cfg_.sao && cfg_.packing != 0) {
-            st.zBlur = ImageF(s.work.width, s.work.height);
-            for (int y = 0; y < s.work.height; ++y)
-                for (int x = 0; x < s.work.width; ++x) st.zBlur(x, y) = key(s.work.x0 + x, s.work.y0 + y);
+        for (const StageCopy& c : stageCopies_) {
+            ImageF img = read(c);
+            if (c.image == &s.z) {
+                if (c.level == 0)
+                    st.z = std::move(img);
+                else
+                    st.pyramid.push_back(std::move(img));
+            } else if (c.image == &s.raw) {
+                st.raw = std::move(img);
+            } else if (c.image == &s.quad) {
+                st.quad = std::move(img);
+            } else if (c.image == &s.horiz) {
+                st.horizontal = std::move(img);
+            } else if (c.image == &s.key && cfg_.packing != 0) {  // the work region of the buffer-sized key
+                st.zBlur = ImageF(s.work.width, s.work.height);
+                for (int y = 0; y < s.work.height; ++y)
+                    for (int x = 0; x < s.work.width; ++x) st.zBlur(x, y) = img(s.work.x0 + x, s.work.y0 + y);
+            }
         }
-        st.horizontal = read(stageCopies_[k++]);
         st.result = result;
     }
 
