@@ -462,10 +462,45 @@ Block accuracyBlock(const Context& c, const std::vector<AoRenderedScene>& entrie
 }
 
 // ---- Figure 5: AO pass time vs radius -----------------------------------------------
+const std::vector<double> kFigure5Radii{0.1, 0.25, 0.5, 1.0, 1.5, 2.0, 3.0, 4.0};  // m
+
+// The sweep's table (`digits` decimals), its ratios in `j` and in the returned sentence:
+// r = 4 m over r = 0.25 m for sao and alchemy, alchemy over sao at 1.5 m. `timing` is
+// {alchemy, sao without the pyramid, sao}, each at kFigure5Radii.
+std::string radiusTable(Block& b, const std::vector<Series>& timing, int digits, nlohmann::ordered_json& j) {
+    b.table.header = {"method"};
+    for (double r : kFigure5Radii) b.table.header.push_back(fmt::format("{} m", r));
+    for (const auto& s : timing) {
+        std::vector<std::string> row{s.name};
+        for (double v : s.values) row.push_back(fmt::format("{:.{}f}", v, digits));
+        b.table.addRow(row);
+        j[s.name] = s.values;
+    }
+    const double saoFlat = timing[2].values[7] / timing[2].values[1];
+    const double alchemyGrowth = timing[0].values[7] / timing[0].values[1];
+    const double speedup = timing[0].values[4] / timing[2].values[4];
+    j["radii_m"] = kFigure5Radii;
+    j["sao_r4_over_r025"] = saoFlat;
+    j["alchemy_r4_over_r025"] = alchemyGrowth;
+    j["alchemy_over_sao_r15"] = speedup;
+    return fmt::format(
+        "Time at r = 4 m over r = 0.25 m: sao {:.2f}x, alchemy {:.2f}x. alchemy / sao at r = 1.5 m: {:.2f}x.", saoFlat,
+        alchemyGrowth, speedup);
+}
+
+// Table 3's resolutions with the paper's guard bands (one small size with --quick).
+struct Table3Size {
+    int w, h, g;
+};
+std::vector<Table3Size> table3Sizes(bool quick) {
+    if (quick) return {{320, 180, 32}};
+    return {{1280, 720, 128}, {1920, 1080, 192}, {1920, 1200, 192}, {2560, 1600, 256}};
+}
+
 Block radiusScalingBlock(const Context& c, const scene::AnalyticScene& room, int reps) {
     const int fw = c.o.quick ? 320 : 2560, fh = c.o.quick ? 200 : 1600;
     c.say(fmt::format("ao: sample-pass time vs radius at {}x{} (Figure 5)", fw, fh));
-    const std::vector<double> radii{0.1, 0.25, 0.5, 1.0, 1.5, 2.0, 3.0, 4.0};
+    const std::vector<double>& radii = kFigure5Radii;
     std::vector<Series> timing{{"alchemy", {}}, {"sao, no pyramid", {}}, {"sao", {}}};
     const scene::GeometryBuffer g = scene::castGeometry(room, kCamera, fw, fh, c.o.exec);
     const Projection proj = ssfx::projection(kCamera, fw, fh);
@@ -493,44 +528,21 @@ Block radiusScalingBlock(const Context& c, const scene::AnalyticScene& room, int
                      .view());
     Block b;
     b.heading = fmt::format("Sample-pass time vs radius (paper Figure 5), {}x{}, median of {} (ms)", fw, fh, reps);
-    b.table.header = {"method"};
-    for (double r : radii) b.table.header.push_back(fmt::format("{} m", r));
-    for (const auto& s : timing) {
-        std::vector<std::string> row{s.name};
-        for (double v : s.values) row.push_back(fmt::format("{:.1f}", v));
-        b.table.addRow(row);
-        c.j["radius_scaling"][s.name] = s.values;
-    }
-    const double saoFlat = timing[2].values[7] / timing[2].values[1];
-    const double alchemyGrowth = timing[0].values[7] / timing[0].values[1];
-    const double speedup = timing[0].values[4] / timing[2].values[4];
-    b.after = fmt::format(
-        "Time at r = 4 m over r = 0.25 m: sao {:.2f}x, alchemy {:.2f}x. alchemy / sao at r = 1.5 m: "
-        "{:.2f}x.",
-        saoFlat, alchemyGrowth, speedup);
+    b.after = radiusTable(b, timing, 1, c.j["radius_scaling"]);
     b.figures.push_back({"plots/ao_radius_scaling.png", "AO time vs radius", Figure::Kind::Plot, 880, 420});
-    c.j["radius_scaling"]["radii_m"] = radii;
-    c.j["radius_scaling"]["sao_r4_over_r025"] = saoFlat;
-    c.j["radius_scaling"]["alchemy_r4_over_r025"] = alchemyGrowth;
-    c.j["radius_scaling"]["alchemy_over_sao_r15"] = speedup;
     return b;
 }
 
 // ---- Table 3: per-pass times with guard bands ---------------------------------------
 Block passTimesBlock(const Context& c, const scene::AnalyticScene& room, int reps) {
     c.say("ao: per-pass times (Table 3)");
-    struct Res {
-        int w, h, g;
-    };
-    const std::vector<Res> sizes =
-        c.o.quick ? std::vector<Res>{{320, 180, 32}}
-                  : std::vector<Res>{{1280, 720, 128}, {1920, 1080, 192}, {1920, 1200, 192}, {2560, 1600, 256}};
+    const std::vector<Table3Size> sizes = table3Sizes(c.o.quick);
     Block b;
     b.heading = fmt::format("Per-pass times (paper Table 3), r = 1 m, median of {} runs (ms), {} threads", reps + 2,
                             resolvedThreads(c.o.exec));
     b.table.header = {"resolution", "guard band", "pixels incl. guard",  "z", "z pyramid", "AO samples + 2x2",
                       "blur",       "total",      "ns per visible pixel"};
-    for (const Res& r : sizes) {
+    for (const Table3Size& r : sizes) {
         const int bw = r.w + 2 * r.g, bh = r.h + 2 * r.g;
         const scene::GeometryBuffer g = scene::castGeometry(room, kCamera, bw, bh, c.o.exec);
         ao::SaoParams p;
@@ -574,7 +586,7 @@ double stageMs(const gpu::AoPass& pass, const char* stage) {
 Block gpuRadiusScalingBlock(const Context& c, const scene::AnalyticScene& room, int reps) {
     const int fw = c.o.quick ? 320 : 2560, fh = c.o.quick ? 200 : 1600;
     c.say(fmt::format("ao: GPU sample-pass time vs radius at {}x{} (Figure 5, {})", fw, fh, c.gpu->info.name));
-    const std::vector<double> radii{0.1, 0.25, 0.5, 1.0, 1.5, 2.0, 3.0, 4.0};
+    const std::vector<double>& radii = kFigure5Radii;
     std::vector<Series> timing{{"alchemy", {}}, {"sao, no pyramid", {}}, {"sao", {}}};
     const scene::GeometryBuffer g = scene::castGeometry(room, kCamera, fw, fh, c.o.exec);
     // One pipeline per method and radius, made first; then interleaved rounds (every
@@ -608,44 +620,22 @@ Block gpuRadiusScalingBlock(const Context& c, const scene::AnalyticScene& room, 
     Block b;
     b.heading = fmt::format("GPU sample-pass time vs radius (paper Figure 5), {}x{}, {}, median of {} (ms)", fw, fh,
                             c.gpu->info.name, reps);
-    b.table.header = {"method"};
-    for (double r : radii) b.table.header.push_back(fmt::format("{} m", r));
-    for (const auto& s : timing) {
-        std::vector<std::string> row{s.name};
-        for (double v : s.values) row.push_back(fmt::format("{:.3f}", v));
-        b.table.addRow(row);
-        c.j["gpu"]["radius_scaling"][s.name] = s.values;
-    }
-    const double saoFlat = timing[2].values[7] / timing[2].values[1];
-    const double alchemyGrowth = timing[0].values[7] / timing[0].values[1];
-    const double speedup = timing[0].values[4] / timing[2].values[4];
-    b.after = fmt::format(
-        "GPU timestamps around the sample pass, interleaved rounds. Time at r = 4 m over r = 0.25 m: sao {:.2f}x, "
-        "alchemy {:.2f}x. alchemy / sao at r = 1.5 m: {:.2f}x.",
-        saoFlat, alchemyGrowth, speedup);
+    b.after = "GPU timestamps around the sample pass, interleaved rounds. " +
+              radiusTable(b, timing, 3, c.j["gpu"]["radius_scaling"]);
     b.figures.push_back({"plots/ao_radius_scaling_gpu.png", "GPU AO time vs radius", Figure::Kind::Plot, 880, 420});
     c.j["gpu"]["device"] = c.gpu->info.name;
-    c.j["gpu"]["radius_scaling"]["radii_m"] = radii;
-    c.j["gpu"]["radius_scaling"]["sao_r4_over_r025"] = saoFlat;
-    c.j["gpu"]["radius_scaling"]["alchemy_r4_over_r025"] = alchemyGrowth;
-    c.j["gpu"]["radius_scaling"]["alchemy_over_sao_r15"] = speedup;
     return b;
 }
 
 Block gpuPassTimesBlock(const Context& c, const scene::AnalyticScene& room, int reps) {
     c.say(fmt::format("ao: GPU per-pass times (Table 3, {})", c.gpu->info.name));
-    struct Res {
-        int w, h, g;
-    };
-    const std::vector<Res> sizes =
-        c.o.quick ? std::vector<Res>{{320, 180, 32}}
-                  : std::vector<Res>{{1280, 720, 128}, {1920, 1080, 192}, {1920, 1200, 192}, {2560, 1600, 256}};
+    const std::vector<Table3Size> sizes = table3Sizes(c.o.quick);
     Block b;
     b.heading = fmt::format("GPU per-pass times (paper Table 3), {}, r = 1 m, median of {} runs (ms)", c.gpu->info.name,
                             reps + 2);
     b.table.header = {"resolution", "guard band", "z",     "z pyramid",    "AO samples",
                       "2x2",        "blur",       "total", "alchemy total"};
-    for (const Res& r : sizes) {
+    for (const Table3Size& r : sizes) {
         const int bw = r.w + 2 * r.g, bh = r.h + 2 * r.g;
         const scene::GeometryBuffer g = scene::castGeometry(room, kCamera, bw, bh, c.o.exec);
         ao::SaoParams p;

@@ -8,6 +8,8 @@
 // Skips with a message only when there is no Vulkan device at all.
 #include <gtest/gtest.h>
 
+#include "tests/gpu/gpu_context.hpp"
+
 #include <fmt/format.h>
 
 #include <cmath>
@@ -26,31 +28,8 @@
 namespace ssfx {
 namespace {
 
-// One validated compute context per program (device creation is slow on lavapipe); null
-// when this machine has no Vulkan device.
-std::shared_ptr<vkx::Context> context() {
-    static std::shared_ptr<vkx::Context> ctx = [] {
-        vkx::ContextOptions o;
-        o.validation = true;
-        try {
-            return vkx::Context::create(o);
-        } catch (const Error& e) {
-            std::fprintf(stderr, "no Vulkan device: %s\n", e.what());
-            return std::shared_ptr<vkx::Context>();
-        }
-    }();
-    return ctx;
-}
-
-#define REQUIRE_DEVICE()                                                                               \
-    do {                                                                                               \
-        if (!context()) GTEST_SKIP() << "no Vulkan device (install mesa-vulkan-drivers for lavapipe)"; \
-    } while (0)
-
-void expectNoValidationMessages() {
-    const auto messages = context()->validationMessages();
-    EXPECT_TRUE(messages.empty()) << messages.size() << " validation message(s), the first: " << messages.front();
-}
+using test::expectNoValidationMessages;
+std::shared_ptr<vkx::Context> context() { return test::gpuContext(); }
 
 // Pixels that differ, and the largest channel difference (RGBA).
 struct Diff {

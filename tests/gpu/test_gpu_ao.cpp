@@ -23,6 +23,8 @@
 //    beyond 4/255 (here the only differences are the sample pass's, filtered by the blur).
 #include <gtest/gtest.h>
 
+#include "tests/gpu/gpu_context.hpp"
+
 #include <fmt/format.h>
 
 #include <bit>
@@ -45,29 +47,8 @@
 namespace ssfx {
 namespace {
 
-std::shared_ptr<vkx::Context> context() {
-    static std::shared_ptr<vkx::Context> ctx = [] {
-        vkx::ContextOptions o;
-        o.validation = true;
-        try {
-            return vkx::Context::create(o);
-        } catch (const Error& e) {
-            std::fprintf(stderr, "no Vulkan device: %s\n", e.what());
-            return std::shared_ptr<vkx::Context>();
-        }
-    }();
-    return ctx;
-}
-
-#define REQUIRE_DEVICE()                                                                               \
-    do {                                                                                               \
-        if (!context()) GTEST_SKIP() << "no Vulkan device (install mesa-vulkan-drivers for lavapipe)"; \
-    } while (0)
-
-void expectNoValidationMessages() {
-    const auto messages = context()->validationMessages();
-    EXPECT_TRUE(messages.empty()) << messages.size() << " validation message(s), the first: " << messages.front();
-}
+using test::expectNoValidationMessages;
+std::shared_ptr<vkx::Context> context() { return test::gpuContext(); }
 
 template <class F>
 void forEachPixel(ImageF& img, F f) {
@@ -498,8 +479,7 @@ TEST(GpuAo, RendererAndAoOnOneDevice) {
             EXPECT_LE(da.max, 4.0 / 255.0);
         }
     }
-    const auto messages = ctx->validationMessages();
-    EXPECT_TRUE(messages.empty()) << messages.size() << " validation message(s), the first: " << messages.front();
+    expectNoValidationMessages(ctx);
 }
 
 double psnrAgainst(const ImageF& a, const ImageF& truth) {

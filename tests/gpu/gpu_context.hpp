@@ -1,0 +1,43 @@
+// The GPU tests' Vulkan context: one per test program (device creation is slow on lavapipe),
+// with the validation layer and synchronization validation on; null when this machine has no
+// Vulkan device, where the tests skip saying so (REQUIRE_DEVICE).
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <memory>
+
+#include "ssfx/core/error.hpp"
+#include "ssfx/vk/context.hpp"
+
+namespace ssfx::test {
+
+inline std::shared_ptr<vkx::Context> gpuContext() {
+    static std::shared_ptr<vkx::Context> ctx = [] {
+        vkx::ContextOptions o;
+        o.validation = true;
+        try {
+            return vkx::Context::create(o);
+        } catch (const Error& e) {
+            std::fprintf(stderr, "no Vulkan device: %s\n", e.what());
+            return std::shared_ptr<vkx::Context>();
+        }
+    }();
+    return ctx;
+}
+
+//! Fails the test when the validation layer has reported anything on `ctx` (default: the
+//! shared context) since it was made.
+inline void expectNoValidationMessages(const std::shared_ptr<vkx::Context>& ctx = gpuContext()) {
+    const auto messages = ctx->validationMessages();
+    EXPECT_TRUE(messages.empty()) << messages.size() << " validation message(s), the first: " << messages.front();
+}
+
+}  // namespace ssfx::test
+
+#define REQUIRE_DEVICE()                                                                   \
+    do {                                                                                   \
+        if (!::ssfx::test::gpuContext())                                                   \
+            GTEST_SKIP() << "no Vulkan device (install mesa-vulkan-drivers for lavapipe)"; \
+    } while (0)
