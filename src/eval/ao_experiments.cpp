@@ -488,6 +488,18 @@ std::string radiusTable(Block& b, const std::vector<Series>& timing, int digits,
         alchemyGrowth, speedup);
 }
 
+// The three methods of the sweep at radius r: AlchemyAO, SAO without and with the pyramid.
+struct Figure5Params {
+    ao::AlchemyParams alchemy;
+    ao::SaoParams flat, sao;
+};
+Figure5Params figure5Params(double r) {
+    Figure5Params p;
+    p.alchemy.radius = p.flat.radius = p.sao.radius = float(r);
+    p.flat.usePyramid = false;
+    return p;
+}
+
 // Table 3's resolutions with the paper's guard bands (one small size with --quick).
 struct Table3Size {
     int w, h, g;
@@ -511,12 +523,7 @@ Block radiusScalingBlock(const Context& c, const scene::AnalyticScene& room, int
     ao::zPyramid(z.view(), 5, ao::PyramidFilter::RotatedGrid, pyr, c.o.exec);
     const ao::Region all{0, 0, fw, fh};
     for (double r : radii) {
-        ao::AlchemyParams ap;
-        ap.radius = float(r);
-        ao::SaoParams sp;
-        sp.radius = float(r);
-        ao::SaoParams flat = sp;
-        flat.usePyramid = false;
+        const auto [ap, flat, sp] = figure5Params(r);
         timing[0].values.push_back(medianMs(reps, [&] { ao::alchemySamplePass(pyr, proj, all, ap, c.o.exec); }));
         timing[1].values.push_back(medianMs(reps, [&] { ao::saoSamplePass(pyr, proj, all, flat, c.o.exec); }));
         timing[2].values.push_back(medianMs(reps, [&] { ao::saoSamplePass(pyr, proj, all, sp, c.o.exec); }));
@@ -593,12 +600,7 @@ Block gpuRadiusScalingBlock(const Context& c, const scene::AnalyticScene& room, 
     // pipeline once per round), so that a change of the device's clock hits all alike.
     std::vector<std::vector<std::unique_ptr<gpu::AoPass>>> passes(3);
     for (double r : radii) {
-        ao::AlchemyParams ap;
-        ap.radius = float(r);
-        ao::SaoParams sp;
-        sp.radius = float(r);
-        ao::SaoParams flat = sp;
-        flat.usePyramid = false;
+        const auto [ap, flat, sp] = figure5Params(r);
         passes[0].push_back(std::make_unique<gpu::AoPass>(c.gpu, "alchemy", ap));
         passes[1].push_back(std::make_unique<gpu::AoPass>(c.gpu, "sao", flat));
         passes[2].push_back(std::make_unique<gpu::AoPass>(c.gpu, "sao", sp));
