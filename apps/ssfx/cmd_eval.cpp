@@ -300,6 +300,11 @@ void addReport(CLI::App& eval) {
         ->check(CLI::Range(4, 100000));
     cmd->add_flag("--quick", o->quick, "Fewer repetitions and every 4th animation frame (tests)");
     cmd->add_flag("!--no-ao", o->ambientObscurance, "Leave out the ambient obscurance experiments");
+    cmd->add_option("--ao-backend", o->aoBackend,
+                    "cpu (default) or vulkan: the AO experiments also run the GPU passes (accuracy, radius sweep "
+                    "and per-pass times from GPU timestamps) beside the CPU columns")
+        ->check(CLI::IsMember({"cpu", "vulkan"}));
+    cmd->add_option("--ao-device", o->aoDevice, "With --ao-backend vulkan: a device index or part of its name");
     auto scenes = std::make_shared<std::vector<std::string>>(kDefaultAoScenes);
     cmd->add_option("--ao-scene", *scenes,
                     "Rendered scenes for the AO accuracy table, SCENE[:VIEW] (repeatable; "
@@ -310,6 +315,8 @@ void addReport(CLI::App& eval) {
     cmd->add_flag("--no-render", *noRender,
                   "Leave out what needs the Vulkan renderer: the atrium in the quality table, adaptive supersampling");
     cmd->callback([o, threads, scenes, noRender] {
+        if (!o->aoDevice.empty() && o->aoBackend != "vulkan") throw Error("--ao-device goes with --ao-backend vulkan");
+        if (o->aoBackend == "vulkan" && !o->ambientObscurance) throw Error("--ao-backend with --no-ao: nothing to run");
         ProgressLine line("eval", true);
         // --author-data must name the data, and is not silently dropped by --quick.
         if (!o->authorDataDir.empty() && !std::filesystem::is_directory(o->authorDataDir))

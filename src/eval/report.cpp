@@ -803,6 +803,8 @@ Section aoSection(const Run& r) {
     ao.exec = r.o.exec;
     ao.progress = r.o.progress;
     ao.renderedScenes = r.o.renderedScenes;
+    ao.backend = r.o.aoBackend;
+    ao.device = r.o.aoDevice;
     Section s = runAoExperiments(ao);
     prefixPaths(s, "ao");
     return s;

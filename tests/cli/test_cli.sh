@@ -360,6 +360,12 @@ if "$SSFX" --help 2>/dev/null | grep -qE '^ +render '; then
     check ao_device_cpu 2 "$SSFX" ao --device 0 --scene room --size 32x18 -o "$OUT/x.png"
     contains ao_device_cpu "$OUT/ao_device_cpu.err" "--device goes with --backend vulkan"
     [ ! -e "$OUT/x.png" ] || { echo "FAIL ao_vulkan: a failed run left x.png"; fail=1; }
+    check eval_ao_vulkan 0 $VK "$SSFX" eval ao --quick --backend vulkan --ao-scene none --out "$OUT/evalao_vk"
+    contains eval_ao_vulkan "$OUT/evalao_vk/data/ao.md" "sao, rotated grid (vulkan)"
+    contains eval_ao_vulkan "$OUT/evalao_vk/data/ao.md" "GPU per-pass times (paper Table 3)"
+    contains eval_ao_vulkan "$OUT/evalao_vk/data/ao.json" '"gpu_max_abs_db_difference"'
+    check eval_ao_vulkan_device 2 "$SSFX" eval ao --quick --device 0 --out "$OUT/x_eval"
+    contains eval_ao_vulkan_device "$OUT/eval_ao_vulkan_device.err" "--device goes with --backend vulkan"
     check bench_vulkan 0 $VK "$SSFX" bench --backend vulkan --size 64 --reps 4 --warmup 0 --methods blur,ddaa2 -p edges=list --json "$OUT/bench_vk.json"
     contains bench_vulkan "$OUT/bench_vk.json" '"edges": "list"'
     contains bench_vulkan "$OUT/bench_vk.json" '"backend": "vulkan"'

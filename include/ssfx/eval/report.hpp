@@ -37,6 +37,9 @@ struct ReportOptions {
     bool ambientObscurance = true;
     //! Rendered scenes for the AO accuracy table (optional; see ao_experiments.hpp).
     AoSceneSource renderedScenes;
+    //! "vulkan": the AO experiments also run the GPU passes (AoExperimentOptions::backend),
+    //! their accuracy and GPU timestamps beside the CPU columns, on `aoDevice`.
+    std::string aoBackend = "cpu", aoDevice;
     //! Optional: runs the adaptive supersampling experiment into the given folder and returns
     //! its section, paths relative to that folder (it needs the renderer; see
     //! ssfx/eval/deferred_experiment.hpp).
