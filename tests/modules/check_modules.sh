@@ -21,8 +21,8 @@ declare -A allowed=(
   [vk]="core vk"
   [render]="core io ao scene vk render"
   [deferred]="core io ao scene deferred"
-  [gpu]="core aa vk gpu"
-  [eval]="core io aa ao scene vk render deferred eval"
+  [gpu]="core aa ao vk gpu"
+  [eval]="core io aa ao scene vk render gpu deferred eval"
 )
 # module -> third-party headers it must not include (a regex on the include)
 declare -A forbidden=(
