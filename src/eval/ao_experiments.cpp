@@ -523,7 +523,9 @@ Block radiusScalingBlock(const Context& c, const scene::AnalyticScene& room, int
     ao::zPyramid(z.view(), 5, ao::PyramidFilter::RotatedGrid, pyr, c.o.exec);
     const ao::Region all{0, 0, fw, fh};
     for (double r : radii) {
-        const auto [ap, flat, sp] = figure5Params(r);
+        const Figure5Params fp = figure5Params(r);
+        const ao::AlchemyParams& ap = fp.alchemy;
+        const ao::SaoParams &flat = fp.flat, &sp = fp.sao;
         timing[0].values.push_back(medianMs(reps, [&] { ao::alchemySamplePass(pyr, proj, all, ap, c.o.exec); }));
         timing[1].values.push_back(medianMs(reps, [&] { ao::saoSamplePass(pyr, proj, all, flat, c.o.exec); }));
         timing[2].values.push_back(medianMs(reps, [&] { ao::saoSamplePass(pyr, proj, all, sp, c.o.exec); }));
@@ -600,10 +602,10 @@ Block gpuRadiusScalingBlock(const Context& c, const scene::AnalyticScene& room, 
     // pipeline once per round), so that a change of the device's clock hits all alike.
     std::vector<std::vector<std::unique_ptr<gpu::AoPass>>> passes(3);
     for (double r : radii) {
-        const auto [ap, flat, sp] = figure5Params(r);
-        passes[0].push_back(std::make_unique<gpu::AoPass>(c.gpu, "alchemy", ap));
-        passes[1].push_back(std::make_unique<gpu::AoPass>(c.gpu, "sao", flat));
-        passes[2].push_back(std::make_unique<gpu::AoPass>(c.gpu, "sao", sp));
+        const Figure5Params fp = figure5Params(r);
+        passes[0].push_back(std::make_unique<gpu::AoPass>(c.gpu, "alchemy", fp.alchemy));
+        passes[1].push_back(std::make_unique<gpu::AoPass>(c.gpu, "sao", fp.flat));
+        passes[2].push_back(std::make_unique<gpu::AoPass>(c.gpu, "sao", fp.sao));
     }
     std::vector<std::vector<std::vector<double>>> ms(3, std::vector<std::vector<double>>(radii.size()));
     for (int round = -1; round < reps; ++round)  // round -1: warm-up
