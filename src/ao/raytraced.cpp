@@ -57,6 +57,7 @@ ImageF raytraced(const RayScene& scene, const Camera& camera, int width, int hei
     const Projection proj = projection(camera, width, height);
     const int g = p.guardBand, w = width - 2 * g, h = height - 2 * g;
     const double r = p.radius, n = p.raysPerPixel;
+    const bool binary = p.visibility == Visibility::Binary;
     ImageF out(w, h);
     std::atomic<std::int64_t> rowsDone{0};
     parallelRows(h, exec, [&](int r0, int r1) {
@@ -98,7 +99,7 @@ ImageF raytraced(const RayScene& scene, const Camera& camera, int width, int hei
                     const RayHit s = scene.intersect(o, d, 0.0, r);
                     if (s.t < r) {
                         const double q = 1.0 - (s.t / r) * (s.t / r);
-                        occlusion += q * q * q;
+                        occlusion += binary ? 1.0 : q * q * q;
                     }
                 }
                 out(i, j) = float(1.0 - occlusion / n);

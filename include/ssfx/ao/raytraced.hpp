@@ -1,9 +1,13 @@
 // Ray-traced ground truth for ambient obscurance (spec sao.md "Beyond the paper"): for
 // each pixel's surface point (the primary ray's hit through the pixel centre, with the
-// geometry's true normal), the distance-limited obscurance integral over the hemisphere,
+// geometry's true normal), the distance-limited integral over the hemisphere
 //   A = 1 - integral over the hemisphere of rho(d(w)) (n.w) / pi dw,
-//   rho(d) = (1 - (d / r)^2)^3 for a hit at distance d < r, else 0,
-// the smooth falloff of SAO's updated estimator. Estimated with cosine-weighted rays: a
+// with one of two definitions of what a hit at distance d takes away (`visibility`):
+//   obscurance (the default): rho(d) = (1 - (d / r)^2)^3 for d < r, else 0, the smooth
+//     falloff of SAO's updated estimator (spec gtao.md section 12, A_obs);
+//   binary: rho(d) = 1 for d < r, else 0: the cosine-weighted visible fraction with a hard
+//     cut at r, GTAO's definition of ambient occlusion (spec gtao.md sections 2 and 12, A_ao).
+// Estimated with cosine-weighted rays: a
 // Hammersley set of N directions per pixel, rotated per pixel by a hash (Cranley-Patterson),
 // so the estimate is deterministic and its noise far below a random set's.
 //
@@ -12,6 +16,7 @@
 #pragma once
 
 #include <array>
+#include <string_view>
 
 #include <cstdint>
 
@@ -45,16 +50,27 @@ public:
     virtual double surfaceOffset() const { return 1e-6; }
 };
 
+//! What a hit within r takes away (see the top of this file).
+enum class Visibility {
+    Obscurance,  //!< SAO's falloff weight (1 - (d / r)^2)^3: A_obs
+    Binary,      //!< any hit within r occludes fully: A_ao, GTAO's definition
+};
+inline constexpr std::array<std::string_view, 2> kVisibilityNames{"obscurance", "binary"};
+
 struct RaytracedParams {
     float radius = 1.0f;     //!< m: r, as SAO's
     int raysPerPixel = 256;  //!< cosine-weighted rays per pixel
     int guardBand = 0;       //!< px on each side not output (as SAO's)
+    Visibility visibility = Visibility::Obscurance;
 };
 //! RaytracedParams' table (core/params.hpp); the defaults are the initialisers.
 inline constexpr std::array kRaytracedParams{
     real<&RaytracedParams::radius>("radius", "m", 1e-6, 100, "occlusion radius r, as SAO's"),
     integer<&RaytracedParams::raysPerPixel>("raysPerPixel", "", 1, 65536, "cosine-weighted rays per pixel"),
     integer<&RaytracedParams::guardBand>("guardBand", "px", 0, 4096, "guard band on each side, not output"),
+    choice<&RaytracedParams::visibility>("visibility", kVisibilityNames,
+                                         "obscurance: a hit at d < r takes away (1 - (d/r)^2)^3, SAO's falloff; "
+                                         "binary: any hit within r occludes fully (GTAO's ambient occlusion)"),
 };
 //! Throws ssfx::Error naming the first field outside its range (kRaytracedParams).
 void validate(const RaytracedParams& p);
