@@ -62,7 +62,8 @@ for m in ssfx.methods("ao"):
     presets = " | ".join(repr(p) for p in m["presets"]) or "None"
     ao.append(
         f"def {m['id']}(depth: NDArray[np.float32], camera: Camera, preset: Literal[{presets}] | None = None, "
-        f"threads: int = 0{kwargs(m['params'])}) -> NDArray[np.float32]:\n"
+        f"threads: int = 0, backend: Literal['cpu', 'vulkan'] = 'cpu', device: str | None = None"
+        f"{kwargs(m['params'])}) -> NDArray[np.float32]:\n"
         f'    """{doc(m)}"""\n\n')
 with open(os.path.join(pkg, "ao.pyi"), "w") as f:
     f.write("".join(ao))
