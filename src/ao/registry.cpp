@@ -30,20 +30,20 @@ struct Text {
     std::string_view id, summary, citation, inputs;
 };
 AoMethodInfo entry(Text t, std::span<const ParamInfo> params, std::span<const std::string_view> presets, bool geometry,
-                   AoParams (*defaults)(std::string_view), void (*check)(const AoParams&),
+                   bool normals, AoParams (*defaults)(std::string_view), void (*check)(const AoParams&),
                    ImageF (*run)(const AoInput&, const AoParams&, const Exec&)) {
     AoMethodInfo m{};
     m.id = t.id, m.family = "ao", m.summary = t.summary, m.citation = t.citation, m.inputs = t.inputs;
     m.params = params, m.presets = presets, m.backends = kCpuBackend;
-    m.needsGeometry = geometry, m.defaults = defaults, m.validate = check, m.run = run;
+    m.needsGeometry = geometry, m.takesNormals = normals, m.defaults = defaults, m.validate = check, m.run = run;
     return m;
 }
 
-const std::array<AoMethodInfo, 3> kAoMethods{{
+const std::array<AoMethodInfo, 4> kAoMethods{{
     entry(
         {"sao", "Scalable Ambient Obscurance: z pyramid, spiral taps, bilateral reconstruction",
          "McGuire, Mara, Luebke, Scalable Ambient Obscurance, HPG 2012", kDepthInput},
-        kSaoParams, kSaoPresets, false,
+        kSaoParams, kSaoPresets, false, false,
         [](std::string_view preset) -> AoParams {
             return preset.empty() ? SaoParams{} : saoPreset(std::string(preset));
         },
@@ -55,7 +55,7 @@ const std::array<AoMethodInfo, 3> kAoMethods{{
         {"alchemy", "AlchemyAO, the baseline SAO improves on: 12 taps at level 0, the same reconstruction",
          "McGuire et al., The Alchemy Screen-Space Ambient Obscurance Algorithm, HPG 2011; SAO paper section 3",
          kDepthInput},
-        kAlchemyParams, {}, false,
+        kAlchemyParams, {}, false, false,
         [](std::string_view preset) -> AoParams {
             noPreset("alchemy", preset);
             return AlchemyParams{};
@@ -65,9 +65,24 @@ const std::array<AoMethodInfo, 3> kAoMethods{{
             return alchemy(in.depth, in.camera, as<AlchemyParams>(p, "alchemy"), e);
         }),
     entry(
+        {"gtao",
+         "Ground-Truth AO (XeGTAO's form): slices of horizon search through a depth chain, cosine-weighted "
+         "visible fraction, edge-aware denoiser",
+         "Jimenez, Wu, Pesce, Jarabo, Practical Realtime Strategies for Accurate Indirect Occlusion, SIGGRAPH 2016 "
+         "course; Intel XeGTAO",
+         "a depth buffer in [0, 1] and its camera (a guard band around the output); optionally camera-space normals"},
+        kGtaoParams, kGtaoPresets, false, true,
+        [](std::string_view preset) -> AoParams {
+            return preset.empty() ? GtaoParams{} : gtaoPreset(std::string(preset));
+        },
+        [](const AoParams& p) { validate(as<GtaoParams>(p, "gtao")); },
+        [](const AoInput& in, const AoParams& p, const Exec& e) {
+            return gtao(in.depth, in.camera, as<GtaoParams>(p, "gtao"), e, GtaoBuffers{in.normals, nullptr});
+        }),
+    entry(
         {"raytraced", "ground truth: cosine-weighted rays against the scene's geometry, SAO's falloff radius",
          "SAO paper section 3 (the ray-traced comparison)", "the scene's geometry and the camera of a depth buffer"},
-        kRaytracedParams, {}, true,
+        kRaytracedParams, {}, true, false,
         [](std::string_view preset) -> AoParams {
             noPreset("raytraced", preset);
             return RaytracedParams{};

@@ -30,7 +30,7 @@ struct Room {
     Camera camera;
     ImageF depth;
     Room(int w, int h) { depth = scene::castGeometry(scene, camera, w, h, Exec{1}).depth; }
-    ao::AoInput input() const { return {depth.view(), camera, &scene, {}}; }
+    ao::AoInput input() const { return {depth.view(), camera, &scene, {}, {}}; }
 };
 
 ao::AoParams small(const ao::AoMethodInfo& m) {
@@ -106,7 +106,7 @@ TEST(AoRegistry, IdsPresetsAndErrors) {
     // The ray-traced truth without geometry: an error, not a crash.
     const auto& rt = ao::aoMethodById("raytraced");
     ImageF depth(8, 8);
-    EXPECT_THROW(rt.run({depth.view(), Camera{}, nullptr, {}}, rt.defaults(""), Exec{1}), Error);
+    EXPECT_THROW(rt.run({depth.view(), Camera{}, nullptr, {}, {}}, rt.defaults(""), Exec{1}), Error);
 }
 
 INSTANTIATE_TEST_SUITE_P(All, AoProperty, ::testing::ValuesIn(all()), name);

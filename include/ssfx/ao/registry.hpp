@@ -1,4 +1,4 @@
-// The AO family's registry: sao, alchemy, raytraced (MethodDesc plus how each is run). The
+// The AO family's registry: sao, alchemy, gtao, raytraced (MethodDesc plus how each is run). The
 // CLI, the evaluation and the property tests pick the method, its parameters and presets
 // here; nothing outside names the methods' functions by string.
 #pragma once
@@ -8,6 +8,7 @@
 #include <variant>
 
 #include "ssfx/ao/alchemy.hpp"
+#include "ssfx/ao/gtao.hpp"
 #include "ssfx/ao/raytraced.hpp"
 #include "ssfx/ao/sao.hpp"
 #include "ssfx/core/method.hpp"
@@ -16,7 +17,7 @@
 namespace ssfx::ao {
 
 //! One method's parameters: the struct its table describes.
-using AoParams = std::variant<SaoParams, AlchemyParams, RaytracedParams>;
+using AoParams = std::variant<SaoParams, AlchemyParams, GtaoParams, RaytracedParams>;
 
 //! What a method reads: the depth buffer (guard band included) and the camera of the whole
 //! buffer; `geometry` for the ray-traced truth, which reads the scene, not the depth (only
@@ -26,10 +27,14 @@ struct AoInput {
     Camera camera;
     const RayScene* geometry = nullptr;
     ProgressFn progress;  //!< reported by the slow methods (raytraced: rows done)
+    //! Camera-space normals of the whole buffer (a G-buffer's), for the methods that take them
+    //! (AoMethodInfo::takesNormals); empty: from depth.
+    ImageView<const Vec3> normals;
 };
 
 struct AoMethodInfo : MethodDesc {
     bool needsGeometry;  //!< raytraced: AoInput::geometry is required
+    bool takesNormals;   //!< gtao: AoInput::normals is used when given
     //! The parameters of `preset` ("" = the defaults); throws ssfx::Error naming the presets.
     AoParams (*defaults)(std::string_view preset);
     //! Throws ssfx::Error for a parameter outside its table's range or a rule across fields.
