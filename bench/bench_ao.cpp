@@ -5,9 +5,12 @@
 // With the GPU backend built and a Vulkan device present, the same on the GPU (gpu/...): the
 // full SAO pipeline and the sample pass alone, timed by GPU timestamps (manual time), at
 // 1920x1080 + 192 and, for SAO against AlchemyAO at 1.5 m, at 2560x1600 + 256 (paper Fig. 5).
+// GTAO against SAO (issue 37's target): both full pipelines at 1920x1080 + 64 px on the room,
+// GTAO per preset and at R = 0.25 m and 4 m (flat in the radius?).
 #include <benchmark/benchmark.h>
 
 #include "ssfx/ao/alchemy.hpp"
+#include "ssfx/ao/gtao.hpp"
 #include "ssfx/ao/sao.hpp"
 #include "ssfx/core/memory.hpp"
 #include "ssfx/scene/analytic.hpp"
@@ -27,6 +30,25 @@ const ssfx::scene::GeometryBuffer& room() {
     static const auto g =
         ssfx::scene::castGeometry(ssfx::scene::roomScene(), ssfx::Camera{}, kW + 2 * kGuard, kH + 2 * kGuard);
     return g;
+}
+
+const ssfx::scene::GeometryBuffer& room64() {
+    static const auto g = ssfx::scene::castGeometry(ssfx::scene::roomScene(), ssfx::Camera{}, kW + 128, kH + 128);
+    return g;
+}
+
+// The full pipelines at 1920x1080 + 64: SAO's paper defaults, GTAO's `preset` with radius R.
+void fullAt64(benchmark::State& state, const std::string& preset, float radius) {
+    ssfx::ao::SaoParams sp;
+    sp.guardBand = 64;
+    ssfx::ao::GtaoParams gp = preset.empty() ? ssfx::ao::GtaoParams{} : ssfx::ao::gtaoPreset(preset);
+    gp.guardBand = 64, gp.radius = radius;
+    for (auto _ : state) {
+        auto a = preset.empty() ? ssfx::ao::sao(room64().depth.view(), ssfx::Camera{}, sp)
+                                : ssfx::ao::gtao(room64().depth.view(), ssfx::Camera{}, gp);
+        benchmark::DoNotOptimize(a.data());
+    }
+    state.SetItemsProcessed(state.iterations() * kW * kH);
 }
 
 void saoFull(benchmark::State& state) {
@@ -143,6 +165,19 @@ void registerGpu() {
 
 const bool registered = [] {
     benchmark::RegisterBenchmark("sao/full/1080p+192", saoFull)->Unit(benchmark::kMillisecond)->UseRealTime();
+    benchmark::RegisterBenchmark("sao/full/1080p+64", [](benchmark::State& s) { fullAt64(s, "", 1.0f); })
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime();
+    for (const char* preset : {"low", "medium", "high", "ultra"})
+        benchmark::RegisterBenchmark((std::string("gtao/full/1080p+64/") + preset + "/r=0.50").c_str(),
+                                     [preset](benchmark::State& s) { fullAt64(s, preset, 0.5f); })
+            ->Unit(benchmark::kMillisecond)
+            ->UseRealTime();
+    for (float r : {0.25f, 4.0f})
+        benchmark::RegisterBenchmark(("gtao/full/1080p+64/high/r=" + std::to_string(r).substr(0, 4)).c_str(),
+                                     [r](benchmark::State& s) { fullAt64(s, "high", r); })
+            ->Unit(benchmark::kMillisecond)
+            ->UseRealTime();
     for (float r : {0.25f, 1.5f, 4.0f})
         for (bool sao : {true, false})
             benchmark::RegisterBenchmark(

@@ -57,7 +57,7 @@ with open(os.path.join(pkg, "__init__.pyi"), "w") as f:
 ao = [head, "import os\n\nimport numpy as np\nfrom numpy.typing import NDArray\nfrom typing import Literal\n\n",
       "Camera = dict | str | os.PathLike[str]\n\n"]
 for m in ssfx.methods("ao"):
-    if m["id"] not in ("sao", "alchemy"):
+    if not hasattr(ssfx.ao, m["id"]):  # the module's functions: the registry's depth-buffer methods
         continue
     presets = " | ".join(repr(p) for p in m["presets"]) or "None"
     ao.append(

@@ -498,6 +498,8 @@ py::array_t<float> runAo(const char* id, const py::handle& depthArg, const py::h
     ImageF a;
     if (backend == "vulkan") {
 #ifdef SSFX_HAVE_GPU
+        if (!gpu::hasGpuAo(id))
+            throw Error(fmt::format("backend: {} has no GPU pass yet (backend='vulkan' runs sao and alchemy)", id));
         GpuContext& g = gpuContext(device.value_or(""));
         ao::depthToZ(view, cam, exec);  // the CPU's checks and messages, before any GPU work
         py::gil_scoped_release release;
@@ -508,7 +510,7 @@ py::array_t<float> runAo(const char* id, const py::handle& depthArg, const py::h
 #endif
     } else {
         py::gil_scoped_release release;
-        a = m.run(ao::AoInput{view, cam, nullptr, {}}, params, exec);
+        a = m.run(ao::AoInput{view, cam, nullptr, {}, {}}, params, exec);
     }
     return floatArray(a);
 }
@@ -606,25 +608,29 @@ PYBIND11_MODULE(_ssfx, m) {
     m.def("methods", &listMethods, py::arg("family") = py::none(),
           "Every method of a family ('aa', 'ao'; default both): id, family, summary, citation, inputs, params "
           "(name, kind, unit, default, min/max or choices, range, doc), presets.");
-    m.def(
-        "sao",
-        [](const py::handle& d, const py::handle& c, const py::handle& preset, const py::handle& threads,
-           const py::handle& backend, const py::handle& device,
-           const py::kwargs& kw) { return runAo("sao", d, c, preset, threads, backend, device, kw); },
-        py::arg("depth"), py::arg("camera"), py::arg("preset") = py::none(), py::arg("threads") = 0,
-        py::arg("backend") = "cpu", py::arg("device") = py::none(),
-        "Scalable Ambient Obscurance: depth (H, W) float32 depth-buffer values in [0, 1], camera a dict "
-        "{'fov_y_deg', 'z_near', 'z_far'} or a camera .json path; returns visibility (H - 2g, W - 2g) float32 "
-        "(g = guardBand). preset: 'released' for the authors' released shaders' configuration. backend: 'cpu' "
-        "(default) or 'vulkan' (the GPU passes on one context per process and device, made when first needed; "
-        "the same result as the CLI's --backend vulkan); device: with 'vulkan', an index or part of a name.");
-    m.def(
-        "alchemy",
-        [](const py::handle& d, const py::handle& c, const py::handle& preset, const py::handle& threads,
-           const py::handle& backend, const py::handle& device,
-           const py::kwargs& kw) { return runAo("alchemy", d, c, preset, threads, backend, device, kw); },
-        py::arg("depth"), py::arg("camera"), py::arg("preset") = py::none(), py::arg("threads") = 0,
-        py::arg("backend") = "cpu", py::arg("device") = py::none(), "The AlchemyAO baseline, as sao().");
+    // One function per AO method that reads a depth buffer, from the registry: ssfx.ao.sao,
+    // ssfx.ao.alchemy, ssfx.ao.gtao (the ray-traced truth needs the scene's geometry).
+    for (const ao::AoMethodInfo& method : ao::aoMethods()) {
+        if (method.needsGeometry) continue;
+        std::string presets = "None (the defaults)";
+        for (std::string_view pr : method.presets) presets += fmt::format(", '{}'", pr);
+        const std::string doc = fmt::format(
+            "{} ({}). depth: (H, W) float32 depth-buffer values in [0, 1]; camera: a dict {{'fov_y_deg', 'z_near', "
+            "'z_far'}} or a camera .json path; returns visibility (H - 2g, W - 2g) float32 (g = guardBand). "
+            "preset: {}. The method's parameters by name as keywords (ssfx.methods('ao'), "
+            "docs/methods/{}.md). backend: 'cpu' (default) or 'vulkan' (sao and alchemy: the GPU passes on one "
+            "context per process and device, made when first needed; the same result as the CLI's --backend "
+            "vulkan); device: with 'vulkan', an index or part of a name.",
+            method.summary, method.citation, presets, method.id);
+        const std::string id(method.id);
+        m.def(
+            id.c_str(),
+            [id](const py::handle& d, const py::handle& c, const py::handle& preset, const py::handle& threads,
+                 const py::handle& backend, const py::handle& device,
+                 const py::kwargs& kw) { return runAo(id.c_str(), d, c, preset, threads, backend, device, kw); },
+            py::arg("depth"), py::arg("camera"), py::arg("preset") = py::none(), py::arg("threads") = 0,
+            py::arg("backend") = "cpu", py::arg("device") = py::none(), doc.c_str());
+    }
     m.def(
         "read_png", [](const py::handle& path) { return toArray(io::readPng(pathArg(path, "path")).view(), 4); },
         py::arg("path"), "A PNG as (H, W, 4) uint8.");

@@ -30,7 +30,7 @@ namespace {
 
 struct AoOptions {
     std::string method = "sao", depth, camera, scene, view, size, output, saveDepth, saveCamera, device, preset;
-    std::string backend = "cpu", savePasses;
+    std::string backend = "cpu", savePasses, normals, bentNormals;
     std::vector<std::string> params;
     double fovDeg = 60;
     int threads = 0, rays = 256;
@@ -68,6 +68,43 @@ void writeStages(const std::string& dir, const ao::AoStages& st) {
     write("ao.exr", st.result);
 }
 
+void writeStages(const std::string& dir, const ao::GtaoStages& st) {
+    std::filesystem::create_directories(dir);
+    auto write = [&](const std::string& name, const ImageF& img) {
+        io::writeExr((std::filesystem::path(dir) / name).string(), img.view(), "Y");
+    };
+    for (std::size_t m = 0; m < st.chain.size(); ++m) write(fmt::format("t{}.exr", m), st.chain[m]);
+    write("edges.exr", st.edges);
+    std::vector<ImageF> n(3, ImageF(st.normals.width(), st.normals.height()));
+    for (int y = 0; y < st.normals.height(); ++y)
+        for (int x = 0; x < st.normals.width(); ++x) {
+            const ao::Vec3 v = st.normals(x, y);
+            n[0](x, y) = v.x, n[1](x, y) = v.y, n[2](x, y) = v.z;
+        }
+    io::writeExr((std::filesystem::path(dir) / "normals.exr").string(),
+                 {{"N.X", n[0].view()}, {"N.Y", n[1].view()}, {"N.Z", n[2].view()}});
+    write("raw.exr", st.raw);
+    write("ao.exr", st.result);
+}
+
+// A camera-space normal buffer: channels N.X, N.Y, N.Z (a G-buffer's, `ssfx render --gbuffer 1`).
+Image<ao::Vec3> readNormals(const std::string& path) {
+    ImageF c[3];
+    const char* names[3] = {"N.X", "N.Y", "N.Z"};
+    for (int i = 0; i < 3; ++i) c[i] = io::readExr(path, names[i]);
+    Image<ao::Vec3> n(c[0].width(), c[0].height());
+    for (int y = 0; y < n.height(); ++y)
+        for (int x = 0; x < n.width(); ++x) n(x, y) = {c[0](x, y), c[1](x, y), c[2](x, y)};
+    return n;
+}
+
+void writeNormals(const std::string& path, const Image<ao::Vec3>& n) {
+    std::vector<ImageF> c(3, ImageF(n.width(), n.height()));
+    for (int y = 0; y < n.height(); ++y)
+        for (int x = 0; x < n.width(); ++x) c[0](x, y) = n(x, y).x, c[1](x, y) = n(x, y).y, c[2](x, y) = n(x, y).z;
+    io::writeExr(path, {{"N.X", c[0].view()}, {"N.Y", c[1].view()}, {"N.Z", c[2].view()}});
+}
+
 #ifdef SSFX_HAVE_GPU
 std::shared_ptr<vkx::Context> gpuContext(const AoOptions& o, bool graphics) {
     vkx::ContextOptions co;
@@ -103,12 +140,16 @@ void run(const AoOptions& o, const CLI::App& cmd) {
     if (cmd.count("--rays") && !method.needsGeometry) throw Error("--rays applies to -m raytraced only");
 #ifdef SSFX_HAVE_GPU
     if (vulkan && !gpu::hasGpuAo(method.id))
-        throw Error(fmt::format("{} has no GPU pass (--backend vulkan runs sao and alchemy)", method.id));
+        throw Error(fmt::format("{} has no GPU pass yet (--backend vulkan runs sao and alchemy)", method.id));
 #else
     if (vulkan) throw Error("--backend vulkan: this ssfx was built without the GPU backend");
 #endif
     if (!o.savePasses.empty() && method.needsGeometry)
         throw Error("--save-passes: the ray-traced truth has no passes (it reads the geometry)");
+    if ((!o.normals.empty() || !o.bentNormals.empty()) && method.id != "gtao")
+        throw Error(fmt::format("{} applies to -m gtao only", o.normals.empty() ? "--bent-normals" : "--normals"));
+    if (!o.bentNormals.empty() && std::filesystem::path(o.bentNormals).extension() != ".exr")
+        throw Error(fmt::format("--bent-normals '{}': use an .exr file name", o.bentNormals));
     if (!o.output.empty()) {  // the output format, before any work
         const std::string ext = std::filesystem::path(o.output).extension().string();
         if (ext != ".png" && ext != ".exr")
@@ -217,9 +258,29 @@ void run(const AoOptions& o, const CLI::App& cmd) {
     if (!o.saveDepth.empty()) io::writeExr(o.saveDepth, depth.view(), "Z");
     if (!o.saveCamera.empty()) io::writeCameraJson(o.saveCamera, cam);
     if (o.output.empty() && o.savePasses.empty()) return;
+    Image<ao::Vec3> normals, bent;
+    if (!o.normals.empty()) {
+        normals = readNormals(o.normals);
+        if (normals.width() != depth.width() || normals.height() != depth.height())
+            throw Error(fmt::format("--normals {} is {}x{}, the depth buffer {}x{} (guard band included)", o.normals,
+                                    normals.width(), normals.height(), depth.width(), depth.height()));
+    }
     ImageF a;
     ao::AoStages stages;
     ao::AoStages* st = o.savePasses.empty() ? nullptr : &stages;
+    if (const auto* gp = std::get_if<ao::GtaoParams>(&params)) {
+        const ao::GtaoBuffers buffers{normals.view(), o.bentNormals.empty() ? nullptr : &bent};
+        if (st) {
+            ao::GtaoStages gs;
+            a = ao::gtao(depth.view(), cam, *gp, exec, buffers, &gs);
+            writeStages(o.savePasses, gs);
+        } else {
+            a = ao::gtao(depth.view(), cam, *gp, exec, buffers);
+        }
+        if (!o.bentNormals.empty()) writeNormals(o.bentNormals, bent);
+        if (!o.output.empty()) writeAo(o.output, a);
+        return;
+    }
     if (vulkan) {
 #ifdef SSFX_HAVE_GPU
         gpu::AoPass pass(gpuContext(o, false), method.id, params);
@@ -235,7 +296,7 @@ void run(const AoOptions& o, const CLI::App& cmd) {
             a = ao::alchemy(depth.view(), cam, std::get<ao::AlchemyParams>(params), exec, st);
     } else {
         ProgressLine line("ao");
-        ao::AoInput input{depth.view(), cam, nullptr, line.fn()};
+        ao::AoInput input{depth.view(), cam, nullptr, line.fn(), {}};
         if (method.needsGeometry)
             input.geometry = meshScene ? meshScene.get() : static_cast<const ao::RayScene*>(&*scene);
         a = method.run(input, params, exec);
@@ -248,7 +309,8 @@ void run(const AoOptions& o, const CLI::App& cmd) {
 
 void addAoCommand(CLI::App& app) {
     auto o = std::make_shared<AoOptions>();
-    auto* cmd = app.add_subcommand("ao", "Ambient obscurance: SAO, the AlchemyAO baseline, or ray-traced ground truth");
+    auto* cmd =
+        app.add_subcommand("ao", "Ambient obscurance: SAO, the AlchemyAO baseline, GTAO, or ray-traced ground truth");
     std::string ids;
     for (const ao::AoMethodInfo& m : ao::aoMethods()) ids += fmt::format("{}{}", ids.empty() ? "" : ", ", m.id);
     cmd->add_option("-m,--method", o->method, ids + " (default sao)");
@@ -272,8 +334,16 @@ void addAoCommand(CLI::App& app) {
     cmd->add_option("--preset", o->preset,
                     "sao: paper (the defaults: the paper's text) or released (the authors' released shaders, "
                     "June 2012: 11 taps, 6.28 per turn, spin summed in float, linear intensity, r 0.7 m, bias "
-                    "0.012 m, intensity 0.7, 9-tap stride-2 blur, RGB8 storage; docs/methods/sao.md); -p "
+                    "0.012 m, intensity 0.7, 9-tap stride-2 blur, RGB8 storage; docs/methods/sao.md). gtao: "
+                    "low, medium, high (the defaults), ultra (XeGTAO's 1x2, 2x2, 3x3, 9x3 slices x steps), ideal "
+                    "(the definition's estimator: no auto-tuned multiplier, power or lift), paper (the course's "
+                    "pipeline: 1 slice, 6 steps, horizons from -1, thickness heuristic; docs/methods/gtao.md). -p "
                     "overrides it");
+    cmd->add_option("--normals", o->normals,
+                    "gtao: camera-space normals (EXR channels N.X, N.Y, N.Z, e.g. a G-buffer from 'ssfx render "
+                    "--gbuffer 1'; the depth's size, guard band included) instead of normals from depth");
+    cmd->add_option("--bent-normals", o->bentNormals,
+                    "gtao: also write the bent normals of the output (EXR, N.X N.Y N.Z, camera space)");
     std::string names;  // from the registry's tables
     for (const ao::AoMethodInfo& m : ao::aoMethods()) {
         names += fmt::format("{}{}:", names.empty() ? "" : "; ", m.id);
@@ -290,7 +360,8 @@ void addAoCommand(CLI::App& app) {
     cmd->add_option("--save-passes", o->savePasses,
                     "sao, alchemy: also write every intermediate into this directory as float EXRs: z.exr, the "
                     "pyramid's z1.exr.., raw.exr (sample pass), quad.exr (2x2 pass), zblur.exr (packed key), "
-                    "horizontal.exr, ao.exr (with --backend vulkan and a rendered scene, from the read-back depth)");
+                    "horizontal.exr, ao.exr (with --backend vulkan and a rendered scene, from the read-back depth); "
+                    "gtao: t0.exr..t4.exr (the depth chain), edges.exr, normals.exr, raw.exr (main pass), ao.exr");
     cmd->add_option("--threads", o->threads, "Worker threads (0 = all)")->check(CLI::Range(0, 1024));
     cmd->footer(
         "Depth d in [0, 1] (0 = near plane); d = 1 exactly is nothing drawn (sky, A = 1) for any far plane;\n"
@@ -301,6 +372,7 @@ void addAoCommand(CLI::App& app) {
         "  ssfx ao --preset released --depth d.exr --camera c.json -p guardBand=64 -o released.png\n"
         "  ssfx ao -m raytraced --scene scenes/sponza.json --size 480x270 --rays 256 -o truth.exr\n"
         "  ssfx ao -m alchemy --depth d.exr --camera c.json -p guardBand=64 -o alchemy.exr\n"
+        "  ssfx ao -m gtao --preset ultra --depth d.exr --camera c.json -p guardBand=64 -p radius=1 -o gtao.exr\n"
         "  ssfx ao --backend vulkan --scene atrium --size 1920x1080 -p guardBand=192 -o ao.png\n"
         "  ssfx ao --backend vulkan --depth d.exr --camera c.json -p guardBand=64 --save-passes passes -o ao.exr");
     cmd->callback([o, cmd] {

@@ -1,4 +1,4 @@
-"""Ambient obscurance on float32 depth buffers (ssfx ao)."""
-from ._ssfx import alchemy, sao
+"""Ambient obscurance on float32 depth buffers (ssfx ao): one function per registry method."""
+from ._ssfx import alchemy, gtao, sao
 
-__all__ = ["sao", "alchemy"]
+__all__ = ["sao", "alchemy", "gtao"]

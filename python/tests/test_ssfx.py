@@ -221,6 +221,25 @@ def test_ao_equals_the_cli(tmp_path):
         ssfx.ao.sao(bad, camera, guardBand=8)
 
 
+def test_gtao_comes_from_the_registry_and_equals_the_cli(tmp_path):
+    d, c, g = str(tmp_path / "d.exr"), str(tmp_path / "c.json"), str(tmp_path / "g.exr")
+    cli("ao", "--scene", "room", "--size", "64x36", "-p", "guardBand=8", "--save-depth", d, "--save-camera", c,
+        "-o", str(tmp_path / "sao.png"))
+    cli("ao", "-m", "gtao", "--preset", "ultra", "--depth", d, "--camera", c, "-p", "guardBand=8", "-p", "radius=1",
+        "-o", g)
+    depth = ssfx.io.read_exr(d)
+    got = ssfx.ao.gtao(depth, c, preset="ultra", guardBand=8, radius=1.0)
+    assert got.dtype == np.float32 and got.shape == (36, 64)
+    assert np.array_equal(got, ssfx.io.read_exr(g))
+    assert "gtao" in ssfx.ao.__all__ and "Ground-Truth" in ssfx.ao.gtao.__doc__
+    with pytest.raises(ssfx.Error, match="unknown preset"):
+        ssfx.ao.gtao(depth, c, preset="extreme")
+    with pytest.raises(ssfx.Error, match="radius"):
+        ssfx.ao.gtao(depth, c, radius=0.0)
+    with pytest.raises(ssfx.Error, match="no GPU pass"):
+        ssfx.ao.gtao(depth, c, backend="vulkan")
+
+
 def test_docstrings_and_stubs_come_from_the_registries():
     for m in aa_methods():
         assert m["id"] in ssfx.aa.__doc__

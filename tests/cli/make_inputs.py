@@ -3,6 +3,7 @@ section 5, APNG 1.0, OpenEXR file layout):
     make_inputs.py apng PATH W H FRAMES        an RGBA APNG of FRAMES whole frames
     make_inputs.py bigchunk IN OUT MIB          IN with an ancillary chunk of MIB MiB before IEND
     make_inputs.py exrclaim IN OUT W H          IN (a one-block EXR) with its data window set to W x H
+    make_inputs.py nandepth PATH W H            a W x H depth EXR (channel Z, uncompressed) of 0.5 with a NaN
 """
 import struct
 import sys
@@ -62,6 +63,35 @@ def exrclaim(src, dst, w, h):
     open(dst, "wb").write(header + table + body)
 
 
+def attr(name, kind, data):
+    return name + b"\0" + kind + b"\0" + struct.pack("<i", len(data)) + data
+
+
+def nandepth(path, w, h):
+    """A scanline EXR without compression (one line per block): FLOAT channel Z, 0.5 except one NaN."""
+    header = b"".join([
+        struct.pack("<ii", 20000630, 2),
+        attr(b"channels", b"chlist", b"Z\0" + struct.pack("<iBBBBii", 2, 0, 0, 0, 0, 1, 1) + b"\0"),
+        attr(b"compression", b"compression", b"\0"),
+        attr(b"dataWindow", b"box2i", struct.pack("<iiii", 0, 0, w - 1, h - 1)),
+        attr(b"displayWindow", b"box2i", struct.pack("<iiii", 0, 0, w - 1, h - 1)),
+        attr(b"lineOrder", b"lineOrder", b"\0"),
+        attr(b"pixelAspectRatio", b"float", struct.pack("<f", 1.0)),
+        attr(b"screenWindowCenter", b"v2f", struct.pack("<ff", 0.0, 0.0)),
+        attr(b"screenWindowWidth", b"float", struct.pack("<f", 1.0)),
+        b"\0"])
+    first = len(header) + 8 * h
+    size = 8 + 4 * w
+    table = b"".join(struct.pack("<Q", first + y * size) for y in range(h))
+    rows = []
+    for y in range(h):
+        values = [0.5] * w
+        if y == h // 2:
+            values[w // 2] = float("nan")
+        rows.append(struct.pack("<ii", y, 4 * w) + struct.pack(f"<{w}f", *values))
+    open(path, "wb").write(header + table + b"".join(rows))
+
+
 if __name__ == "__main__":
     kind, args = sys.argv[1], sys.argv[2:]
     if kind == "apng":
@@ -70,5 +100,7 @@ if __name__ == "__main__":
         bigchunk(args[0], args[1], int(args[2]))
     elif kind == "exrclaim":
         exrclaim(args[0], args[1], int(args[2]), int(args[3]))
+    elif kind == "nandepth":
+        nandepth(args[0], int(args[1]), int(args[2]))
     else:
         sys.exit(f"unknown kind {kind}")

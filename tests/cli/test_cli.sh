@@ -241,6 +241,27 @@ check ao_preset_bad 2 "$SSFX" ao --preset shipped --depth "$OUT/d.exr" --camera 
 contains ao_preset_bad "$OUT/ao_preset_bad.err" "paper, released"
 check ao_preset_alchemy 2 "$SSFX" ao -m alchemy --preset released --depth "$OUT/d.exr" --camera "$OUT/c.json" -o "$OUT/x.png"
 check ao_flag_bad 2 "$SSFX" ao --scene room --size 32x24 -p spinInFloat=2 -o "$OUT/x.png"
+# GTAO from the registry: presets, passes, bent normals, a G-buffer's normals; bad input refused
+# before anything is written (NaN depth, zero radius, unknown preset, normals of another size).
+check ao_gtao 0 "$SSFX" ao -m gtao --preset ultra --depth "$OUT/d.exr" --camera "$OUT/c.json" -p guardBand=8 -p radius=1 -o "$OUT/gtao.exr" --bent-normals "$OUT/bent.exr" --save-passes "$OUT/gtao_passes"
+for f in gtao.exr bent.exr gtao_passes/t0.exr gtao_passes/t4.exr gtao_passes/edges.exr gtao_passes/normals.exr gtao_passes/raw.exr gtao_passes/ao.exr; do
+  [ -s "$OUT/$f" ] || { echo "FAIL ao_gtao: no $f"; fail=1; }
+done
+# Without a guard band the passes cover the whole buffer: their normals are a normal buffer of the depth's size.
+check ao_gtao_g0 0 "$SSFX" ao -m gtao --scene room --size 48x32 -o "$OUT/gtao_g0.png" --save-depth "$OUT/d0.exr" --save-camera "$OUT/c0.json" --save-passes "$OUT/gtao_g0"
+check ao_gtao_normals 0 "$SSFX" ao -m gtao --depth "$OUT/d0.exr" --camera "$OUT/c0.json" --normals "$OUT/gtao_g0/normals.exr" -o "$OUT/gtao_n.png"
+[ -s "$OUT/gtao_n.png" ] || { echo "FAIL ao_gtao_normals: no output"; fail=1; }
+python3 "$(dirname "$0")/make_inputs.py" nandepth "$OUT/nan_depth.exr" 112 70
+check ao_gtao_nan 2 "$SSFX" ao -m gtao --depth "$OUT/nan_depth.exr" --camera "$OUT/c.json" -p guardBand=8 -o "$OUT/x.png" --bent-normals "$OUT/xb.exr"
+contains ao_gtao_nan "$OUT/ao_gtao_nan.err" "is nan"
+check ao_gtao_radius 2 "$SSFX" ao -m gtao --depth "$OUT/d.exr" --camera "$OUT/c.json" -p guardBand=8 -p radius=0 -o "$OUT/x.png"
+contains ao_gtao_radius "$OUT/ao_gtao_radius.err" "radius = 0"
+check ao_gtao_preset 2 "$SSFX" ao -m gtao --preset extreme --depth "$OUT/d.exr" --camera "$OUT/c.json" -o "$OUT/x.png"
+contains ao_gtao_preset "$OUT/ao_gtao_preset.err" "low, medium, high, ultra"
+check ao_gtao_nsize 2 "$SSFX" ao -m gtao --depth "$OUT/d.exr" --camera "$OUT/c.json" -p guardBand=8 --normals "$OUT/bent.exr" -o "$OUT/x.png"
+contains ao_gtao_nsize "$OUT/ao_gtao_nsize.err" "guard band included"
+check ao_gtao_sao_normals 2 "$SSFX" ao --depth "$OUT/d.exr" --camera "$OUT/c.json" -p guardBand=8 --normals "$OUT/bent.exr" -o "$OUT/x.png"
+for f in x.png xb.exr; do [ ! -e "$OUT/$f" ] || { echo "FAIL ao_gtao bad input: $f was written"; fail=1; }; done
 # Numbers: integers are never wrapped, truncated or rounded; sizes do not overflow; "+1" is a number.
 for p in guardBand=4294967297 guardBand=nan numSamples=10.4 blurRadius=2.5; do
   check "ao_int_$p" 2 "$SSFX" ao --scene room --size 32x24 -p "$p" -o "$OUT/x.png"
