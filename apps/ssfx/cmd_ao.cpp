@@ -68,6 +68,13 @@ void writeStages(const std::string& dir, const ao::AoStages& st) {
     write("ao.exr", st.result);
 }
 
+void writeNormals(const std::string& path, const Image<ao::Vec3>& n) {
+    std::vector<ImageF> c(3, ImageF(n.width(), n.height()));
+    for (int y = 0; y < n.height(); ++y)
+        for (int x = 0; x < n.width(); ++x) c[0](x, y) = n(x, y).x, c[1](x, y) = n(x, y).y, c[2](x, y) = n(x, y).z;
+    io::writeExr(path, {{"N.X", c[0].view()}, {"N.Y", c[1].view()}, {"N.Z", c[2].view()}});
+}
+
 void writeStages(const std::string& dir, const ao::GtaoStages& st) {
     std::filesystem::create_directories(dir);
     auto write = [&](const std::string& name, const ImageF& img) {
@@ -75,14 +82,7 @@ void writeStages(const std::string& dir, const ao::GtaoStages& st) {
     };
     for (std::size_t m = 0; m < st.chain.size(); ++m) write(fmt::format("t{}.exr", m), st.chain[m]);
     write("edges.exr", st.edges);
-    std::vector<ImageF> n(3, ImageF(st.normals.width(), st.normals.height()));
-    for (int y = 0; y < st.normals.height(); ++y)
-        for (int x = 0; x < st.normals.width(); ++x) {
-            const ao::Vec3 v = st.normals(x, y);
-            n[0](x, y) = v.x, n[1](x, y) = v.y, n[2](x, y) = v.z;
-        }
-    io::writeExr((std::filesystem::path(dir) / "normals.exr").string(),
-                 {{"N.X", n[0].view()}, {"N.Y", n[1].view()}, {"N.Z", n[2].view()}});
+    writeNormals((std::filesystem::path(dir) / "normals.exr").string(), st.normals);
     write("raw.exr", st.raw);
     write("ao.exr", st.result);
 }
@@ -96,13 +96,6 @@ Image<ao::Vec3> readNormals(const std::string& path) {
     for (int y = 0; y < n.height(); ++y)
         for (int x = 0; x < n.width(); ++x) n(x, y) = {c[0](x, y), c[1](x, y), c[2](x, y)};
     return n;
-}
-
-void writeNormals(const std::string& path, const Image<ao::Vec3>& n) {
-    std::vector<ImageF> c(3, ImageF(n.width(), n.height()));
-    for (int y = 0; y < n.height(); ++y)
-        for (int x = 0; x < n.width(); ++x) c[0](x, y) = n(x, y).x, c[1](x, y) = n(x, y).y, c[2](x, y) = n(x, y).z;
-    io::writeExr(path, {{"N.X", c[0].view()}, {"N.Y", c[1].view()}, {"N.Z", c[2].view()}});
 }
 
 #ifdef SSFX_HAVE_GPU
