@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdint>
 #include <numbers>
+#include <vector>
 
 #include "src/ao/ao_sampling.hpp"
 #include "ssfx/ao/gtao.hpp"
@@ -48,6 +49,10 @@ struct GtaoSetup {
     int slices, steps;
     bool lift, nearFade, fastAcos, discard, minusOne;
     std::array<std::array<float, 2>, 64 * 64> noise;  //!< (xs, xt) at (x mod 64, y mod 64), frame 0
+    //! Point sampling of level m at pixel p's full-resolution centre, per axis:
+    //! floor((p + 0.5) W_m / W) for 0 <= p < W (a table: the division is the main pass's
+    //! costliest operation otherwise); p < 0 gives 0 and p >= W gives W_m - 1 (clamped).
+    std::array<std::vector<int>, kGtaoChainLevels> texelX, texelY;
 
     GtaoSetup(const ZPyramid& c, const Projection& proj, const GtaoParams& p)
         : chain(c),
@@ -75,6 +80,15 @@ struct GtaoSetup {
           minusOne(p.horizonStart == HorizonStart::MinusOne) {
         for (int y = 0; y < 64; ++y)
             for (int x = 0; x < 64; ++x) noise[std::size_t(y * 64 + x)] = gtaoNoise(x, y);
+        auto texel = [](int q, int wm, int w) { return int((2 * std::int64_t(q) + 1) * wm / (2 * std::int64_t(w))); };
+        for (int m = 0; m < kGtaoChainLevels; ++m) {
+            const ImageView<const float> level = c.level(m);
+            for (int x = 0; x < width; ++x) texelX[std::size_t(m)].push_back(texel(x, level.width(), width));
+            for (int y = 0; y < height; ++y) texelY[std::size_t(m)].push_back(texel(y, level.height(), height));
+        }
+    }
+    int texel(const std::vector<int>& table, int p, int wm) const {
+        return p < 0 ? 0 : p >= int(table.size()) ? wm - 1 : table[std::size_t(p)];
     }
     float acos(float x) const { return fastAcos ? gtaoFastAcos(x) : std::acos(x); }
     //! ((j + xj) / J)^power: power 2 as one product (what a correctly rounded pow gives).
@@ -234,13 +248,8 @@ private:
         const bool inside = px >= 0 && py >= 0 && px < s.width && py < s.height;
         if (!inside && s.discard) return;  // weight 0: no change
         const ImageView<const float> level = s.chain.level(m);
-        // Point sampling of level m at the full-resolution centre: floor((p + 0.5) W_m / W).
-        auto texel = [](int p, int wm, int w) {
-            const std::int64_t num = (2 * std::int64_t(p) + 1) * wm, den = 2 * std::int64_t(w);
-            const std::int64_t f = num >= 0 ? num / den : -((-num + den - 1) / den);
-            return int(std::clamp<std::int64_t>(f, 0, wm - 1));
-        };
-        const float ts = level(texel(px, level.width(), s.width), texel(py, level.height(), s.height));
+        const float ts = level(s.texel(s.texelX[std::size_t(m)], px, level.width()),
+                               s.texel(s.texelY[std::size_t(m)], py, level.height()));
         if (std::isinf(ts)) return;  // sky: weight 0
         const Vec3 q = s.pos.at(px, py, -ts);
         const Vec3 dv = sub(q, c);

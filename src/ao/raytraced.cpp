@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <numbers>
@@ -49,18 +50,29 @@ Vec3d primaryRay(const Projection& proj, float px, float py) {
 
 void validate(const RaytracedParams& p) { validateParams(kRaytracedParams, &p, "raytraced"); }
 
-ImageF raytraced(const RayScene& scene, const Camera& camera, int width, int height, const RaytracedParams& p,
-                 const Exec& exec, const ProgressFn& progress) {
-    validate(p);
-    if (width <= 2 * p.guardBand || height <= 2 * p.guardBand)
-        throw Error(fmt::format("raytraced: no pixels inside a guard band of {} in {}x{}", p.guardBand, width, height));
+std::vector<ImageF> raytracedSet(const RayScene& scene, const Camera& camera, int width, int height,
+                                 std::span<const RaytracedParams> truths, const Exec& exec,
+                                 const ProgressFn& progress) {
+    if (truths.empty()) throw Error("raytraced: no truths asked for");
+    for (const RaytracedParams& p : truths) {
+        validate(p);
+        if (p.raysPerPixel != truths[0].raysPerPixel || p.guardBand != truths[0].guardBand)
+            throw Error("raytraced: truths from one ray set share raysPerPixel and guardBand");
+    }
+    const RaytracedParams& p0 = truths[0];
+    if (width <= 2 * p0.guardBand || height <= 2 * p0.guardBand)
+        throw Error(
+            fmt::format("raytraced: no pixels inside a guard band of {} in {}x{}", p0.guardBand, width, height));
     const Projection proj = projection(camera, width, height);
-    const int g = p.guardBand, w = width - 2 * g, h = height - 2 * g;
-    const double r = p.radius, n = p.raysPerPixel;
-    const bool binary = p.visibility == Visibility::Binary;
-    ImageF out(w, h);
+    const int g = p0.guardBand, w = width - 2 * g, h = height - 2 * g;
+    const double n = p0.raysPerPixel;
+    double rMax = 0;
+    for (const RaytracedParams& p : truths) rMax = std::max(rMax, double(p.radius));
+    std::vector<ImageF> out;
+    for (std::size_t k = 0; k < truths.size(); ++k) out.emplace_back(w, h);
     std::atomic<std::int64_t> rowsDone{0};
     parallelRows(h, exec, [&](int r0, int r1) {
+        std::vector<double> occlusion(truths.size());
         for (int j = r0; j < r1; ++j)
             for (int i = 0; i < w; ++i) {
                 const int x = i + g, y = j + g;
@@ -69,7 +81,7 @@ ImageF raytraced(const RayScene& scene, const Camera& camera, int width, int hei
                 // No hit, or a hit at or beyond a finite far plane, which a rasteriser clips:
                 // nothing drawn there, sky, as the depth-buffer methods see it (depth 1).
                 if (!std::isfinite(hit.t) || dir.z * hit.t <= camera.zFar) {
-                    out(i, j) = 1.0f;
+                    for (ImageF& o : out) o(i, j) = 1.0f;
                     continue;
                 }
                 const Vec3d c{dir.x * hit.t, dir.y * hit.t, dir.z * hit.t};
@@ -86,8 +98,8 @@ ImageF raytraced(const RayScene& scene, const Camera& camera, int width, int hei
                 const Vec3d o{c.x + nn.x * eps, c.y + nn.y * eps, c.z + nn.z * eps};
                 double su, sv;
                 pixelShift(x, y, su, sv);
-                double occlusion = 0;
-                for (int k = 0; k < p.raysPerPixel; ++k) {
+                std::fill(occlusion.begin(), occlusion.end(), 0.0);
+                for (int k = 0; k < p0.raysPerPixel; ++k) {
                     // Hammersley point, rotated, mapped to a cosine-weighted direction.
                     double u1 = (k + 0.5) / n + su, u2 = radicalInverse2(std::uint32_t(k)) + sv;
                     u1 -= std::floor(u1), u2 -= std::floor(u2);
@@ -96,17 +108,27 @@ ImageF raytraced(const RayScene& scene, const Camera& camera, int width, int hei
                                  lz = std::sqrt(std::max(0.0, 1 - u1));
                     const Vec3d d{t1.x * lx + t2.x * ly + nn.x * lz, t1.y * lx + t2.y * ly + nn.y * lz,
                                   t1.z * lx + t2.z * ly + nn.z * lz};
-                    const RayHit s = scene.intersect(o, d, 0.0, r);
-                    if (s.t < r) {
-                        const double q = 1.0 - (s.t / r) * (s.t / r);
-                        occlusion += binary ? 1.0 : q * q * q;
+                    // The nearest hit within the largest radius is the nearest within any
+                    // smaller one whenever it is closer than that one: one cast serves all.
+                    const RayHit s = scene.intersect(o, d, 0.0, rMax);
+                    for (std::size_t t = 0; t < truths.size(); ++t) {
+                        const double r = truths[t].radius;
+                        if (s.t < r) {
+                            const double q = 1.0 - (s.t / r) * (s.t / r);
+                            occlusion[t] += truths[t].visibility == Visibility::Binary ? 1.0 : q * q * q;
+                        }
                     }
                 }
-                out(i, j) = float(1.0 - occlusion / n);
+                for (std::size_t t = 0; t < truths.size(); ++t) out[t](i, j) = float(1.0 - occlusion[t] / n);
             }
         if (progress) progress({"ray tracing", rowsDone += r1 - r0, h, "rows"});
     });
     return out;
+}
+
+ImageF raytraced(const RayScene& scene, const Camera& camera, int width, int height, const RaytracedParams& p,
+                 const Exec& exec, const ProgressFn& progress) {
+    return std::move(raytracedSet(scene, camera, width, height, std::span(&p, 1), exec, progress)[0]);
 }
 
 }  // namespace ssfx::ao

@@ -7,6 +7,7 @@
 
 #include "ssfx/ao/depth.hpp"
 #include "ssfx/ao/raytraced.hpp"
+#include "ssfx/core/error.hpp"
 #include "ssfx/scene/analytic.hpp"
 
 using namespace ssfx;
@@ -90,4 +91,33 @@ TEST(Raytraced, BinaryVisibilityMatchesAQuadratureOfTheCosineWeightedVisibleFrac
         lower += ao.pixels()[i] < obs.pixels()[i];
     }
     EXPECT_GT(lower, 0);
+}
+
+TEST(Raytraced, OneRaySetGivesEveryTruthsBytes) {
+    // raytracedSet casts each ray once, to the largest radius, and scores every (radius,
+    // definition) from that hit; each image must be the bytes of its own raytraced() call,
+    // which casts only as far as its own radius.
+    Camera cam;
+    const auto scene = scene::roomScene();
+    std::vector<RaytracedParams> truths;
+    for (float r : {0.5f, 1.0f, 2.0f})
+        for (Visibility v : {Visibility::Obscurance, Visibility::Binary}) {
+            RaytracedParams p;
+            p.radius = r, p.visibility = v, p.raysPerPixel = 16, p.guardBand = 2;
+            truths.push_back(p);
+        }
+    const std::vector<ImageF> set = raytracedSet(scene, cam, 40, 30, truths, Exec{2});
+    ASSERT_EQ(set.size(), truths.size());
+    for (std::size_t k = 0; k < truths.size(); ++k) {
+        const ImageF one = raytraced(scene, cam, 40, 30, truths[k], Exec{1});
+        ASSERT_EQ(set[k].width(), 36);
+        EXPECT_TRUE(std::equal(one.pixels().begin(), one.pixels().end(), set[k].pixels().begin())) << k;
+    }
+    // A larger radius finds more occluders: the binary truth at 2 m is the darkest somewhere.
+    EXPECT_LT(*std::min_element(set[5].pixels().begin(), set[5].pixels().end()),
+              *std::min_element(set[1].pixels().begin(), set[1].pixels().end()));
+    // Truths from one set share the ray count and guard band.
+    truths[1].raysPerPixel = 32;
+    EXPECT_THROW(raytracedSet(scene, cam, 40, 30, truths), Error);
+    EXPECT_THROW(raytracedSet(scene, cam, 40, 30, {}), Error);
 }

@@ -53,8 +53,8 @@ TEST(AoExperiments, QuickRunWritesItsFiles) {
     std::ifstream in(dir + "/data/ao.json");
     std::stringstream ss;
     ss << in.rdbuf();
-    for (const char* key :
-         {"\"z_precision\"", "\"normal_precision\"", "\"accuracy\"", "\"radius_scaling\"", "\"pass_times\""})
+    for (const char* key : {"\"z_precision\"", "\"normal_precision\"", "\"accuracy\"", "\"radius_scaling\"",
+                            "\"pass_times\"", "\"comparison\"", "\"comparison_mean\"", "\"comparison_verdict\""})
         EXPECT_NE(ss.str().find(key), std::string::npos) << key;
     EXPECT_NE(md.find("Normal precision"), std::string::npos);
     // data/ao.md is the section's Markdown; every figure the section shows exists.
@@ -62,8 +62,8 @@ TEST(AoExperiments, QuickRunWritesItsFiles) {
     std::stringstream mdText;
     mdText << mdFile.rdbuf();
     EXPECT_EQ(mdText.str(), md);
-    ASSERT_EQ(section.blocks.size(), 6u);
-    std::size_t figures = 0;
+    ASSERT_EQ(section.blocks.size(), 9u);
+    std::size_t figures = 0, viewers = 0;
     for (const auto& b : section.blocks) {
         EXPECT_FALSE(b.table.empty()) << b.heading;
         for (const auto& row : b.table.rows) EXPECT_EQ(row.size(), b.table.header.size()) << b.heading;
@@ -71,6 +71,18 @@ TEST(AoExperiments, QuickRunWritesItsFiles) {
             EXPECT_TRUE(std::filesystem::exists(dir + "/" + f.path)) << f.path;
             ++figures;
         }
+        for (const auto& v : b.viewers) {
+            for (const auto& [label, path] : v.sources) EXPECT_TRUE(std::filesystem::exists(dir + "/" + path)) << path;
+            ++viewers;
+        }
     }
     EXPECT_GE(figures, 10u);
+    EXPECT_EQ(viewers, 2u);  // the method comparison: one per scene (corner, room)
+    // The comparison: 9 methods x 3 radii per truth, a verdict naming the closest.
+    const eval::Block& summary = section.blocks[4];
+    EXPECT_EQ(summary.table.rows.size(), 9u);
+    EXPECT_NE(summary.after.find("Against the obscurance truth the closest"), std::string::npos);
+    EXPECT_NE(summary.after.find("Against the binary truth the closest"), std::string::npos);
+    EXPECT_EQ(section.blocks[5].table.rows.size(), 27u);
+    EXPECT_EQ(section.blocks[6].table.rows.size(), 27u);
 }

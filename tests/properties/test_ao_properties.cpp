@@ -93,12 +93,17 @@ TEST_P(AoProperty, NanDepthIsRefused) {
 TEST(AoRegistry, IdsPresetsAndErrors) {
     std::vector<std::string> ids;
     for (const auto& m : ao::aoMethods()) ids.emplace_back(m.id);
-    EXPECT_EQ(ids, (std::vector<std::string>{"sao", "alchemy", "raytraced"}));
+    EXPECT_EQ(ids, (std::vector<std::string>{"sao", "alchemy", "gtao", "raytraced"}));
     EXPECT_THROW(ao::aoMethodById("hbao"), Error);
     const auto& sao = ao::aoMethodById("sao");
     EXPECT_EQ(std::get<ao::SaoParams>(sao.defaults("released")).numSamples, 11);
     EXPECT_THROW(sao.defaults("nope"), Error);
     EXPECT_THROW(ao::aoMethodById("alchemy").defaults("released"), Error);
+    // GTAO's presets are the spec's quality levels (gtao.md section 10).
+    const auto& gtao = ao::aoMethodById("gtao");
+    EXPECT_EQ(std::get<ao::GtaoParams>(gtao.defaults("low")).sliceCount, 1);
+    EXPECT_EQ(std::get<ao::GtaoParams>(gtao.defaults("ultra")).sliceCount, 9);
+    EXPECT_THROW(gtao.defaults("extreme"), Error);
     // Parameters of one method are not another's.
     ao::AoParams p = ao::aoMethodById("alchemy").defaults("");
     EXPECT_THROW(ao::setParam(sao, p, "radius", 1), Error);

@@ -16,7 +16,9 @@
 #pragma once
 
 #include <array>
+#include <span>
 #include <string_view>
+#include <vector>
 
 #include <cstdint>
 
@@ -80,6 +82,13 @@ void validate(const RaytracedParams& p);
 //! rasteriser leaves the cleared depth 1) are 1. `progress` hears the rows done.
 ImageF raytraced(const RayScene& scene, const Camera& camera, int width, int height, const RaytracedParams& params = {},
                  const Exec& exec = {}, const ProgressFn& progress = {});
+
+//! Several truths from one set of rays: image k is what raytraced() gives with truths[k]
+//! (same rays, same bytes), for the cost of one cast per ray to the largest radius. The
+//! truths share raysPerPixel and guardBand (else ssfx::Error).
+std::vector<ImageF> raytracedSet(const RayScene& scene, const Camera& camera, int width, int height,
+                                 std::span<const RaytracedParams> truths, const Exec& exec = {},
+                                 const ProgressFn& progress = {});
 
 //! The primary ray through pixel centre (px, py) (unit direction, from the origin).
 Vec3d primaryRay(const Projection& proj, float px, float py);

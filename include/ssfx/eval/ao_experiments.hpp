@@ -10,7 +10,10 @@
 //   Figure 5  AO sample-pass time vs world-space radius (AlchemyAO, SAO without and with
 //             the pyramid);
 //   Table 3   per-pass times at 1280x720 ... 2560x1600 with the paper's guard bands;
-//   accuracy  SAO and AlchemyAO against the ray-traced ground truth (MSE, PSNR).
+//   accuracy  SAO and AlchemyAO against the ray-traced ground truth (MSE, PSNR);
+//   methods   AlchemyAO, SAO (paper, released) and GTAO (low..ultra, ideal, paper) against
+//             two truths (obscurance, binary visibility) at R = 0.5, 1, 2 m: PSNR, MAE, the
+//             images and signed error images in a viewer per scene, a generated verdict.
 #pragma once
 
 #include <functional>
