@@ -9,8 +9,10 @@
 #include <chrono>
 #include <cmath>
 #include <utility>
+#include <vector>
 
 #include "src/ao/gtao_pixel.hpp"
+#include "src/ao/gtao_simd.hpp"
 #include "ssfx/core/error.hpp"
 
 namespace ssfx::ao {
@@ -126,7 +128,7 @@ struct Workspace {
 };
 
 ImageF gtaoImpl(ImageView<const float> depth, const Camera& camera, const GtaoParams& p, const Exec& exec,
-                const GtaoBuffers& buffers, GtaoStages* stages, GtaoTimings* timings) {
+                const GtaoBuffers& buffers, GtaoStages* stages, GtaoTimings* timings, bool scalar = false) {
     validate(p);
     const int g = p.guardBand;
     const int W = depth.width(), H = depth.height();
@@ -166,11 +168,54 @@ ImageF gtaoImpl(ImageView<const float> depth, const Camera& camera, const GtaoPa
     if (ws.a.width() != work.width || ws.a.height() != work.height) ws.a = ImageF(work.width, work.height);
     if (bent) ws.bentA = Image<Vec3>(work.width, work.height);
     detail::GtaoMain main(s, work, ws.normals.data());
+    // The vector path (gtao-inl.h) where it applies: not for the scalar reference, nor with
+    // bent normals or a sampleDistributionPower other than 2 (the scalar loop does those).
+    const bool simd = !scalar && !bent && p.sampleDistributionPower == 2.0f;
+    std::vector<float> noiseS, noiseT;
+    detail::GtaoSimdInput in{};
+    if (simd) {
+        for (const auto& v : s.noise) noiseS.push_back(v[0]), noiseT.push_back(v[1]);
+        static_assert(sizeof(Vec3) == 3 * sizeof(float));
+        in = {ws.chain.data.data(),
+              ws.chain.offset.data(),
+              ws.chain.width.data(),
+              s.texelX.data(),
+              s.texelY.data(),
+              W,
+              H,
+              g,
+              s.pos.ax,
+              s.pos.bx,
+              s.pos.ay,
+              s.pos.by,
+              reinterpret_cast<const float*>(ws.normals.data()),
+              work.x0,
+              work.y0,
+              work.width,
+              noiseS.data(),
+              noiseT.data(),
+              s.rNum,
+              s.re,
+              s.fRe,
+              s.mipOffset,
+              s.toc1,
+              s.thickness,
+              s.finalPower,
+              s.slices,
+              s.steps,
+              s.lift,
+              s.nearFade,
+              s.fastAcos,
+              s.discard,
+              s.minusOne};
+    }
     parallelRows(work.height, exec, [&](int r0, int r1) {
         for (int j = r0; j < r1; ++j) {
             const int y = work.y0 + j;
             float* row = &ws.a(0, j);
-            for (int i = 0; i < work.width; ++i) row[i] = main.pixel(work.x0 + i, y, bent ? &ws.bentA(i, j) : nullptr);
+            int i = 0;
+            if (simd) i = detail::gtaoRowSimd(in, y, work.x0, work.x0 + work.width, row) - work.x0;
+            for (; i < work.width; ++i) row[i] = main.pixel(work.x0 + i, y, bent ? &ws.bentA(i, j) : nullptr);
         }
     });
     if (p.xegtaoStorage) {
@@ -272,7 +317,7 @@ ImageF gtao(ImageView<const float> depth, const Camera& camera, const GtaoParams
 
 ImageF gtaoReference(ImageView<const float> depth, const Camera& camera, const GtaoParams& params,
                      const GtaoBuffers& buffers) {
-    return gtaoImpl(depth, camera, params, Exec{1}, buffers, nullptr, nullptr);
+    return gtaoImpl(depth, camera, params, Exec{1}, buffers, nullptr, nullptr, true);
 }
 
 }  // namespace ssfx::ao

@@ -49,10 +49,11 @@ struct GtaoSetup {
     int slices, steps;
     bool lift, nearFade, fastAcos, discard, minusOne;
     std::array<std::array<float, 2>, 64 * 64> noise;  //!< (xs, xt) at (x mod 64, y mod 64), frame 0
-    //! Point sampling of level m at pixel p's full-resolution centre, per axis:
-    //! floor((p + 0.5) W_m / W) for 0 <= p < W (a table: the division is the main pass's
-    //! costliest operation otherwise); p < 0 gives 0 and p >= W gives W_m - 1 (clamped).
-    std::array<std::vector<int>, kGtaoChainLevels> texelX, texelY;
+    //! Point sampling of level m at buffer column / row p: floor((p + 0.5) W_m / W) at
+    //! [m W + p] (tables: a 64-bit division per sample is otherwise the pass's costliest
+    //! operation). A p beyond the buffer reads the edge's entry, which is that formula
+    //! clamped into [0, W_m - 1] (entry 0 is 0, entry W - 1 is W_m - 1).
+    std::vector<std::int32_t> texelX, texelY;
 
     GtaoSetup(const ZPyramid& c, const Projection& proj, const GtaoParams& p)
         : chain(c),
@@ -83,12 +84,9 @@ struct GtaoSetup {
         auto texel = [](int q, int wm, int w) { return int((2 * std::int64_t(q) + 1) * wm / (2 * std::int64_t(w))); };
         for (int m = 0; m < kGtaoChainLevels; ++m) {
             const ImageView<const float> level = c.level(m);
-            for (int x = 0; x < width; ++x) texelX[std::size_t(m)].push_back(texel(x, level.width(), width));
-            for (int y = 0; y < height; ++y) texelY[std::size_t(m)].push_back(texel(y, level.height(), height));
+            for (int x = 0; x < width; ++x) texelX.push_back(texel(x, level.width(), width));
+            for (int y = 0; y < height; ++y) texelY.push_back(texel(y, level.height(), height));
         }
-    }
-    int texel(const std::vector<int>& table, int p, int wm) const {
-        return p < 0 ? 0 : p >= int(table.size()) ? wm - 1 : table[std::size_t(p)];
     }
     float acos(float x) const { return fastAcos ? gtaoFastAcos(x) : std::acos(x); }
     //! ((j + xj) / J)^power: power 2 as one product (what a correctly rounded pow gives).
@@ -248,8 +246,9 @@ private:
         const bool inside = px >= 0 && py >= 0 && px < s.width && py < s.height;
         if (!inside && s.discard) return;  // weight 0: no change
         const ImageView<const float> level = s.chain.level(m);
-        const float ts = level(s.texel(s.texelX[std::size_t(m)], px, level.width()),
-                               s.texel(s.texelY[std::size_t(m)], py, level.height()));
+        const std::size_t tx = std::size_t(m * s.width + std::clamp(px, 0, s.width - 1));
+        const std::size_t ty = std::size_t(m * s.height + std::clamp(py, 0, s.height - 1));
+        const float ts = level(s.texelX[tx], s.texelY[ty]);
         if (std::isinf(ts)) return;  // sky: weight 0
         const Vec3 q = s.pos.at(px, py, -ts);
         const Vec3 dv = sub(q, c);

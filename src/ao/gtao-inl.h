@@ -1,0 +1,191 @@
+// Highway body of GTAO's main pass (spec gtao.md section 5; the scalar oracle is
+// GtaoMain::pixel in gtao_pixel.hpp, whose operations the lanes follow one for one): one lane
+// per pixel along a row, every sample gathered from the depth chain stored in one buffer.
+// What differs from the oracle: the cosines, sines, arc cosines, the base-2 logarithm and the
+// final power come from Highway's float approximations (a few ulps) instead of libm. That
+// moves A by ulps and, in rare pixels, a rounded sample offset or its chain level by one;
+// the tests hold this path to the oracle within a stated bound (tests/ao/test_gtao.cpp).
+#if defined(SSFX_AO_GTAO_INL_H_) == defined(HWY_TARGET_TOGGLE)
+#ifdef SSFX_AO_GTAO_INL_H_
+#undef SSFX_AO_GTAO_INL_H_
+#else
+#define SSFX_AO_GTAO_INL_H_
+#endif
+
+#include <hwy/contrib/math/math-inl.h>
+#include <hwy/highway.h>
+
+#include "src/ao/gtao_simd.hpp"
+
+HWY_BEFORE_NAMESPACE();
+namespace ssfx::ao::detail {
+namespace HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+template <class DF, class V = hn::Vec<DF>>
+struct GtaoLanes {
+    const GtaoSimdInput& in;
+    DF df;
+    hn::RebindToSigned<DF> di;
+
+    V Clamp01(V v) const { return hn::Min(hn::Max(v, hn::Zero(df)), hn::Set(df, 1.0f)); }
+    V Dot(V ax, V ay, V az, V bx, V by, V bz) const {  // (a.x b.x + a.y b.y) + a.z b.z, as dot()
+        return hn::Add(hn::Add(hn::Mul(ax, bx), hn::Mul(ay, by)), hn::Mul(az, bz));
+    }
+    //! XeGTAO's approximation (gtaoFastAcos) or Highway's acos.
+    V Acos(V x) const {
+        if (!in.fastAcos) return hn::Acos(df, x);
+        const V ax = hn::Abs(x);
+        const auto bits = hn::ShiftRight<1>(hn::BitCast(di, hn::Sub(hn::Set(df, 1.0f), ax)));
+        const V root = hn::BitCast(df, hn::Add(hn::Set(di, 0x1FBD1DF5), bits));
+        const float halfPi = 1.5707963267948966f;
+        const V r = hn::Mul(hn::Sub(hn::Set(df, halfPi), hn::Mul(hn::Set(df, 0.156583f), ax)), root);
+        return hn::IfThenElse(hn::Ge(x, hn::Zero(df)), r, hn::Sub(hn::Set(df, 2.0f * halfPi), r));
+    }
+
+    //! One step's sample on one side at buffer pixel (px, py) of chain level m: the horizon
+    //! cosine h moves up to the sample's (GtaoMain::sample).
+    template <class VI>
+    V Sample(VI px, VI py, VI m, V cx, V cy, V cz, V vx, V vy, V vz, V start, V h) const {
+        const VI zero = hn::Zero(di);
+        const VI minus1 = hn::Set(di, -1);
+        const auto inside = hn::And(hn::And(hn::Gt(px, minus1), hn::Gt(py, minus1)),
+                                    hn::And(hn::Lt(px, hn::Set(di, in.width)), hn::Lt(py, hn::Set(di, in.height))));
+        // A pixel beyond the buffer reads the edge texel's column or row (texel tables, clamped).
+        const VI cpx = hn::Min(hn::Max(px, zero), hn::Set(di, in.width - 1));
+        const VI cpy = hn::Min(hn::Max(py, zero), hn::Set(di, in.height - 1));
+        const VI tx = hn::GatherIndex(di, in.texelX, hn::Add(hn::Mul(m, hn::Set(di, in.width)), cpx));
+        const VI ty = hn::GatherIndex(di, in.texelY, hn::Add(hn::Mul(m, hn::Set(di, in.height)), cpy));
+        const VI off = hn::GatherIndex(di, in.levelOffset, m), lw = hn::GatherIndex(di, in.levelWidth, m);
+        const V ts = hn::GatherIndex(df, in.chain, hn::Add(off, hn::Add(hn::Mul(ty, lw), tx)));
+        auto valid = hn::Not(hn::IsInf(ts));  // sky: weight 0
+        if (in.discard) valid = hn::And(valid, hn::RebindMask(df, inside));
+        const V z = hn::Neg(ts);
+        const V fx = hn::Add(hn::Set(df, in.ax), hn::Mul(hn::Set(df, in.bx), hn::ConvertTo(df, px)));
+        const V fy = hn::Add(hn::Set(df, in.ay), hn::Mul(hn::Set(df, in.by), hn::ConvertTo(df, py)));
+        const V dx = hn::Sub(hn::Mul(z, fx), cx), dy = hn::Sub(hn::Mul(z, fy), cy), dz = hn::Sub(z, cz);
+        const V len = hn::Sqrt(Dot(dx, dy, dz, dx, dy, dz));
+        const V cs = hn::Div(Dot(dx, dy, dz, vx, vy, vz), len);
+        V lenW = len;
+        if (in.toc1 != 1.0f) {
+            const V tz = hn::Mul(hn::Set(df, in.toc1), dz);
+            lenW = hn::Sqrt(hn::Add(hn::Add(hn::Mul(dx, dx), hn::Mul(dy, dy)), hn::Mul(tz, tz)));
+        }
+        const V w = Clamp01(hn::Div(hn::Sub(hn::Set(df, in.re), lenW), hn::Set(df, in.fRe)));
+        const V cw = hn::Add(start, hn::Mul(w, hn::Sub(cs, start)));
+        V next = hn::Max(h, cw);
+        if (in.thickness > 0.0f)  // the paper's thickness heuristic
+            next = hn::IfThenElse(hn::Lt(cw, h), hn::Add(h, hn::Mul(hn::Set(df, in.thickness), hn::Sub(cw, h))), next);
+        return hn::IfThenElse(valid, next, h);
+    }
+
+    //! A (before the denoiser) of the lanes' pixels x, x + 1, ... of row y.
+    V Pixels(int x, int y) const {
+        const float kPi = 3.14159265358979323846f, kHalfPi = kPi / 2.0f;
+        const V one = hn::Set(df, 1.0f), zero = hn::Zero(df);
+        const auto xi = hn::Add(hn::Set(di, x), hn::Iota(di, 0));
+        const V t0 = hn::LoadU(df, in.chain + std::ptrdiff_t(y) * in.width + x);
+        const auto sky = hn::IsInf(t0);
+        // Step 3: the pull against depth imprecision; C and V use it.
+        const V t = hn::Mul(t0, hn::Set(df, 0.99999f));
+        const V cz = hn::Neg(t);
+        const V cx = hn::Mul(cz, hn::Add(hn::Set(df, in.ax), hn::Mul(hn::Set(df, in.bx), hn::ConvertTo(df, xi))));
+        const V cy = hn::Mul(cz, hn::Set(df, in.ay + in.by * float(y)));
+        const V invLen = hn::Div(one, hn::Sqrt(Dot(cx, cy, cz, cx, cy, cz)));
+        const V vx = hn::Neg(hn::Mul(cx, invLen)), vy = hn::Neg(hn::Mul(cy, invLen)), vz = hn::Neg(hn::Mul(cz, invLen));
+        V nx, ny, nz;
+        hn::LoadInterleaved3(df, in.normals + 3 * (std::ptrdiff_t(y - in.workY0) * in.workWidth + (x - in.workX0)), nx,
+                             ny, nz);
+        const auto none = hn::And(hn::And(hn::Eq(nx, zero), hn::Eq(ny, zero)), hn::Eq(nz, zero));
+        nx = hn::IfThenElse(none, vx, nx), ny = hn::IfThenElse(none, vy, ny), nz = hn::IfThenElse(none, vz, nz);
+        // Step 4: the radius in pixels, the fade for small radii, the closest step.
+        const V r = hn::Div(hn::Set(df, in.rNum), t);
+        const V v0 = in.nearFade ? hn::Mul(hn::Set(df, 0.5f),
+                                           Clamp01(hn::Div(hn::Sub(hn::Set(df, 10.0f), r), hn::Set(df, 100.0f))))
+                                 : zero;
+        const V smin = hn::Div(hn::Set(df, 1.3f), r);
+        const auto mask63 = hn::Set(di, 63);
+        const auto noiseIdx =
+            hn::Add(hn::Set(di, ((y - in.guard) & 63) * 64), hn::And(hn::Sub(xi, hn::Set(di, in.guard)), mask63));
+        const V ns = hn::GatherIndex(df, in.noiseS, noiseIdx), nt = hn::GatherIndex(df, in.noiseT, noiseIdx);
+        const V slices = hn::Set(df, float(in.slices)), steps = hn::Set(df, float(in.steps));
+        V sum = zero;
+        for (int k = 0; k < in.slices; ++k) {
+            const V phi = hn::Mul(hn::Div(hn::Add(hn::Set(df, float(k)), ns), slices), hn::Set(df, kPi));
+            const V cphi = hn::Cos(df, phi), sphi = hn::Sin(df, phi);
+            const V ox = hn::Mul(cphi, r), oy = hn::Mul(hn::Neg(sphi), r);  // screen y is down
+            const V dv = Dot(cphi, sphi, zero, vx, vy, vz);
+            const V dpx = hn::Sub(cphi, hn::Mul(dv, vx)), dpy = hn::Sub(sphi, hn::Mul(dv, vy)),
+                    dpz = hn::Sub(zero, hn::Mul(dv, vz));
+            // axis = unitOrZero(cross(dp, v))
+            V axx = hn::Sub(hn::Mul(dpy, vz), hn::Mul(dpz, vy)), axy = hn::Sub(hn::Mul(dpz, vx), hn::Mul(dpx, vz)),
+              axz = hn::Sub(hn::Mul(dpx, vy), hn::Mul(dpy, vx));
+            const V alen = hn::Sqrt(Dot(axx, axy, axz, axx, axy, axz));
+            const auto aok = hn::And(hn::Gt(alen, zero), hn::Not(hn::IsInf(alen)));
+            axx = hn::IfThenElseZero(aok, hn::Div(axx, alen)), axy = hn::IfThenElseZero(aok, hn::Div(axy, alen)),
+            axz = hn::IfThenElseZero(aok, hn::Div(axz, alen));
+            const V na = Dot(nx, ny, nz, axx, axy, axz);
+            const V npx = hn::Sub(nx, hn::Mul(na, axx)), npy = hn::Sub(ny, hn::Mul(na, axy)),
+                    npz = hn::Sub(nz, hn::Mul(na, axz));
+            const V l = hn::Sqrt(Dot(npx, npy, npz, npx, npy, npz));
+            const auto lpos = hn::Gt(l, zero);
+            const V cg = hn::IfThenElse(lpos, Clamp01(hn::Div(Dot(npx, npy, npz, vx, vy, vz), l)), one);
+            const V side = Dot(dpx, dpy, dpz, npx, npy, npz);
+            const V ac = Acos(cg);
+            const V gamma = hn::IfThenElseZero(
+                lpos, hn::IfThenElse(hn::Gt(side, zero), ac, hn::IfThenElse(hn::Lt(side, zero), hn::Neg(ac), zero)));
+            const V sg = hn::Sin(df, gamma);
+            const V lowPos = hn::Cos(df, hn::Add(gamma, hn::Set(df, kHalfPi)));
+            const V lowNeg = hn::Cos(df, hn::Sub(gamma, hn::Set(df, kHalfPi)));
+            const V startPos = in.minusOne ? hn::Set(df, -1.0f) : lowPos;
+            const V startNeg = in.minusOne ? hn::Set(df, -1.0f) : lowNeg;
+            V hp = startPos, hneg = startNeg;
+            for (int j = 0; j < in.steps; ++j) {
+                const float base = float(k + j * in.steps) * 0.6180339887498948f;
+                const V xjRaw = hn::Add(nt, hn::Set(df, base));
+                const V xj = hn::Sub(xjRaw, hn::Floor(xjRaw));
+                const V s = hn::Div(hn::Add(hn::Set(df, float(j)), xj), steps);
+                const V u = hn::Add(hn::Mul(s, s), smin);  // sampleDistributionPower 2
+                const V sx = hn::Mul(u, ox), sy = hn::Mul(u, oy);
+                const V lod = hn::Min(hn::Max(hn::Sub(hn::Log2(df, hn::Sqrt(hn::Add(hn::Mul(sx, sx), hn::Mul(sy, sy)))),
+                                                      hn::Set(df, in.mipOffset)),
+                                              zero),
+                                      hn::Set(df, 5.0f));
+                const auto m = hn::Min(hn::Set(di, 4), hn::ConvertTo(di, hn::Floor(hn::Add(lod, hn::Set(df, 0.5f)))));
+                const auto qx = hn::NearestInt(sx), qy = hn::NearestInt(sy);
+                const auto yi = hn::Set(di, y);
+                hp = Sample(hn::Add(xi, qx), hn::Add(yi, qy), m, cx, cy, cz, vx, vy, vz, startPos, hp);
+                hneg = Sample(hn::Sub(xi, qx), hn::Sub(yi, qy), m, cx, cy, cz, vx, vy, vz, startNeg, hneg);
+            }
+            if (in.minusOne) hp = hn::Max(hp, lowPos), hneg = hn::Max(hneg, lowNeg);  // onto the hemisphere
+            const V h1 = Acos(hp), h0 = hn::Neg(Acos(hneg));
+            const V lp = in.lift ? hn::Add(hn::Mul(hn::Set(df, 0.95f), l), hn::Set(df, 0.05f)) : l;
+            auto iota = [&](V h) {
+                const V c2 = hn::Cos(df, hn::Sub(hn::Mul(hn::Set(df, 2.0f), h), gamma));
+                return hn::Mul(hn::Sub(hn::Add(cg, hn::Mul(hn::Mul(hn::Set(df, 2.0f), h), sg)), c2),
+                               hn::Set(df, 0.25f));
+            };
+            sum = hn::Add(sum, hn::Mul(lp, hn::Add(iota(h0), iota(h1))));
+        }
+        V a = hn::Max(zero, hn::Div(hn::Add(v0, sum), slices));
+        if (in.finalPower != 1.0f)  // a^p = exp(p ln a), 0 for a = 0
+            a = hn::IfThenElseZero(hn::Gt(a, zero), hn::Exp(df, hn::Mul(hn::Set(df, in.finalPower), hn::Log(df, a))));
+        a = hn::Max(hn::Set(df, 0.03f), a);
+        return hn::IfThenElse(sky, one, a);
+    }
+};
+
+inline int GtaoRowSimd(const GtaoSimdInput& in, int y, int x0, int x1, float* HWY_RESTRICT out) {
+    const hn::ScalableTag<float> df;
+    const int n = int(hn::Lanes(df));
+    const GtaoLanes<decltype(df)> lanes{in, df, {}};
+    int x = x0;
+    for (; x + n <= x1; x += n) hn::StoreU(lanes.Pixels(x, y), df, out + (x - x0));
+    return x;
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace ssfx::ao::detail
+HWY_AFTER_NAMESPACE();
+
+#endif  // include guard

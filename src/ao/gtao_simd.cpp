@@ -1,0 +1,16 @@
+// Runtime dispatch of the vector GTAO main pass (gtao-inl.h).
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "src/ao/gtao-inl.h"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+#include <hwy/highway.h>
+
+#include "src/ao/gtao-inl.h"
+
+#if HWY_ONCE
+namespace ssfx::ao::detail {
+HWY_EXPORT(GtaoRowSimd);
+int gtaoRowSimd(const GtaoSimdInput& in, int y, int x0, int x1, float* out) {
+    return HWY_DYNAMIC_DISPATCH(GtaoRowSimd)(in, y, x0, x1, out);
+}
+}  // namespace ssfx::ao::detail
+#endif
