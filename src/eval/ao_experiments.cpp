@@ -801,7 +801,8 @@ std::vector<Block> methodComparison(const Context& c, const std::vector<AoRender
         "Every method on the same depth buffer and camera at R = 0.5, 1 and 2 m, scored against two ray-traced "
         "truths from the real geometry: the obscurance (a hit at d < R takes away (1 - (d/R)^2)^3: SAO's and "
         "AlchemyAO's definition) and the binary visibility (a hit within R occludes fully: GTAO's). GTAO's presets "
-        "run XeGTAO's defaults (radiusMultiplier 1.457, falloff, lift, power 2.2 off: see the doc); \"gtao ideal\" "
+        "run XeGTAO's defaults (radiusMultiplier 1.457, falloffRange 0.615, the 0.05 lift, finalValuePower 2.2); "
+        "\"gtao ideal\" "
         "is the spec's definition-matching settings, \"gtao paper\" Jimenez et al.'s pipeline. Mean PSNR and MAE "
         "over the {} scenes and 3 radii at {}x{} (+{} px guard band). The viewers show R = 1 m: each method, and "
         "its signed error against either truth x2 around grey (lighter: too little occlusion).",

@@ -12,9 +12,11 @@
 //
 // Same inputs as SAO (sao.md conventions): hardware depth in [0, 1] with a guard band, the
 // camera of the whole buffer, d = 1 is sky. Float32 arithmetic throughout, as a shader does;
-// rows in parallel (oneTBB), the same bytes for any thread count. gtaoReference() is the same
-// code on one thread: the oracle a vector main pass is to be held to (not written yet: the
-// main pass is scalar; see docs/methods/gtao.md for its speed against SAO's).
+// rows in parallel (oneTBB), the same bytes for any thread count. The main pass runs as
+// Highway lanes (src/ao/gtao-inl.h: Highway's cos, sin, acos, log2, exp, log instead of
+// libm's) except with bent normals or a sampleDistributionPower other than 2;
+// gtaoReference() is the scalar loop on one thread, the oracle the lanes are held to
+// (tests/ao/test_gtao.cpp states the bound; docs/methods/gtao.md gives it and the speed).
 #pragma once
 
 #include <array>
@@ -160,13 +162,13 @@ ImageF gtao(ImageView<const float> depth, const Camera& camera, const GtaoParams
 ImageF gtao(ImageView<const float> depth, const Camera& camera, const GtaoParams& params, const Exec& exec,
             const GtaoBuffers& buffers, GtaoStages* stages);
 
-//! The scalar oracle: the same pipeline on one thread.
+//! The scalar oracle: the same pipeline on one thread, the main pass as the scalar loop.
 ImageF gtaoReference(ImageView<const float> depth, const Camera& camera, const GtaoParams& params = {},
                      const GtaoBuffers& buffers = {});
 
 //! Per-pass timings of one gtao() run, for the speed experiments (milliseconds).
 struct GtaoTimings {
-    double z, chain, main, denoise, total;
+    double z, chain, main, denoise, total;  //!< main: the edges, the normals and the main pass
 };
 ImageF gtao(ImageView<const float> depth, const Camera& camera, const GtaoParams& params, const Exec& exec,
             GtaoTimings* timings);
