@@ -9,6 +9,10 @@
 // GTAO per preset and at R = 0.25 m and 4 m (flat in the radius?).
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <map>
+#include <string>
+
 #include "ssfx/ao/alchemy.hpp"
 #include "ssfx/ao/gtao.hpp"
 #include "ssfx/ao/sao.hpp"
@@ -110,31 +114,43 @@ const ssfx::scene::GeometryBuffer& room2560() {
 
 // One GPU pipeline run per iteration; the time is the GPU's (the stage's timestamps, or the
 // whole pipeline's when `stage` is null).
+// The buffers: 1920x1080 + 192 (the paper's), 2560x1600 + 256, 1920x1080 + 64 (GTAO vs SAO).
+enum class Buffer { Paper, Large, Guard64 };
+
+// One GPU pipeline run per iteration; the time is the GPU's (the stage's timestamps, or the
+// whole pipeline's when `stage` is null); every stage's mean time as a counter (<stage>_ms).
 void gpuRun(benchmark::State& state, const ssfx::ao::AoParams& params, const char* method, const char* stage,
-            bool large) {
+            Buffer buffer) {
     if (!gpuContext()) {
         state.SkipWithError("no Vulkan device");
         return;
     }
     ssfx::gpu::AoPass pass(gpuContext(), method, params);
-    const auto& g = large ? room2560() : room();
+    const auto& g = buffer == Buffer::Large ? room2560() : buffer == Buffer::Guard64 ? room64() : room();
     pass.run(g.depth.view(), ssfx::Camera{});  // warm-up: pipelines, scratch images
+    std::map<std::string, double> stages;
     for (auto _ : state) {
         pass.run(g.depth.view(), ssfx::Camera{});
         double ms = pass.lastMilliseconds();
-        if (stage)
-            for (const auto& d : pass.lastDispatches())
-                if (d.stage == stage) ms = d.milliseconds;
+        for (const auto& d : pass.lastDispatches()) {
+            stages[d.stage] += d.milliseconds;
+            if (stage && d.stage == stage) ms = d.milliseconds;
+        }
         state.SetIterationTime(ms / 1000.0);
     }
-    state.SetItemsProcessed(state.iterations() * (large ? 2560 * 1600 : kW * kH));
+    for (const auto& [name, total] : stages) {
+        std::string key = name + "_ms";
+        std::replace(key.begin(), key.end(), ' ', '_');
+        state.counters[key] = total / double(state.iterations());
+    }
+    state.SetItemsProcessed(state.iterations() * (buffer == Buffer::Large ? 2560 * 1600 : kW * kH));
 }
 
 void registerGpu() {
     ssfx::ao::SaoParams full;
     full.guardBand = kGuard;
     benchmark::RegisterBenchmark("gpu/sao/full/1080p+192",
-                                 [full](benchmark::State& s) { gpuRun(s, full, "sao", nullptr, false); })
+                                 [full](benchmark::State& s) { gpuRun(s, full, "sao", nullptr, Buffer::Paper); })
         ->Unit(benchmark::kMillisecond)
         ->UseManualTime();
     for (const float r : {0.25f, 1.5f, 4.0f}) {
@@ -144,15 +160,15 @@ void registerGpu() {
         ap.guardBand = kGuard, ap.radius = r;
         const std::string rs = std::to_string(r).substr(0, 4);
         benchmark::RegisterBenchmark(("gpu/sao/full/r=" + rs).c_str(),
-                                     [sp](benchmark::State& s) { gpuRun(s, sp, "sao", nullptr, false); })
+                                     [sp](benchmark::State& s) { gpuRun(s, sp, "sao", nullptr, Buffer::Paper); })
             ->Unit(benchmark::kMillisecond)
             ->UseManualTime();
         benchmark::RegisterBenchmark(("gpu/sao/samples/r=" + rs).c_str(),
-                                     [sp](benchmark::State& s) { gpuRun(s, sp, "sao", "sample", false); })
+                                     [sp](benchmark::State& s) { gpuRun(s, sp, "sao", "sample", Buffer::Paper); })
             ->Unit(benchmark::kMillisecond)
             ->UseManualTime();
         benchmark::RegisterBenchmark(("gpu/alchemy/samples/r=" + rs).c_str(),
-                                     [ap](benchmark::State& s) { gpuRun(s, ap, "alchemy", "sample", false); })
+                                     [ap](benchmark::State& s) { gpuRun(s, ap, "alchemy", "sample", Buffer::Paper); })
             ->Unit(benchmark::kMillisecond)
             ->UseManualTime();
     }
@@ -161,13 +177,28 @@ void registerGpu() {
     ssfx::ao::AlchemyParams ap;
     ap.guardBand = 256, ap.radius = 1.5f;
     benchmark::RegisterBenchmark("gpu/sao/full/2560x1600+256/r=1.5",
-                                 [sp](benchmark::State& s) { gpuRun(s, sp, "sao", nullptr, true); })
+                                 [sp](benchmark::State& s) { gpuRun(s, sp, "sao", nullptr, Buffer::Large); })
         ->Unit(benchmark::kMillisecond)
         ->UseManualTime();
     benchmark::RegisterBenchmark("gpu/alchemy/full/2560x1600+256/r=1.5",
-                                 [ap](benchmark::State& s) { gpuRun(s, ap, "alchemy", nullptr, true); })
+                                 [ap](benchmark::State& s) { gpuRun(s, ap, "alchemy", nullptr, Buffer::Large); })
         ->Unit(benchmark::kMillisecond)
         ->UseManualTime();
+    // GTAO against SAO on the GPU, as on the CPU: 1920x1080 + 64, SAO's paper defaults.
+    ssfx::ao::SaoParams s64;
+    s64.guardBand = 64;
+    benchmark::RegisterBenchmark("gpu/sao/full/1080p+64",
+                                 [s64](benchmark::State& s) { gpuRun(s, s64, "sao", nullptr, Buffer::Guard64); })
+        ->Unit(benchmark::kMillisecond)
+        ->UseManualTime();
+    for (const char* preset : {"low", "high", "ultra"}) {
+        ssfx::ao::GtaoParams gp = ssfx::ao::gtaoPreset(preset);
+        gp.guardBand = 64;
+        benchmark::RegisterBenchmark((std::string("gpu/gtao/full/1080p+64/") + preset + "/r=0.50").c_str(),
+                                     [gp](benchmark::State& s) { gpuRun(s, gp, "gtao", nullptr, Buffer::Guard64); })
+            ->Unit(benchmark::kMillisecond)
+            ->UseManualTime();
+    }
 }
 #endif
 

@@ -499,7 +499,7 @@ py::array_t<float> runAo(const char* id, const py::handle& depthArg, const py::h
     if (backend == "vulkan") {
 #ifdef SSFX_HAVE_GPU
         if (!gpu::hasGpuAo(id))
-            throw Error(fmt::format("backend: {} has no GPU pass yet (backend='vulkan' runs sao and alchemy)", id));
+            throw Error(fmt::format("backend: {} has no GPU pass (backend='vulkan' runs sao, alchemy and gtao)", id));
         GpuContext& g = gpuContext(device.value_or(""));
         ao::depthToZ(view, cam, exec);  // the CPU's checks and messages, before any GPU work
         py::gil_scoped_release release;
@@ -618,7 +618,7 @@ PYBIND11_MODULE(_ssfx, m) {
             "{} ({}). depth: (H, W) float32 depth-buffer values in [0, 1]; camera: a dict {{'fov_y_deg', 'z_near', "
             "'z_far'}} or a camera .json path; returns visibility (H - 2g, W - 2g) float32 (g = guardBand). "
             "preset: {}. The method's parameters by name as keywords (ssfx.methods('ao'), "
-            "docs/methods/{}.md). backend: 'cpu' (default) or 'vulkan' (sao and alchemy: the GPU passes on one "
+            "docs/methods/{}.md). backend: 'cpu' (default) or 'vulkan' (sao, alchemy, gtao: the GPU passes on one "
             "context per process and device, made when first needed; the same result as the CLI's --backend "
             "vulkan); device: with 'vulkan', an index or part of a name.",
             method.summary, method.citation, presets, method.id);

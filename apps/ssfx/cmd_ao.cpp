@@ -133,7 +133,10 @@ void run(const AoOptions& o, const CLI::App& cmd) {
     if (cmd.count("--rays") && !method.needsGeometry) throw Error("--rays applies to -m raytraced only");
 #ifdef SSFX_HAVE_GPU
     if (vulkan && !gpu::hasGpuAo(method.id))
-        throw Error(fmt::format("{} has no GPU pass yet (--backend vulkan runs sao and alchemy)", method.id));
+        throw Error(fmt::format("{} has no GPU pass (--backend vulkan runs sao, alchemy and gtao)", method.id));
+    if (vulkan && (!o.normals.empty() || !o.bentNormals.empty()))
+        throw Error(fmt::format("{} is CPU-only (gtao's GPU pass reconstructs the normals from depth)",
+                                o.normals.empty() ? "--bent-normals" : "--normals"));
 #else
     if (vulkan) throw Error("--backend vulkan: this ssfx was built without the GPU backend");
 #endif
@@ -261,7 +264,7 @@ void run(const AoOptions& o, const CLI::App& cmd) {
     ImageF a;
     ao::AoStages stages;
     ao::AoStages* st = o.savePasses.empty() ? nullptr : &stages;
-    if (const auto* gp = std::get_if<ao::GtaoParams>(&params)) {
+    if (const auto* gp = std::get_if<ao::GtaoParams>(&params); gp && !vulkan) {
         const ao::GtaoBuffers buffers{normals.view(), o.bentNormals.empty() ? nullptr : &bent};
         if (st) {
             ao::GtaoStages gs;
@@ -314,7 +317,7 @@ void addAoCommand(CLI::App& app) {
                     "cornell, a scene .json or a model file");
     cmd->add_option("--view", o->view, "With a rendered scene: its named viewpoint (default: the first)");
     cmd->add_option("--backend", o->backend,
-                    "cpu (default) or vulkan: sao and alchemy as Vulkan compute passes (docs/gpu.md); with a "
+                    "cpu (default) or vulkan: sao, alchemy and gtao as Vulkan compute passes (docs/gpu.md); with a "
                     "rendered scene the render and the AO run on one device and only A is read back")
         ->check(CLI::IsMember({"cpu", "vulkan"}));
     cmd->add_option("--device", o->device,

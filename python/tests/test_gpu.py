@@ -101,7 +101,7 @@ def test_bad_vulkan_settings_are_refused(kwargs, words):
 
 @needs_device
 def test_ao_on_the_gpu(tmp_path):
-    # ssfx.ao.sao / alchemy (issue #36, item 5): the GPU passes within the parity bound of
+    # ssfx.ao.sao / alchemy / gtao (issues #36 and #37): the GPU passes within the parity bound of
     # tests/gpu/test_gpu_ao.cpp (none beyond 4/255, at least 99.9 % within 1/255), the same
     # floats as the CLI's --backend vulkan, and the CPU's errors.
     import json
@@ -112,7 +112,8 @@ def test_ao_on_the_gpu(tmp_path):
     subprocess.run([cli, "ao", "--backend", "vulkan", "--preset", "released", "--depth", d, "--camera", c, "-p",
                     "guardBand=8", "-o", str(tmp_path / "vk.exr")], check=True)
     depth, camera = ssfx.io.read_exr(d), json.load(open(c))
-    for fn, kw in ((ssfx.ao.sao, {}), (ssfx.ao.sao, {"preset": "released"}), (ssfx.ao.alchemy, {})):
+    for fn, kw in ((ssfx.ao.sao, {}), (ssfx.ao.sao, {"preset": "released"}), (ssfx.ao.alchemy, {}),
+                   (ssfx.ao.gtao, {}), (ssfx.ao.gtao, {"preset": "ultra", "radius": 1.0})):
         cpu = fn(depth, camera, guardBand=8, **kw)
         gpu = fn(depth, camera, guardBand=8, backend="vulkan", **kw)
         assert gpu.dtype == np.float32 and gpu.shape == cpu.shape == (54, 96)
@@ -121,6 +122,10 @@ def test_ao_on_the_gpu(tmp_path):
         assert cpu.min() < 0.9  # not a blank image
     released = ssfx.ao.sao(depth, camera, guardBand=8, preset="released", backend="vulkan")
     assert np.array_equal(released, ssfx.io.read_exr(str(tmp_path / "vk.exr")))
+    subprocess.run([cli, "ao", "-m", "gtao", "--backend", "vulkan", "--depth", d, "--camera", c, "-p", "guardBand=8",
+                    "-o", str(tmp_path / "gtao_vk.exr")], check=True)
+    gtao = ssfx.ao.gtao(depth, camera, guardBand=8, backend="vulkan")
+    assert np.array_equal(gtao, ssfx.io.read_exr(str(tmp_path / "gtao_vk.exr")))
     bad = depth.copy()
     bad[3, 5] = np.nan
     with pytest.raises(ssfx.Error, match=r"pixel \(5, 3\)"):

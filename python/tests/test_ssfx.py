@@ -236,8 +236,8 @@ def test_gtao_comes_from_the_registry_and_equals_the_cli(tmp_path):
         ssfx.ao.gtao(depth, c, preset="extreme")
     with pytest.raises(ssfx.Error, match="radius"):
         ssfx.ao.gtao(depth, c, radius=0.0)
-    with pytest.raises(ssfx.Error, match="no GPU pass"):
-        ssfx.ao.gtao(depth, c, backend="vulkan")
+    with pytest.raises(ssfx.Error, match="not cpu or vulkan"):
+        ssfx.ao.gtao(depth, c, backend="opengl")
 
 
 def test_docstrings_and_stubs_come_from_the_registries():

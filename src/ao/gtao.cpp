@@ -42,6 +42,11 @@ GtaoParams gtaoPreset(const std::string& name) {
     return p;
 }
 
+GtaoConstants gtaoConstants(const GtaoParams& p, const Projection& proj) {
+    const float re = p.radius * p.radiusMultiplier, rp = 0.75f * re;
+    return {re, rp, p.falloffRange * rp, p.falloffRange * re, re * (0.5f * float(proj.width) * proj.p00)};
+}
+
 void validate(const GtaoParams& p) { validateParams(kGtaoParams, &p, "gtao"); }
 
 void setParam(GtaoParams& p, const std::string& name, double v) { ssfx::setParam(kGtaoParams, &p, "gtao", name, v); }

@@ -11,6 +11,7 @@
 #include <optional>
 
 #include "src/gpu/shaders/ao/ao_constants.h"
+#include "src/gpu/shaders/ao/gtao_constants.h"
 #include "ssfx/core/error.hpp"
 #include "ssfx/vk/compute.hpp"
 #include "ssfx/vk/timer.hpp"
@@ -42,6 +43,18 @@ static_assert(offsetof(AoTables, alpha) == 4 * std::size(kTableOffsets) &&
                   sizeof(AoTables) == 4 * (std::size(kTableOffsets) + 4 * SSFX_AO_MAX_TAPS + 2 * SSFX_AO_MAX_BLUR_TAPS),
               "AoTables: float arrays after the scalars, no padding (std430)");
 
+#define SSFX_GTAO_OFFSET(type, name) offsetof(GtaoTables, name),
+constexpr std::size_t kGtaoOffsets[] = {SSFX_GTAO_PARAMS(SSFX_GTAO_OFFSET)};
+#undef SSFX_GTAO_OFFSET
+constexpr bool gtaoMembersInOrder() {
+    for (std::size_t i = 0; i < std::size(kGtaoOffsets); ++i)
+        if (kGtaoOffsets[i] != 4 * i) return false;
+    return true;
+}
+static_assert(gtaoMembersInOrder() && offsetof(GtaoTables, noise) == 4 * std::size(kGtaoOffsets) &&
+                  sizeof(GtaoTables) == 4 * (std::size(kGtaoOffsets) + SSFX_GTAO_NOISE),
+              "GtaoTables: 4-byte scalars in order, then the noise (std430)");
+
 #define SSFX_AO_SPEC_ENTRY(id, name, value) vk::SpecializationMapEntry(id, offsetof(AoSpecialization, name), 4),
 const vk::SpecializationMapEntry kAoSpecEntries[] = {SSFX_AO_SPECIALIZATION(SSFX_AO_SPEC_ENTRY)};
 #undef SSFX_AO_SPEC_ENTRY
@@ -54,6 +67,7 @@ namespace {
 using detail::AoConstants;
 using detail::AoSpecialization;
 using detail::AoTables;
+using detail::GtaoTables;
 
 const std::uint32_t kDepthToZ[] = {
 #include "shaders/depth_to_z.comp.inc"
@@ -70,6 +84,18 @@ const std::uint32_t kQuadBilateral[] = {
 const std::uint32_t kBilateral[] = {
 #include "shaders/bilateral.comp.inc"
 };
+const std::uint32_t kGtaoChain[] = {
+#include "shaders/gtao_chain.comp.inc"
+};
+const std::uint32_t kGtaoEdges[] = {
+#include "shaders/gtao_edges.comp.inc"
+};
+const std::uint32_t kGtaoMain[] = {
+#include "shaders/gtao_main.comp.inc"
+};
+const std::uint32_t kGtaoDenoise[] = {
+#include "shaders/gtao_denoise.comp.inc"
+};
 
 using S = vk::PipelineStageFlagBits;
 using A = vk::AccessFlagBits;
@@ -78,6 +104,7 @@ using Desc = vk::DescriptorType;
 
 constexpr vk::Format kZFormat = vk::Format::eR32Sfloat;
 constexpr vk::Format kOutputFormat = vk::Format::eR32Sfloat;
+constexpr vk::Format kNormalFormat = vk::Format::eR32G32B32A32Sfloat;  // GTAO's normals
 
 bool depthFormatOk(vk::Format f) {
     return f == vk::Format::eD16Unorm || f == vk::Format::eX8D24UnormPack32 || f == vk::Format::eD24UnormS8Uint ||
@@ -102,6 +129,10 @@ struct AoConfig {
     int packing = 0;  // 0 none, 1 packBlurInput, 2 releasedPacking
     bool spinInFloat = false, zeroOutside = false;
     AoTables tables{};
+    // GTAO (spec gtao.md): its own passes, params and tables (the projection's part is
+    // filled per recording: gtaoConstants depends on the buffer's width).
+    bool gtao = false;
+    ao::GtaoParams gtaoParams{};
 };
 
 void fillTables(AoTables& t, const ao::SampleConstants& k, const ao::BilateralParams& blur) {
@@ -147,6 +178,38 @@ AoConfig configOf(const ao::AlchemyParams& p) {
     return c;
 }
 
+AoConfig configOf(const ao::GtaoParams& p) {
+    ao::validate(p);
+    AoConfig c{"gtao"};
+    c.sao = false;
+    c.gtao = true;
+    c.guardBand = p.guardBand;
+    c.levels = 4;  // the chain's levels 1..4 (spec section 4)
+    c.radius = p.radius;
+    c.gtaoParams = p;
+    return c;
+}
+
+// The GTAO tables (the CPU's GtaoSetup: the same floats; rNum, which depends on the
+// buffer's width, is a push constant).
+void fillGtaoTables(GtaoTables& t, const ao::GtaoParams& p) {
+    const ao::GtaoConstants k = ao::gtaoConstants(p, Projection{});
+    t.re = k.re, t.rp = k.rp, t.fRp = k.fRp, t.fRe = k.fRe;
+    t.spacingPower = p.sampleDistributionPower, t.finalPower = p.finalValuePower;
+    t.mipOffset = p.depthMipSamplingOffset, t.toc1 = 1.0f + p.thinOccluderCompensation, t.thickness = p.thickness;
+    t.betaMiddle = 1.2f / 5.0f, t.betaLast = 1.2f;  // XeGTAO's DenoiseBlurBeta and its fifth
+    t.slices = p.sliceCount, t.steps = p.stepsPerSlice, t.guard = p.guardBand;
+    t.lift = p.projectedNormalLift, t.nearFade = p.nearFade, t.fastAcos = p.fastAcos;
+    t.offscreenDiscard = p.offscreen == ao::Offscreen::Discard,
+    t.minusOne = p.horizonStart == ao::HorizonStart::MinusOne;
+    t.xegtaoStorage = p.xegtaoStorage;
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 64; ++x) {
+            const auto n = ao::gtaoNoise(x, y);
+            t.noise[2 * (64 * y + x)] = n[0], t.noise[2 * (64 * y + x) + 1] = n[1];
+        }
+}
+
 // A 2-D view of one level (or all levels) of an image.
 vk::raii::ImageView view2d(const vkx::Context& c, const vkx::Image& img, std::uint32_t level, std::uint32_t count) {
     return vk::raii::ImageView(
@@ -185,6 +248,18 @@ public:
             };
             AoSpecialization spec{};
             depthToZ_ = make(kDepthToZ, {{Desc::eCombinedImageSampler}, {Desc::eStorageImage}}, spec);
+            if (cfg_.gtao) {
+                const vkx::BindingSpec img{Desc::eStorageImage}, buf{Desc::eStorageBuffer};
+                chain_ = make(kGtaoChain, {img, img, buf}, spec);
+                edges_ = make(kGtaoEdges, {img, img, img, buf}, spec);
+                main_ = make(kGtaoMain, {{Desc::eCombinedImageSampler}, img, img, buf}, spec);
+                denoise_ = make(kGtaoDenoise, {img, img, img, img, buf}, spec);
+                auto tables = std::make_unique<GtaoTables>();
+                fillGtaoTables(*tables, cfg_.gtaoParams);
+                gtaoTables_ = c.uploadBuffer(tables.get(), sizeof(GtaoTables), vk::BufferUsageFlagBits::eStorageBuffer);
+                timer_ = std::make_unique<vkx::GpuTimer>(c, 1 + kStages);
+                return;
+            }
             spec.filter = int(cfg_.filter);
             if (cfg_.levels > 0) pyramid_ = make(kZPyramid, {{Desc::eStorageImage}, {Desc::eStorageImage}}, spec);
             spec.estimator = cfg_.sao ? 0 : 1;
@@ -325,15 +400,17 @@ private:
         int w = 0, h = 0;
         ao::Region work, out;
         vkx::Image z, key, raw, quad, horiz;
+        vkx::Image edges, normals;                // GTAO: over the work region
         std::vector<vk::raii::ImageView> zLevel;  // storage views, one per level
-        //! The images this method has (AlchemyAO: no quad, no key).
+        //! The images this method has (AlchemyAO: no quad, no key; only GTAO has edges, normals).
         std::vector<const vkx::Image*> images() const {
             std::vector<const vkx::Image*> v;
-            for (const vkx::Image* img : {&z, &raw, &quad, &key, &horiz})
+            for (const vkx::Image* img : {&z, &raw, &quad, &key, &horiz, &edges, &normals})
                 if (*img->image) v.push_back(img);
             return v;
         }
         vk::raii::ImageView zAll{nullptr}, keyView{nullptr}, rawView{nullptr}, quadView{nullptr}, horizView{nullptr};
+        vk::raii::ImageView edgesView{nullptr}, normalsView{nullptr};
     };
 
     Scratch& scratch(int w, int h) {
@@ -344,8 +421,9 @@ private:
         s->w = w, s->h = h;
         const int g = cfg_.guardBand;
         s->out = {g, g, w - 2 * g, h - 2 * g};
-        // SAO's sample and quad passes cover whole 2x2 quads of the buffer grid (ao::sao()).
-        s->work = cfg_.sao ? ao::quadAligned(s->out, w, h) : s->out;
+        // SAO's sample and quad passes cover whole 2x2 quads of the buffer grid (ao::sao());
+        // GTAO's main pass the output grown by a pixel per denoiser pass, within the buffer.
+        s->work = cfg_.sao ? ao::quadAligned(s->out, w, h) : cfg_.gtao ? gtaoGrown(s->out, w, h, gtaoPasses()) : s->out;
         const auto storage = vk::ImageUsageFlagBits::eStorage | vk::ImageUsageFlagBits::eTransferSrc;
         const auto aspect = vk::ImageAspectFlagBits::eColor;
         const std::uint32_t levels = std::uint32_t(cfg_.levels) + 1;
@@ -358,6 +436,14 @@ private:
         s->horiz = c.createImage(kZFormat, ww, wh, storage, aspect);
         s->rawView = view2d(c, s->raw, 0, 1);
         s->horizView = view2d(c, s->horiz, 0, 1);
+        if (cfg_.gtao) {  // (quad: the denoiser's second ping-pong image)
+            s->quad = c.createImage(kZFormat, ww, wh, storage, aspect);
+            s->quadView = view2d(c, s->quad, 0, 1);
+            s->edges = c.createImage(kZFormat, ww, wh, storage, aspect);
+            s->edgesView = view2d(c, s->edges, 0, 1);
+            s->normals = c.createImage(kNormalFormat, ww, wh, storage, aspect);
+            s->normalsView = view2d(c, s->normals, 0, 1);
+        }
         if (cfg_.sao) {  // the 2x2 pass's output, and the packed key (which its shader declares either way)
             s->quad = c.createImage(kZFormat, ww, wh, storage, aspect);
             s->quadView = view2d(c, s->quad, 0, 1);
@@ -430,6 +516,11 @@ private:
         }
         endStage(cmd);
         written(cmd);
+        if (cfg_.gtao) {
+            pc.radiusS = ao::gtaoConstants(cfg_.gtaoParams, proj).rNum;  // the main pass's rNum
+            recordGtao(cmd, s, pc, output);
+            return;
+        }
         // 2. the pyramid, level by level.
         if (cfg_.levels > 0) {
             beginStage(cmd, "pyramid");
@@ -495,6 +586,96 @@ private:
             endStage(cmd);
             if (horizontal) written(cmd);
         }
+    }
+
+    int gtaoPasses() const { return cfg_.gtaoParams.denoisePasses; }
+    // The output region grown by `by` pixels on each side, within the w x h buffer (the
+    // CPU's gtaoImpl `grown`).
+    static ao::Region gtaoGrown(ao::Region out, int w, int h, int by) {
+        const int x0 = std::max(0, out.x0 - by), y0 = std::max(0, out.y0 - by);
+        const int x1 = std::min(w, out.x0 + out.width + by), y1 = std::min(h, out.y0 + out.height + by);
+        return {x0, y0, x1 - x0, y1 - y0};
+    }
+
+    // GTAO after depth -> z (spec gtao.md): the chain's levels 1-4, the edges and normals and
+    // the main pass over the work region, then the denoiser's passes (the last into the output).
+    void recordGtao(const vk::raii::CommandBuffer& cmd, Scratch& s, const AoConstants& pc, vk::ImageView output) {
+        auto region = [&](AoConstants& c, ao::Region r) {
+            c.regionX = r.x0, c.regionY = r.y0, c.regionW = r.width, c.regionH = r.height;
+        };
+        const vk::DescriptorBufferInfo tables(*gtaoTables_.buffer, 0, VK_WHOLE_SIZE);
+        auto storage = [](vk::ImageView v) { return vk::DescriptorImageInfo(nullptr, v, L::eGeneral); };
+        auto write = [](std::uint32_t binding, const vk::DescriptorImageInfo& info) {
+            return vk::WriteDescriptorSet({}, binding, 0, Desc::eStorageImage, info);
+        };
+        // 2. the chain, level by level.
+        beginStage(cmd, "chain");
+        int fw = pc.width, fh = pc.height;
+        for (int m = 1; m <= cfg_.levels; ++m) {
+            const int cw = std::max(1, fw / 2), ch = std::max(1, fh / 2);
+            AoConstants c = pc;
+            region(c, {0, 0, cw, ch});
+            c.srcW = fw, c.srcH = fh;
+            const vk::DescriptorImageInfo in = storage(*s.zLevel[std::size_t(m) - 1]),
+                                          out = storage(*s.zLevel[std::size_t(m)]);
+            const vk::WriteDescriptorSet writes[] = {
+                write(0, in), write(1, out), {{}, 2, 0, Desc::eStorageBuffer, {}, tables}};
+            chain_->dispatchPushed(cmd, writes, &c, groups(cw), groups(ch));
+            written(cmd);
+            fw = cw, fh = ch;
+        }
+        endStage(cmd);
+        // 3. edges and normals of the work region.
+        beginStage(cmd, "edges");
+        {
+            AoConstants c = pc;
+            region(c, s.work);
+            const vk::DescriptorImageInfo z = storage(*s.zLevel[0]), e = storage(*s.edgesView),
+                                          n = storage(*s.normalsView);
+            const vk::WriteDescriptorSet writes[] = {
+                write(0, z), write(1, e), write(2, n), {{}, 3, 0, Desc::eStorageBuffer, {}, tables}};
+            edges_->dispatchPushed(cmd, writes, &c, groups(s.work.width), groups(s.work.height));
+        }
+        endStage(cmd);
+        written(cmd);
+        // 4. the main pass over the work region.
+        beginStage(cmd, "main");
+        {
+            AoConstants c = pc;
+            region(c, s.work);
+            const vk::DescriptorImageInfo chain(*sampler_, *s.zAll, L::eGeneral), n = storage(*s.normalsView),
+                                                                                  out = storage(*s.rawView);
+            const vk::WriteDescriptorSet writes[] = {{{}, 0, 0, Desc::eCombinedImageSampler, chain},
+                                                     write(1, n),
+                                                     write(2, out),
+                                                     {{}, 3, 0, Desc::eStorageBuffer, {}, tables}};
+            main_->dispatchPushed(cmd, writes, &c, groups(s.work.width), groups(s.work.height));
+        }
+        endStage(cmd);
+        written(cmd);
+        // 5. the denoiser: max(1, passes) ping-ponged passes (0: A clamped), the last into the output.
+        beginStage(cmd, "denoise");
+        const int passes = gtaoPasses();
+        // raw is kept (a stage); the middle passes alternate between horiz and quad.
+        vk::ImageView cur = *s.rawView, other = *s.horizView, spare = *s.quadView;
+        for (int pass = 0; pass < std::max(1, passes); ++pass) {
+            const bool last = pass == std::max(1, passes) - 1;
+            AoConstants c = pc;
+            region(c, last ? s.out : gtaoGrown(s.out, pc.width, pc.height, passes - 1 - pass));
+            c.srcX = s.work.x0, c.srcY = s.work.y0, c.srcW = s.work.width, c.srcH = s.work.height;
+            c.levels = passes == 0 ? 0 : last ? 2 : 1;  // the mode
+            const vk::DescriptorImageInfo in = storage(cur), out = storage(last ? output : other),
+                                          z = storage(*s.zLevel[0]), e = storage(*s.edgesView);
+            const vk::WriteDescriptorSet writes[] = {
+                write(0, in), write(1, out), write(2, z), write(3, e), {{}, 4, 0, Desc::eStorageBuffer, {}, tables}};
+            denoise_->dispatchPushed(cmd, writes, &c, groups(c.regionW), groups(c.regionH));
+            if (!last) {
+                written(cmd);
+                cur = other;
+                std::swap(other, spare);
+            }
+        }
+        endStage(cmd);
     }
 
     // run()'s depth image, output and staging buffers, kept while the size and format stay.
@@ -571,7 +752,8 @@ private:
             total += vk::DeviceSize(w) * h * 4;
         };
         for (const vkx::Image* img : s.images())
-            for (std::uint32_t m = 0; m < img->levels; ++m) add(*img, m);
+            if (img->format == kZFormat)  // (GTAO's normals are not a stage of AoStages)
+                for (std::uint32_t m = 0; m < img->levels; ++m) add(*img, m);
         RunImages& r = *run_;
         if (r.stages.size < total) r.stages = ctx_->createBuffer(total, vk::BufferUsageFlagBits::eTransferDst, true);
         // (The next recording drops these layouts with its own barrier from UNDEFINED.)
@@ -606,6 +788,8 @@ private:
                     st.pyramid.push_back(std::move(img));
             } else if (c.image == &s.raw) {
                 st.raw = std::move(img);
+            } else if (cfg_.gtao) {
+                continue;  // the denoiser's ping-pong images: no stage of their own
             } else if (c.image == &s.quad) {
                 st.quad = std::move(img);
             } else if (c.image == &s.horiz) {
@@ -624,6 +808,8 @@ private:
     vk::raii::Sampler sampler_{nullptr};
     vkx::Buffer tables_;
     std::unique_ptr<vkx::ComputePipeline> depthToZ_, pyramid_, sample_, quad_, blurH_, blurV_;
+    std::unique_ptr<vkx::ComputePipeline> chain_, edges_, main_, denoise_;  // GTAO
+    vkx::Buffer gtaoTables_;
     std::unique_ptr<Scratch> scratch_;
     std::unique_ptr<RunImages> run_;
     std::unique_ptr<vkx::GpuTimer> timer_;
@@ -641,13 +827,15 @@ vk::Format depthVkFormat(DepthFormat format) {
     }
 }
 
-bool hasGpuAo(std::string_view method) { return method == "sao" || method == "alchemy"; }
+bool hasGpuAo(std::string_view method) { return method == "sao" || method == "alchemy" || method == "gtao"; }
 
 namespace {
 AoConfig configOf(std::string_view method, const ao::AoParams& params) {
-    if (!hasGpuAo(method)) throw Error(fmt::format("{}: no GPU pass (the GPU has sao and alchemy)", method));
+    if (!hasGpuAo(method)) throw Error(fmt::format("{}: no GPU pass (the GPU has sao, alchemy and gtao)", method));
     if (method == "sao") {
         if (const auto* p = std::get_if<ao::SaoParams>(&params)) return configOf(*p);
+    } else if (method == "gtao") {
+        if (const auto* p = std::get_if<ao::GtaoParams>(&params)) return configOf(*p);
     } else if (const auto* p = std::get_if<ao::AlchemyParams>(&params)) {
         return configOf(*p);
     }

@@ -374,6 +374,15 @@ if "$SSFX" --help 2>/dev/null | grep -qE '^ +render '; then
     for f in z.exr z1.exr z5.exr raw.exr quad.exr horizontal.exr ao.exr; do
       [ -s "$OUT/passes_sao/$f" ] || { echo "FAIL ao_vulkan_passes: no $f"; fail=1; }
     done
+    # GTAO's GPU pass: on an analytic scene (its stages saved), on a rendered one (one device).
+    check ao_vulkan_gtao 0 $VK "$SSFX" ao -m gtao --backend vulkan --scene room --size 64x36 -p guardBand=8 -o "$OUT/gtao_vk.png" --save-passes "$OUT/passes_gtao"
+    for f in gtao_vk.png passes_gtao/z.exr passes_gtao/z1.exr passes_gtao/z4.exr passes_gtao/raw.exr passes_gtao/ao.exr; do
+      [ -s "$OUT/$f" ] || { echo "FAIL ao_vulkan_gtao: no $f"; fail=1; }
+    done
+    check ao_vulkan_gtao_scene 0 $VK "$SSFX" ao -m gtao --backend vulkan --scene cornell --size 64x36 -p guardBand=8 -o "$OUT/gtao_vk_cornell.exr"
+    [ -s "$OUT/gtao_vk_cornell.exr" ] || { echo "FAIL ao_vulkan_gtao_scene: no output"; fail=1; }
+    check ao_vulkan_gtao_normals 2 $VK "$SSFX" ao -m gtao --backend vulkan --depth "$OUT/d0.exr" --camera "$OUT/c0.json" --normals "$OUT/gtao_g0/normals.exr" -o "$OUT/x.png"
+    contains ao_vulkan_gtao_normals "$OUT/ao_vulkan_gtao_normals.err" "CPU-only"
     check ao_vulkan_rt 2 $VK "$SSFX" ao -m raytraced --backend vulkan --scene room --size 32x18 -o "$OUT/x.png"
     contains ao_vulkan_rt "$OUT/ao_vulkan_rt.err" "no GPU pass"
     check ao_vulkan_nodevice 2 $VK "$SSFX" ao --backend vulkan --device no-such-gpu --scene room --size 32x18 -o "$OUT/x.png"

@@ -166,6 +166,14 @@ ImageF gtao(ImageView<const float> depth, const Camera& camera, const GtaoParams
 ImageF gtaoReference(ImageView<const float> depth, const Camera& camera, const GtaoParams& params = {},
                      const GtaoBuffers& buffers = {});
 
+//! The constants GTAO's passes derive from the params and the projection, as floats (the CPU's
+//! passes and the GPU's read the same): Re = R radiusMultiplier, the prefilter's rp = 0.75 Re
+//! and f rp, f Re, and rNum = Re (W P00 / 2) with r = rNum / t pixels (XeGTAO's footprint).
+struct GtaoConstants {
+    float re, rp, fRp, fRe, rNum;
+};
+GtaoConstants gtaoConstants(const GtaoParams& params, const Projection& proj);
+
 //! Per-pass timings of one gtao() run, for the speed experiments (milliseconds).
 struct GtaoTimings {
     double z, chain, main, denoise, total;  //!< main: the edges, the normals and the main pass

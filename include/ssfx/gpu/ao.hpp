@@ -1,4 +1,4 @@
-// Scalable Ambient Obscurance and the AlchemyAO baseline as Vulkan compute passes (the GPU
+// Scalable Ambient Obscurance, the AlchemyAO baseline and GTAO as Vulkan compute passes (the GPU
 // backend's AO family; docs/gpu.md, "Ambient obscurance"). A pipeline object is made once per
 // params and device, and records its passes into the caller's command buffer, reading the
 // renderer's depth image where it is (no copy):
@@ -111,7 +111,23 @@ private:
     ao::AlchemyParams params_;
 };
 
-//! The AO registry's methods that have a GPU pipeline: sao, alchemy.
+//! Ground-Truth AO (ao::gtao(), spec gtao.md) on one device: depth -> z, the depth chain
+//! (one dispatch per level), the edges and normals from depth, the main pass, the denoiser's
+//! passes (one dispatch each; with denoisePasses 0 one that clamps A into the output). The
+//! normals are always reconstructed from depth (the CPU's AoInput::normals and bent normals
+//! are CPU-only). Stages (runStages): z, the chain's levels 1-4 as z (= -t) in `pyramid`,
+//! the main pass's A in `raw`, the result.
+class Gtao : public AoPass {
+public:
+    Gtao(std::shared_ptr<vkx::Context> ctx, const ao::GtaoParams& params = {})
+        : AoPass(std::move(ctx), "gtao", params), params_(params) {}
+    const ao::GtaoParams& params() const { return params_; }
+
+private:
+    ao::GtaoParams params_;
+};
+
+//! The AO registry's methods that have a GPU pipeline: sao, alchemy, gtao.
 bool hasGpuAo(std::string_view method);
 
 //! The Vulkan format of a depth format's images (D16_UNORM, X8_D24_UNORM_PACK32, D32_SFLOAT).

@@ -33,7 +33,7 @@
     X(float, bx)                                                                               \
     X(float, ay)                                                                               \
     X(float, by)                                                                               \
-    X(float, radiusS) /* -radius * pixelsPerMeter: ssRadius = radiusS / z (eq. 5) */
+    X(float, radiusS) /* -radius * pixelsPerMeter: ssRadius = radiusS / z (eq. 5); GTAO: rNum */
 
 // X(type, name): the scalars at the start of the tables buffer, in order.
 #define SSFX_AO_PARAMS(X)                                                  \
