@@ -524,19 +524,7 @@ private:
         // 2. the pyramid, level by level.
         if (cfg_.levels > 0) {
             beginStage(cmd, "pyramid");
-            int fw = proj.width, fh = proj.height;
-            for (int m = 1; m <= cfg_.levels; ++m) {
-                const int cw = std::max(1, fw / 2), ch = std::max(1, fh / 2);
-                AoConstants c = pc;
-                region(c, {0, 0, cw, ch});
-                c.srcW = fw, c.srcH = fh;
-                const vk::DescriptorImageInfo in = storage(*s.zLevel[std::size_t(m) - 1]),
-                                              out = storage(*s.zLevel[std::size_t(m)]);
-                const vk::WriteDescriptorSet writes[] = {image(0, in), image(1, out)};
-                pyramid_->dispatchPushed(cmd, writes, &c, groups(cw), groups(ch));
-                written(cmd);
-                fw = cw, fh = ch;
-            }
+            recordLevels(cmd, s, pc, *pyramid_, nullptr);
             endStage(cmd);
         }
         // 3. the sample pass over the work region.
@@ -588,6 +576,27 @@ private:
         }
     }
 
+    // One dispatch per level m = 1..levels, level m (max(1, w / 2) x max(1, h / 2)) from
+    // level m - 1: SAO's pyramid, GTAO's chain (which reads `tables` at binding 2).
+    void recordLevels(const vk::raii::CommandBuffer& cmd, Scratch& s, const AoConstants& pc,
+                      vkx::ComputePipeline& pipeline, const vk::DescriptorBufferInfo* tables) {
+        int fw = pc.width, fh = pc.height;
+        for (int m = 1; m <= cfg_.levels; ++m) {
+            const int cw = std::max(1, fw / 2), ch = std::max(1, fh / 2);
+            AoConstants c = pc;
+            c.regionX = 0, c.regionY = 0, c.regionW = cw, c.regionH = ch;
+            c.srcW = fw, c.srcH = fh;
+            const vk::DescriptorImageInfo in(nullptr, *s.zLevel[std::size_t(m) - 1], L::eGeneral),
+                out(nullptr, *s.zLevel[std::size_t(m)], L::eGeneral);
+            std::vector<vk::WriteDescriptorSet> writes{{{}, 0, 0, Desc::eStorageImage, in},
+                                                       {{}, 1, 0, Desc::eStorageImage, out}};
+            if (tables) writes.emplace_back(vk::WriteDescriptorSet({}, 2, 0, Desc::eStorageBuffer, {}, *tables));
+            pipeline.dispatchPushed(cmd, writes, &c, groups(cw), groups(ch));
+            written(cmd);
+            fw = cw, fh = ch;
+        }
+    }
+
     int gtaoPasses() const { return cfg_.gtaoParams.denoisePasses; }
     // The output region grown by `by` pixels on each side, within the w x h buffer (the
     // CPU's gtaoImpl `grown`).
@@ -610,20 +619,7 @@ private:
         };
         // 2. the chain, level by level.
         beginStage(cmd, "chain");
-        int fw = pc.width, fh = pc.height;
-        for (int m = 1; m <= cfg_.levels; ++m) {
-            const int cw = std::max(1, fw / 2), ch = std::max(1, fh / 2);
-            AoConstants c = pc;
-            region(c, {0, 0, cw, ch});
-            c.srcW = fw, c.srcH = fh;
-            const vk::DescriptorImageInfo in = storage(*s.zLevel[std::size_t(m) - 1]),
-                                          out = storage(*s.zLevel[std::size_t(m)]);
-            const vk::WriteDescriptorSet writes[] = {
-                write(0, in), write(1, out), {{}, 2, 0, Desc::eStorageBuffer, {}, tables}};
-            chain_->dispatchPushed(cmd, writes, &c, groups(cw), groups(ch));
-            written(cmd);
-            fw = cw, fh = ch;
-        }
+        recordLevels(cmd, s, pc, *chain_, &tables);
         endStage(cmd);
         // 3. edges and normals of the work region.
         beginStage(cmd, "edges");
