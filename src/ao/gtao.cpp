@@ -47,6 +47,12 @@ GtaoConstants gtaoConstants(const GtaoParams& p, const Projection& proj) {
     return {re, rp, p.falloffRange * rp, p.falloffRange * re, re * (0.5f * float(proj.width) * proj.p00)};
 }
 
+Region gtaoGrown(Region out, int width, int height, int by) {
+    const int x0 = std::max(0, out.x0 - by), y0 = std::max(0, out.y0 - by);
+    const int x1 = std::min(width, out.x0 + out.width + by), y1 = std::min(height, out.y0 + out.height + by);
+    return {x0, y0, x1 - x0, y1 - y0};
+}
+
 void validate(const GtaoParams& p) { validateParams(kGtaoParams, &p, "gtao"); }
 
 void setParam(GtaoParams& p, const std::string& name, double v) { ssfx::setParam(kGtaoParams, &p, "gtao", name, v); }
@@ -161,12 +167,8 @@ ImageF gtaoImpl(ImageView<const float> depth, const Camera& camera, const GtaoPa
     const auto c2 = Clock::now();
 
     const Region out{g, g, W - 2 * g, H - 2 * g};
-    const int passes = p.denoisePasses == 0 ? 0 : p.denoisePasses;
-    auto grown = [&](int by) {
-        const int x0 = std::max(0, out.x0 - by), y0 = std::max(0, out.y0 - by);
-        const int x1 = std::min(W, out.x0 + out.width + by), y1 = std::min(H, out.y0 + out.height + by);
-        return Region{x0, y0, x1 - x0, y1 - y0};
-    };
+    const int passes = p.denoisePasses;
+    auto grown = [&](int by) { return gtaoGrown(out, W, H, by); };
     const Region work = grown(passes);
     edgesAndNormals(s, work, ws.edges, ws.normals, buffers.normals, exec);
     const bool bent = buffers.bentNormals != nullptr;
@@ -176,10 +178,8 @@ ImageF gtaoImpl(ImageView<const float> depth, const Camera& camera, const GtaoPa
     // The vector path (gtao-inl.h) where it applies: not for the scalar reference, nor with
     // bent normals or a sampleDistributionPower other than 2 (the scalar loop does those).
     const bool simd = !scalar && !bent && p.sampleDistributionPower == 2.0f;
-    std::vector<float> noiseS, noiseT;
     detail::GtaoSimdInput in{};
     if (simd) {
-        for (const auto& v : s.noise) noiseS.push_back(v[0]), noiseT.push_back(v[1]);
         static_assert(sizeof(Vec3) == 3 * sizeof(float));
         in = {ws.chain.data.data(),
               ws.chain.offset.data(),
@@ -197,8 +197,8 @@ ImageF gtaoImpl(ImageView<const float> depth, const Camera& camera, const GtaoPa
               work.x0,
               work.y0,
               work.width,
-              noiseS.data(),
-              noiseT.data(),
+              s.noiseS.data(),
+              s.noiseT.data(),
               s.rNum,
               s.re,
               s.fRe,

@@ -48,7 +48,8 @@ struct GtaoSetup {
     float spacingPower, finalPower, mipOffset, toc1, thickness;
     int slices, steps;
     bool lift, nearFade, fastAcos, discard, minusOne;
-    std::array<std::array<float, 2>, 64 * 64> noise;  //!< (xs, xt) at (x mod 64, y mod 64), frame 0
+    //! xs and xt at 64 (y mod 64) + (x mod 64), frame 0 (two arrays: the vector pass gathers each)
+    std::array<float, 64 * 64> noiseS, noiseT;
     //! Point sampling of level m at buffer column / row p: floor((p + 0.5) W_m / W) at
     //! [m W + p] (tables: a 64-bit division per sample is otherwise the pass's costliest
     //! operation). A p beyond the buffer reads the edge's entry, which is that formula
@@ -56,17 +57,19 @@ struct GtaoSetup {
     std::vector<std::int32_t> texelX, texelY;
 
     GtaoSetup(const ZPyramid& c, const Projection& proj, const GtaoParams& p)
+        : GtaoSetup(c, proj, p, gtaoConstants(p, proj)) {}
+    GtaoSetup(const ZPyramid& c, const Projection& proj, const GtaoParams& p, const GtaoConstants& k)
         : chain(c),
           t0(c.level(0)),
           pos(proj),
           width(proj.width),
           height(proj.height),
           guard(p.guardBand),
-          re(gtaoConstants(p, proj).re),
-          rp(gtaoConstants(p, proj).rp),
-          fRp(gtaoConstants(p, proj).fRp),
-          fRe(gtaoConstants(p, proj).fRe),
-          rNum(gtaoConstants(p, proj).rNum),
+          re(k.re),
+          rp(k.rp),
+          fRp(k.fRp),
+          fRe(k.fRe),
+          rNum(k.rNum),
           spacingPower(p.sampleDistributionPower),
           finalPower(p.finalValuePower),
           mipOffset(p.depthMipSamplingOffset),
@@ -80,7 +83,10 @@ struct GtaoSetup {
           discard(p.offscreen == Offscreen::Discard),
           minusOne(p.horizonStart == HorizonStart::MinusOne) {
         for (int y = 0; y < 64; ++y)
-            for (int x = 0; x < 64; ++x) noise[std::size_t(y * 64 + x)] = gtaoNoise(x, y);
+            for (int x = 0; x < 64; ++x) {
+                const std::array<float, 2> n = gtaoNoise(x, y);
+                noiseS[std::size_t(y * 64 + x)] = n[0], noiseT[std::size_t(y * 64 + x)] = n[1];
+            }
         auto texel = [](int q, int wm, int w) { return int((2 * std::int64_t(q) + 1) * wm / (2 * std::int64_t(w))); };
         for (int m = 0; m < kGtaoChainLevels; ++m) {
             const ImageView<const float> level = c.level(m);
@@ -182,7 +188,8 @@ struct GtaoMain {
         const float r = s.rNum / t;
         const float v0 = s.nearFade ? 0.5f * std::clamp((10.0f - r) / 100.0f, 0.0f, 1.0f) : 0.0f;
         const float smin = 1.3f / r;
-        const std::array<float, 2> noise = s.noise[std::size_t(((y - s.guard) & 63) * 64 + ((x - s.guard) & 63))];
+        const std::size_t ni = std::size_t(((y - s.guard) & 63) * 64 + ((x - s.guard) & 63));
+        const std::array<float, 2> noise{s.noiseS[ni], s.noiseT[ni]};
         float sum = 0.0f;
         Vec3 bentSum{0, 0, 0};
         for (int k = 0; k < s.slices; ++k) {

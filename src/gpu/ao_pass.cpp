@@ -423,7 +423,9 @@ private:
         s->out = {g, g, w - 2 * g, h - 2 * g};
         // SAO's sample and quad passes cover whole 2x2 quads of the buffer grid (ao::sao());
         // GTAO's main pass the output grown by a pixel per denoiser pass, within the buffer.
-        s->work = cfg_.sao ? ao::quadAligned(s->out, w, h) : cfg_.gtao ? gtaoGrown(s->out, w, h, gtaoPasses()) : s->out;
+        s->work = cfg_.sao    ? ao::quadAligned(s->out, w, h)
+                  : cfg_.gtao ? ao::gtaoGrown(s->out, w, h, gtaoPasses())
+                              : s->out;
         const auto storage = vk::ImageUsageFlagBits::eStorage | vk::ImageUsageFlagBits::eTransferSrc;
         const auto aspect = vk::ImageAspectFlagBits::eColor;
         const std::uint32_t levels = std::uint32_t(cfg_.levels) + 1;
@@ -598,14 +600,6 @@ private:
     }
 
     int gtaoPasses() const { return cfg_.gtaoParams.denoisePasses; }
-    // The output region grown by `by` pixels on each side, within the w x h buffer (the
-    // CPU's gtaoImpl `grown`).
-    static ao::Region gtaoGrown(ao::Region out, int w, int h, int by) {
-        const int x0 = std::max(0, out.x0 - by), y0 = std::max(0, out.y0 - by);
-        const int x1 = std::min(w, out.x0 + out.width + by), y1 = std::min(h, out.y0 + out.height + by);
-        return {x0, y0, x1 - x0, y1 - y0};
-    }
-
     // GTAO after depth -> z (spec gtao.md): the chain's levels 1-4, the edges and normals and
     // the main pass over the work region, then the denoiser's passes (the last into the output).
     void recordGtao(const vk::raii::CommandBuffer& cmd, Scratch& s, const AoConstants& pc, vk::ImageView output) {
@@ -657,7 +651,7 @@ private:
         for (int pass = 0; pass < std::max(1, passes); ++pass) {
             const bool last = pass == std::max(1, passes) - 1;
             AoConstants c = pc;
-            region(c, last ? s.out : gtaoGrown(s.out, pc.width, pc.height, passes - 1 - pass));
+            region(c, last ? s.out : ao::gtaoGrown(s.out, pc.width, pc.height, passes - 1 - pass));
             c.srcX = s.work.x0, c.srcY = s.work.y0, c.srcW = s.work.width, c.srcH = s.work.height;
             c.levels = passes == 0 ? 0 : last ? 2 : 1;  // the mode
             const vk::DescriptorImageInfo in = storage(cur), out = storage(last ? output : other),

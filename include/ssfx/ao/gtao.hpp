@@ -173,6 +173,9 @@ struct GtaoConstants {
     float re, rp, fRp, fRe, rNum;
 };
 GtaoConstants gtaoConstants(const GtaoParams& params, const Projection& proj);
+//! `out` grown by `by` pixels on each side, within the width x height buffer: the main pass's
+//! work region (by = denoisePasses) and each denoiser pass's region (CPU and GPU).
+Region gtaoGrown(Region out, int width, int height, int by);
 
 //! Per-pass timings of one gtao() run, for the speed experiments (milliseconds).
 struct GtaoTimings {
