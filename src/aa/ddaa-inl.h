@@ -2,8 +2,9 @@
 // row, so a vector handles N neighbouring pixels at once (as a GPU's warp does).
 //
 // Exactness: every float operation is the scalar kernel's (ddaa_kernel.hpp) in the same
-// order and without FMA; the GPU-model bilinear reads are integer work on texels, and the
-// output byte of their mean comes from their levels (ByteOfMeanLevel in ppaa-inl.h).
+// order and without FMA; on a unorm texture the GPU-model bilinear reads are integer work on
+// texels, and the output byte of their mean comes from their levels (ByteOfMeanLevel in
+// ppaa-inl.h); on an sRGB texture they are Texture::sampleGpuDecoded's float sums.
 // Only the GPU filtering model has this path; tests/properties check it equals the
 // reference.
 #if defined(SSFX_AA_DDAA_INL_H_) == defined(HWY_TARGET_TOGGLE)
@@ -58,11 +59,12 @@ HWY_INLINE DiffusionV Diffusion(const NeighbourhoodV& n, const Ddaa1Params& p) {
     return d;
 }
 
-// diffuse(): the average of two reads at centre -/+ step + (offU, offV), quantised (from
-// the reads' levels: ByteOfMeanLevel) and stored with the source alpha; lanes whose exit
-// mask is set keep the source pixel.
-HWY_INLINE void DiffuseAndStore(const Texture& tex, const DiffusionV& d, float maxDiffusion, VF offU, VF offV, int x,
-                                int y, const std::uint8_t* exitMask, const Rgba8* src, Rgba8* dst) {
+// diffuse(): the average of two reads at centre -/+ step + (offU, offV), quantised and
+// stored with the source alpha; lanes whose exit mask is set keep the source pixel. A unorm
+// texture's byte comes from the reads' levels (ByteOfMeanLevel); an sRGB texture's reads are
+// its decoded floats, averaged as the scalar code does and encoded (EncodeSrgb8).
+HWY_INLINE void DiffuseAndStore(const Texture& tex, const LumaRows& L, const DiffusionV& d, float maxDiffusion, VF offU,
+                                VF offV, int x, int y, const std::uint8_t* exitMask, const Rgba8* src, Rgba8* dst) {
     const DF df;
     const VF maxDiff = hn::Set(df, maxDiffusion);
     const VF sx = hn::Mul(hn::Mul(d.dirX, maxDiff), d.strength), sy = hn::Mul(hn::Mul(d.dirY, maxDiff), d.strength);
@@ -75,9 +77,19 @@ HWY_INLINE void DiffuseAndStore(const Texture& tex, const DiffusionV& d, float m
     // diffusion shrinking as the edge offset grows), so they nearly always come from the
     // pixel's 3 x 3 texels; the rest are gathered.
     const auto skip = ExitLanes(exitMask, x);
-    RgbK a, b;
-    if (!NearSample(tex, au, av, x, y, skip, &a)) a = SampleGpuLevels(tex, au, av);
-    if (!NearSample(tex, bu, bv, x, y, skip, &b)) b = SampleGpuLevels(tex, bu, bv);
+    if (tex.format() == TextureFormat::Srgb) {  // from the band's decoded rows
+        RgbV a, b;
+        if (!NearDecoded(tex, L, au, av, x, y, skip, &a)) a = QuadDecoded(GatherQuad(tex, au, av), tex.decodeTable());
+        if (!NearDecoded(tex, L, bu, bv, x, y, skip, &b)) b = QuadDecoded(GatherQuad(tex, bu, bv), tex.decodeTable());
+        const VF half = hn::Set(df, 0.5f);
+        auto mean = [&](VF ca, VF cb) { return EncodeByte(hn::Mul(hn::Add(ca, cb), half), true); };
+        StoreBytes(mean(a.r, b.r), mean(a.g, b.g), mean(a.b, b.b), x, exitMask, src, dst);
+        return;
+    }
+    TexelQuad qa, qb;
+    if (!NearQuad(tex, au, av, x, y, skip, &qa)) qa = GatherQuad(tex, au, av);
+    if (!NearQuad(tex, bu, bv, x, y, skip, &qb)) qb = GatherQuad(tex, bu, bv);
+    const RgbK a = QuadLevels(qa), b = QuadLevels(qb);
     StoreBytes(ByteOfMeanLevel(a.r, b.r), ByteOfMeanLevel(a.g, b.g), ByteOfMeanLevel(a.b, b.b), x, exitMask, src, dst);
 }
 
@@ -86,7 +98,7 @@ HWY_INLINE void Ddaa1Chunk(const Texture& tex, const LumaRows& L, int x, int y, 
                            const Ddaa1Params& p, const Rgba8* src, Rgba8* dst) {
     const DF df;
     const DiffusionV d = Diffusion(LoadNeighbourhood(L, x, y), p);
-    DiffuseAndStore(tex, d, p.maxDiffusion, hn::Zero(df), hn::Zero(df), x, y, exitMask, src, dst);
+    DiffuseAndStore(tex, L, d, p.maxDiffusion, hn::Zero(df), hn::Zero(df), x, y, exitMask, src, dst);
 }
 
 // ddaa2's edge search, both sides at once, per lane (edgeSearchOffset's searchSide).
@@ -195,7 +207,7 @@ HWY_INLINE void Ddaa2Chunk(const Texture& tex, const LumaRows& L, const LumaPlan
     d.strength = hn::Mul(d.strength, hn::Sub(one, edgeStrength));
     const VF offU = hn::IfThenElse(d.horizontal, zero, hn::Mul(offset, hn::Set(df, tex.invW())));
     const VF offV = hn::IfThenElse(d.horizontal, hn::Mul(offset, hn::Set(df, tex.invH())), zero);
-    DiffuseAndStore(tex, d, p.maxDiffusion, offU, offV, x, y, exitMask, src, dst);
+    DiffuseAndStore(tex, L, d, p.maxDiffusion, offU, offV, x, y, exitMask, src, dst);
 }
 
 inline void Ddaa1RowSimd(const Texture& tex, const LumaRows& L, int y, std::uint8_t* exitMask, const Ddaa1Params& p,

@@ -25,17 +25,16 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Ddaa1Params& p, 
     checkOutput("ddaa1", in, out);
     validateParams(kDdaa1Params, &p, "ddaa1");
     const Texture tex(in, p.filtering, p.texture);
-    // The colour-aware measure (chromaWeight > 0) runs the scalar kernel, on all threads; an
-    // sRGB texture the fast path's luma rows and early exit, its edge pixels the scalar kernel.
+    // The colour-aware measure (chromaWeight > 0) runs the scalar kernel, on all threads.
     const bool scalar = reference || p.chromaWeight != 0.0f;
-    const bool unorm = p.texture == TextureFormat::Unorm;
     auto pixel = [&](int x, int y, const Luma3x3& n, float) {
         const Diffusion d = diffusion(n, edgeSides(n), p);
         return diffuse(tex, x, y, d, p.maxDiffusion, 0.0f, 0.0f);
     };
-    // The vector kernel across pixels covers the GPU filtering model (the default).
+    // The vector kernel across pixels covers the GPU filtering model (the default), on
+    // either texture encoding.
     auto rows = [&](int y, const LumaRows& band, const LumaPlanes&, std::uint8_t* mask, const Rgba8* src, Rgba8* dst) {
-        if (!scalar && unorm && p.filtering == Filtering::Gpu)
+        if (!scalar && p.filtering == Filtering::Gpu)
             HWY_DYNAMIC_DISPATCH(Ddaa1RowSimd)(tex, band, y, mask, p, src, dst);
     };
     runLumaMethod(in, out, scalar, p.chromaWeight, p.texture, p.edgeThresholdMin, p.edgeThreshold, exec, PlaneNeeds{},

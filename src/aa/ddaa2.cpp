@@ -147,13 +147,11 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Ddaa2Params& p, 
     checkOutput("ddaa2", in, out);
     validate(p);
     const Texture tex(in, p.filtering, p.texture);
-    // The colour-aware measure (chromaWeight > 0) runs the scalar kernel, on all threads; an
-    // sRGB texture the fast path's luma rows and early exit, its edge pixels the scalar kernel.
+    // The colour-aware measure (chromaWeight > 0) runs the scalar kernel, on all threads.
     const bool scalar = reference || p.chromaWeight != 0.0f;
-    const bool unorm = p.texture == TextureFormat::Unorm;
     // The vector kernel across pixels: GPU filtering model, and search reads provably equal
     // to pair-plane lookups for this size (else everything takes the scalar kernel).
-    const bool vector = !scalar && unorm && p.filtering == Filtering::Gpu &&
+    const bool vector = !scalar && p.filtering == Filtering::Gpu &&
                         ddaa2SearchReadsArePairReads(in.width(), in.height(), p.searchRounds) &&
                         planesFitGatherIndices(in.width());
     // The search reads up to 3 searchRounds texels along the edge: plane rows y - 3 r .. y + 3 r.

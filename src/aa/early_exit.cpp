@@ -7,6 +7,7 @@
 #include <hwy/highway.h>
 
 #include "src/aa/luma_driver.hpp"
+#include "src/core/srgb_encode-inl.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace ssfx::aa::detail {
@@ -41,6 +42,30 @@ void ExitRow(const float* HWY_RESTRICT above, const float* HWY_RESTRICT row, con
     for (; x < w; ++x) scalar(x);
 }
 
+// An sRGB texture's rows for the fast path: each texel decoded once into the channel rows of
+// `decoded` (three rows of w floats per image row), the luma rows from those values (the same
+// float operations as the luma plane's, so the same bits).
+void DecodedLumaRows(const Rgba8* HWY_RESTRICT in, std::size_t stride, int w, int rows, float* HWY_RESTRICT decoded,
+                     float* HWY_RESTRICT lumas) {
+    const hn::ScalableTag<float> df;
+    const int n = int(hn::Lanes(df));
+    const auto wr = hn::Set(df, 0.299f), wg = hn::Set(df, 0.587f), wb = hn::Set(df, 0.114f);
+    for (int y = 0; y < rows; ++y) {
+        float* r = decoded + std::size_t(3 * y) * std::size_t(w);
+        float* g = r + w;
+        float* b = g + w;
+        float* out = lumas + std::size_t(y) * std::size_t(w);
+        ssfx::HWY_NAMESPACE::DecodeSrgbRowPlanar(in + std::size_t(y) * stride, w, r, g, b);
+        int x = 0;
+        for (; x + n <= w; x += n) {
+            const auto sum = hn::Add(hn::Add(hn::Mul(wr, hn::LoadU(df, r + x)), hn::Mul(wg, hn::LoadU(df, g + x))),
+                                     hn::Mul(wb, hn::LoadU(df, b + x)));
+            hn::StoreU(hn::Sqrt(sum), df, out + x);
+        }
+        for (; x < w; ++x) out[x] = luma(r[x], g[x], b[x]);
+    }
+}
+
 }  // namespace HWY_NAMESPACE
 }  // namespace ssfx::aa::detail
 HWY_AFTER_NAMESPACE();
@@ -52,11 +77,18 @@ HWY_AFTER_NAMESPACE();
 namespace ssfx::aa::detail {
 
 HWY_EXPORT(ExitRow);
+HWY_EXPORT(DecodedLumaRows);
 
 LumaRows bandLumaRows(ImageView<const Rgba8> in, int y0, int y1, TextureFormat format) {
-    thread_local std::vector<float> buffer;
+    thread_local std::vector<float> buffer, decoded;
     const int first = std::max(0, y0 - 1), last = std::min(in.height(), y1 + 1);
     buffer.resize(std::size_t(last - first) * std::size_t(in.width()));
+    if (format == TextureFormat::Srgb) {
+        decoded.resize(3 * buffer.size());
+        HWY_DYNAMIC_DISPATCH(DecodedLumaRows)
+        (in.row(first), std::size_t(in.stride()), in.width(), last - first, decoded.data(), buffer.data());
+        return {buffer.data(), in.width(), in.height(), first, decoded.data()};
+    }
     const ImageView<const Rgba8> rows(in.row(first), in.width(), last - first, in.stride());
     lumaPlane(rows, ImageView<float>(buffer.data(), in.width(), last - first), Exec{1}, format);
     return {buffer.data(), in.width(), in.height(), first};

@@ -1,6 +1,7 @@
 // Highway body of fxaa3c across pixels (scalar oracle: fxaa3c.cpp). Diagonal lumas come
 // from the luma plane (reads at pixel centres), the four taps are gathered GPU-model reads;
-// every float operation mirrors the scalar code in order.
+// every float operation mirrors the scalar code in order. Either texture encoding: the reads
+// and the encode follow Texture::sample and toRgba8 (ppaa-inl.h's SampleGpu, EncodeByte).
 #if defined(SSFX_AA_FXAA3C_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef SSFX_AA_FXAA3C_INL_H_
 #undef SSFX_AA_FXAA3C_INL_H_
@@ -91,6 +92,7 @@ HWY_INLINE void Fxaa3cPixels(const Texture& tex, const LumaRows& L, VI xv, int y
     const RgbV B{hn::Add(hn::Mul(hn::Add(n2.r, p2.r), quarter), hn::Mul(A.r, quarter)),
                  hn::Add(hn::Mul(hn::Add(n2.g, p2.g), quarter), hn::Mul(A.g, quarter)),
                  hn::Add(hn::Mul(hn::Add(n2.b, p2.b), quarter), hn::Mul(A.b, quarter))};
+    const bool srgb = tex.format() == TextureFormat::Srgb;
     const VF lumaB = hn::Sqrt(hn::Add(hn::Add(hn::Mul(hn::Set(df, 0.299f), B.r), hn::Mul(hn::Set(df, 0.587f), B.g)),
                                       hn::Mul(hn::Set(df, 0.114f), B.b)));
     const auto twoTap = hn::Or(hn::Lt(lumaB, lumaMin), hn::Gt(lumaB, lumaMax));
@@ -98,9 +100,9 @@ HWY_INLINE void Fxaa3cPixels(const Texture& tex, const LumaRows& L, VI xv, int y
                       hn::IfThenElse(twoTap, hn::Mul(A.b, half), B.b)};
     const auto* src32 = reinterpret_cast<const std::uint32_t*>(src);
     const VU srcV = hn::GatherIndex(du, src32, xv);
-    const VU rgb =
-        hn::Or(hn::Or(hn::BitCast(du, Quantize(result.r)), hn::ShiftLeft<8>(hn::BitCast(du, Quantize(result.g)))),
-               hn::ShiftLeft<16>(hn::BitCast(du, Quantize(result.b))));
+    const VU rgb = hn::Or(hn::Or(hn::BitCast(du, EncodeByte(result.r, srgb)),
+                                 hn::ShiftLeft<8>(hn::BitCast(du, EncodeByte(result.g, srgb)))),
+                          hn::ShiftLeft<16>(hn::BitCast(du, EncodeByte(result.b, srgb))));
     const VU out = hn::Or(rgb, hn::And(srcV, hn::Set(du, 0xFF000000u)));
     hn::ScatterIndex(hn::IfThenElse(hn::RebindMask(du, keep), srcV, out), du, reinterpret_cast<std::uint32_t*>(dst),
                      xv);

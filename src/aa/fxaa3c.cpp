@@ -86,9 +86,9 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Fxaa3cParams& p,
     }
     // Fast path, in bands of rows with their luma rows (SIMD, same bits). The vector kernel
     // across pixels covers the default (GPU model, diagonals at +-1 px); the first pixel and
-    // the tail of each row take the scalar kernel. An sRGB texture: its decoded luma rows,
-    // and the scalar kernel (the vector kernel reads unorm texels).
-    const bool vector = centres && p.filtering == Filtering::Gpu && p.texture == TextureFormat::Unorm;
+    // the tail of each row take the scalar kernel. Either encoding (an sRGB texture's luma
+    // rows are its decoded texels').
+    const bool vector = centres && p.filtering == Filtering::Gpu;
     parallelRows(
         h, exec,
         [&](int y0, int y1) {

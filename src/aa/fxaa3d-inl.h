@@ -58,13 +58,17 @@ HWY_INLINE VI WalkIndex(const LumaPlanes& planes, const hn::Mask<DI>& horizontal
 
 // fxaa3d's final read, at the pixel's centre along the edge and `across` (a texture
 // coordinate) across it, when pixel centres are texels (centresAreTexels): the GPU model's
-// lerp between the two texels across the edge around the read, as levels, from contiguous
-// loads of rows y - 1, y, y + 1 (clamped) and columns x - 1, x, x + 1 instead of four gathers.
-// The bilinear sum with along-weight 0 is 256 ((256 - w) a + w b), so the read's k is
-// ((256 - w) a + w b + 8) >> 4. Returns false, writing nothing, when a lane that counts
-// reads further than one texel before its own (then the caller gathers).
-HWY_INLINE bool AcrossLerp(const Texture& tex, const hn::Mask<DF>& horizontal, VF across, int x, int y,
-                           const hn::Mask<DF>& skip, RgbK* c) {
+// lerp between the two texels across the edge around the read, from contiguous loads of rows
+// y - 1, y, y + 1 (clamped) and columns x - 1, x, x + 1 instead of four gathers. Returns
+// false, writing nothing, when a lane that counts reads further than one texel before its
+// own (then the caller gathers). Otherwise gives the output bytes:
+//  - unorm: the bilinear sum with along-weight 0 is 256 ((256 - w) a + w b) for the texel
+//    pair (a, b) and b's weight w, so the read's level is ((256 - w) a + w b + 8) >> 4;
+//  - sRGB: from the band's decoded rows, the two non-zero terms of sampleGpuDecoded's sum
+//    (the zero terms add nothing), weights (256 - w) 256 / 65536 and w 256 / 65536, exact
+//    as floats (a sum of two terms is the same in either order), encoded.
+HWY_INLINE bool AcrossBytes(const Texture& tex, const LumaRows& L, const hn::Mask<DF>& horizontal, VF across, int x,
+                            int y, const hn::Mask<DF>& skip, RgbK* bytes) {
     const DF df;
     const DI di;
     const DU du;
@@ -72,25 +76,53 @@ HWY_INLINE bool AcrossLerp(const Texture& tex, const hn::Mask<DF>& horizontal, V
     const VF own = hn::IfThenElse(horizontal, hn::Set(df, float(y)), hn::ConvertTo(df, hn::Iota(di, x)));
     const NearSplit s = SplitNear(across, size, own);
     if (!hn::AllTrue(df, hn::Or(s.near, skip))) return false;
-    const VI w = s.w;
-
+    // The pair (a, b) from `load(dy, dx)` (the texel or value at (x + dx, y + dy), rows clamped).
+    auto select = [&](auto d, const auto& load, auto* a, auto* b) {
+        const auto hor = hn::RebindMask(d, horizontal), lo = hn::RebindMask(d, s.before);
+        const auto centre = load(0, 0);
+        *a = hn::IfThenElse(lo, hn::IfThenElse(hor, load(-1, 0), load(0, -1)), centre);
+        *b = hn::IfThenElse(lo, centre, hn::IfThenElse(hor, load(1, 0), load(0, 1)));
+    };
+    if (tex.format() == TextureFormat::Srgb) {
+        const VF unit = hn::Set(df, 1.0f / 256.0f);
+        const VF wb = hn::Mul(hn::ConvertTo(df, s.w), unit);
+        const VF wa = hn::Mul(hn::ConvertTo(df, hn::Sub(hn::Set(di, 256), s.w)), unit);
+        auto channel = [&](int ch) {
+            VF a, b;
+            select(
+                df, [&](int dy, int dx) { return hn::LoadU(df, L.decodedRow(y + dy, ch) + x + dx); }, &a, &b);
+            return EncodeByte(hn::Add(hn::Mul(wa, a), hn::Mul(wb, b)), true);
+        };
+        *bytes = {channel(0), channel(1), channel(2)};
+        return true;
+    }
     const auto image = tex.image();
     const int h = tex.height();
-    auto row = [&](int r) {
-        return reinterpret_cast<const std::uint32_t*>(image.row(r < 0 ? 0 : (r >= h ? h - 1 : r)));
-    };
-    const std::uint32_t* rc = row(y) + x;
-    const VU above = hn::LoadU(du, row(y - 1) + x), below = hn::LoadU(du, row(y + 1) + x);
-    const VU centre = hn::LoadU(du, rc), left = hn::LoadU(du, rc - 1), right = hn::LoadU(du, rc + 1);
-    const auto hor = hn::RebindMask(du, horizontal), lo = hn::RebindMask(du, s.before);
-    const VU a = hn::IfThenElse(lo, hn::IfThenElse(hor, above, left), centre);
-    const VU b = hn::IfThenElse(lo, centre, hn::IfThenElse(hor, below, right));
+    VU a, b;
+    select(
+        du,
+        [&](int dy, int dx) {
+            const int r = std::clamp(y + dy, 0, h - 1);
+            return hn::LoadU(du, reinterpret_cast<const std::uint32_t*>(image.row(r)) + x + dx);
+        },
+        &a, &b);
     auto channel = [&](int shift) {
-        const VI sum = Lerp256(TexelByte(a, shift), TexelByte(b, shift), w);
-        return hn::ShiftRight<4>(hn::Add(sum, hn::Set(di, 8)));
+        const VI sum = Lerp256(TexelByte(a, shift), TexelByte(b, shift), s.w);
+        return ByteOfLevel(hn::ShiftRight<4>(hn::Add(sum, hn::Set(di, 8))));
     };
-    *c = {channel(0), channel(8), channel(16)};
+    *bytes = {channel(0), channel(8), channel(16)};
     return true;
+}
+
+// The output bytes of a gathered read.
+HWY_INLINE RgbK ReadBytes(const Texture& tex, VF u, VF v) {
+    const TexelQuad q = GatherQuad(tex, u, v);
+    if (tex.format() == TextureFormat::Srgb) {
+        const RgbV c = QuadDecoded(q, tex.decodeTable());
+        return {EncodeByte(c.r, true), EncodeByte(c.g, true), EncodeByte(c.b, true)};
+    }
+    const RgbK k = QuadLevels(q);
+    return {ByteOfLevel(k.r), ByteOfLevel(k.g), ByteOfLevel(k.b)};
 }
 
 // fxaa3d for pixels [x, x + N) of row y, 1 <= x, x + N <= W - 1.
@@ -194,12 +226,12 @@ HWY_INLINE void Fxaa3dChunk(const Texture& tex, const LumaRows& L, const LumaPla
     const VF su = hn::IfThenElse(s.horizontal, u, hn::Add(u, shift));
     const VF sv = hn::IfThenElse(s.horizontal, hn::Add(v, shift), v);
     RgbK c;
-    if (!lerp || !AcrossLerp(tex, s.horizontal, hn::IfThenElse(s.horizontal, sv, su), x, y, skip, &c))
-        c = SampleGpuLevels(tex, su, sv);
-    StoreBytes(ByteOfLevel(c.r), ByteOfLevel(c.g), ByteOfLevel(c.b), x, exitMask, src, dst);
+    if (!lerp || !AcrossBytes(tex, L, s.horizontal, hn::IfThenElse(s.horizontal, sv, su), x, y, skip, &c))
+        c = ReadBytes(tex, su, sv);
+    StoreBytes(c.r, c.g, c.b, x, exitMask, src, dst);
 }
 
-// lerp: centresAreTexels(tex), so the final reads may take AcrossLerp.
+// lerp: centresAreTexels(tex), so the final reads may take AcrossBytes.
 inline void Fxaa3dRowSimd(const Texture& tex, const LumaRows& L, const LumaPlanes& planes, bool lerp, int y,
                           std::uint8_t* exitMask, const Fxaa3dParams& p, const Rgba8* src, Rgba8* dst) {
     RowChunks(L.width, exitMask, [&](int x) { Fxaa3dChunk(tex, L, planes, lerp, x, y, exitMask, p, src, dst); });

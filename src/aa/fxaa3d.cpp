@@ -144,13 +144,11 @@ void run(ImageView<const Rgba8> in, ImageView<Rgba8> out, const Fxaa3dParams& p,
     checkOutput("fxaa3d", in, out);
     validate(p);
     const Texture tex(in, p.filtering, p.texture);
-    // The colour-aware measure (chromaWeight > 0) runs the scalar kernel, on all threads; an
-    // sRGB texture the fast path's luma rows and early exit, its edge pixels the scalar kernel.
+    // The colour-aware measure (chromaWeight > 0) runs the scalar kernel, on all threads.
     const bool scalar = reference || p.chromaWeight != 0.0f;
-    const bool unorm = p.texture == TextureFormat::Unorm;
     // The vector kernel across pixels: GPU filtering model, and walk reads provably equal to
     // plane lookups for this size (else everything takes the scalar kernel).
-    const bool vector = !scalar && unorm && p.filtering == Filtering::Gpu &&
+    const bool vector = !scalar && p.filtering == Filtering::Gpu &&
                         oncePerSize(in.width(), in.height(), p.paperSearchQuirk,
                                     [&] { return walkReadsArePlaneReads(tex, p.paperSearchQuirk); }) &&
                         planesFitGatherIndices(in.width());

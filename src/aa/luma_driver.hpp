@@ -26,15 +26,21 @@ namespace ssfx::aa::detail {
 struct LumaRows {
     const float* data = nullptr;
     int width = 0, height = 0, first = 0;
-    const float* row(int y) const {
-        const int c = y < 0 ? 0 : (y >= height ? height - 1 : y);
-        return data + std::size_t(c - first) * std::size_t(width);
+    //! Fast path, sRGB texture: the same rows' texels decoded (kSrgb8), three channel rows
+    //! (r, g, b) of `width` floats per image row; null otherwise.
+    const float* decoded = nullptr;
+    int clampRow(int y) const { return y < 0 ? 0 : (y >= height ? height - 1 : y); }
+    const float* row(int y) const { return data + std::size_t(clampRow(y) - first) * std::size_t(width); }
+    //! Channel c (0 r, 1 g, 2 b) of image row y, clamped.
+    const float* decodedRow(int y, int c) const {
+        return decoded + (std::size_t(clampRow(y) - first) * 3 + std::size_t(c)) * std::size_t(width);
     }
 };
 
 //! Luma rows [y0 - 1, y1 + 1) of `in` (clamped; SIMD, same bits as the reference plane)
 //! in a buffer kept per calling thread, valid until its next call (in early_exit.cpp).
-//! `format`: the texels as the texture reads them (sRGB: the decoded values' luma).
+//! `format`: the texels as the texture reads them (sRGB: the decoded values' luma, and the
+//! decoded texels themselves in LumaRows::decoded, for the vector kernels' reads).
 LumaRows bandLumaRows(ImageView<const Rgba8> in, int y0, int y1, TextureFormat format = TextureFormat::Unorm);
 
 //! exitMask[x] = 1 where pixel (x, y) is below the edge threshold (SIMD, in early_exit.cpp).
@@ -92,8 +98,7 @@ struct NoRowKernel {
 //! and the early-exit mask; `rowKernel(y, L, planes, mask, src, dst)` may write pixels of row y
 //! itself (a vector kernel across pixels) and sets their mask bytes to kWritten; the
 //! driver copies kExit runs and runs `pixel` on the kEdge pixels. An sRGB texture takes the
-//! fast path with its decoded luma rows; the vector row kernels read unorm texels only, so
-//! the methods give none for it and its edge pixels take `pixel`.
+//! fast path with its decoded luma rows and planes (the row kernels read either encoding).
 template <class PixelFn, class RowKernel = NoRowKernel>
 void runLumaMethod(ImageView<const Rgba8> in, ImageView<Rgba8> out, bool scalar, float chromaWeight,
                    TextureFormat format, float thresholdMin, float threshold, const Exec& exec, const PlaneNeeds& needs,
@@ -125,7 +130,7 @@ void runLumaMethod(ImageView<const Rgba8> in, ImageView<Rgba8> out, bool scalar,
             std::vector<std::uint8_t> mask(static_cast<std::size_t>(w));
             for (int y = y0; y < y1; ++y) {
                 const LumaPlanes planes =
-                    needs.planes ? planeRowsFor(in, call, y, needs.reach, needs.quad) : LumaPlanes{};
+                    needs.planes ? planeRowsFor(in, call, y, needs.reach, needs.quad, format) : LumaPlanes{};
                 const Rgba8* src = in.row(y);
                 Rgba8* dst = out.row(y);
                 std::uint8_t* m = mask.data();

@@ -31,7 +31,8 @@ std::uint64_t newPlaneCall() {
     return ++calls;
 }
 
-LumaPlanes planeRowsFor(ImageView<const Rgba8> in, std::uint64_t call, int y, int reach, bool withQuad) {
+LumaPlanes planeRowsFor(ImageView<const Rgba8> in, std::uint64_t call, int y, int reach, bool withQuad,
+                        TextureFormat format) {
     // Rows of this thread's ring; tag[slot] = the plane row it holds, -1 for none.
     thread_local struct {
         std::vector<float> buffer;
@@ -42,7 +43,7 @@ LumaPlanes planeRowsFor(ImageView<const Rgba8> in, std::uint64_t call, int y, in
     SSFX_ASSERT(reach >= 0 && window <= kMaxPlaneRing);
     int rows = 1;
     while (rows < window) rows *= 2;
-    LumaPlanes planes{nullptr, in.width(), in.height(), withQuad, rows - 1};
+    LumaPlanes planes{nullptr, in.width(), in.height(), withQuad, rows - 1, format, call};
     if (ring.call != call || ring.tag.size() != std::size_t(rows)) {
         ring.call = call;
         ring.buffer.resize(planes.size());

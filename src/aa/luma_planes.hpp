@@ -30,6 +30,11 @@ struct LumaPlanes {
     int width = 0, height = 0;  //!< of the image
     bool quad = false;
     int ringMask = 0;
+    //! The texels as the texture reads them: an sRGB texture's planes hold the lumas of
+    //! Texture::sampleGpuDecoded's half-way reads (its decoded texels weighted 1/2 or 1/4).
+    TextureFormat format = TextureFormat::Unorm;
+    //! The run of a method these rows belong to (newPlaneCall()): the same call, the same image.
+    std::uint64_t call = 0;
     std::size_t ringRows() const { return std::size_t(ringMask) + 1; }
     std::size_t slot(int r) const { return std::size_t(r & ringMask); }
     std::size_t sizeH() const { return ringRows() * std::size_t(width); }
@@ -126,7 +131,9 @@ std::uint64_t newPlaneCall();
 //! The plane rows that pixel row y reads when its searches go at most `reach` rows away
 //! (plane rows y - reach .. y + reach + 1, clamped), in a ring kept per calling thread:
 //! rows already there from the same call (the row above, typically) are kept, the others
-//! computed (SIMD). Valid until the next call on the same thread; reach <= 31.
-LumaPlanes planeRowsFor(ImageView<const Rgba8> in, std::uint64_t call, int y, int reach, bool withQuad);
+//! computed (SIMD). Valid until the next call on the same thread; reach <= 31. `format`:
+//! the texture's encoding (LumaPlanes::format).
+LumaPlanes planeRowsFor(ImageView<const Rgba8> in, std::uint64_t call, int y, int reach, bool withQuad,
+                        TextureFormat format);
 
 }  // namespace ssfx::aa::detail

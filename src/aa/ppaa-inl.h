@@ -23,6 +23,7 @@
 #include "src/aa/luma_planes.hpp"
 #include "src/aa/ppaa_common.hpp"
 #include "src/core/exact_div-inl.h"
+#include "src/core/srgb_encode-inl.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace ssfx::aa::detail {
@@ -97,8 +98,15 @@ HWY_INLINE RgbK ChannelLevels(VU t00, VU t10, VU t01, VU t11, VI wx, VI wy) {
             ChannelLevel(t00, t10, t01, t11, wx, wy, 16)};
 }
 
-// Bilinear GPU-model read at (u, v) per lane (Texture::sampleGpu), as levels.
-HWY_INLINE RgbK SampleGpuLevels(const Texture& tex, VF u, VF v) {
+// The four texels (t00 = (x0, y0), t10 = (x1, y0), t01 = (x0, y1), t11 = (x1, y1)) and the
+// GPU weights of a bilinear read, per lane: what both encodings filter.
+struct TexelQuad {
+    VU t00, t10, t01, t11;
+    VI wx, wy;
+};
+
+// The texels of a GPU-model read at (u, v) per lane (Texture::fetch), gathered.
+HWY_INLINE TexelQuad GatherQuad(const Texture& tex, VF u, VF v) {
     const DI di;
     const DU du;
     const AxisV ax = SplitAxis(u, float(tex.width()), tex.width());
@@ -106,15 +114,56 @@ HWY_INLINE RgbK SampleGpuLevels(const Texture& tex, VF u, VF v) {
     const VI stride = hn::Set(di, int(tex.image().stride()));
     const VI r0 = hn::Mul(ay.i0, stride), r1 = hn::Mul(ay.i1, stride);
     const auto* base = reinterpret_cast<const std::uint32_t*>(tex.image().data());
-    const VU t00 = hn::GatherIndex(du, base, hn::Add(r0, ax.i0));
-    const VU t10 = hn::GatherIndex(du, base, hn::Add(r0, ax.i1));
-    const VU t01 = hn::GatherIndex(du, base, hn::Add(r1, ax.i0));
-    const VU t11 = hn::GatherIndex(du, base, hn::Add(r1, ax.i1));
-    return ChannelLevels(t00, t10, t01, t11, ax.w, ay.w);
+    return {hn::GatherIndex(du, base, hn::Add(r0, ax.i0)),
+            hn::GatherIndex(du, base, hn::Add(r0, ax.i1)),
+            hn::GatherIndex(du, base, hn::Add(r1, ax.i0)),
+            hn::GatherIndex(du, base, hn::Add(r1, ax.i1)),
+            ax.w,
+            ay.w};
 }
 
-// The same as floats (Texture::sampleGpu's values).
+// A unorm texture's read as levels (Texture::sampleGpu).
+HWY_INLINE RgbK QuadLevels(const TexelQuad& q) { return ChannelLevels(q.t00, q.t10, q.t01, q.t11, q.wx, q.wy); }
+
+// Texel byte `shift` decoded by `table` (sRGB: kSrgb8), per lane.
+HWY_INLINE VF DecodeByte(VU t, int shift, const float* table) {
+    return hn::GatherIndex(DF(), table, TexelByte(t, shift));
+}
+
+// An sRGB texture's read (Texture::sampleGpuDecoded) weighs the decoded texels in float by
+// the same 8-bit weights, exact as floats (multiples of 1/65536), and sums in its order.
+struct DecodedWeights {
+    VF w00, w10, w01, w11;
+};
+HWY_INLINE DecodedWeights WeightsOf(VI wx, VI wy) {
+    const DF df;
+    const DI di;
+    const VI full = hn::Set(di, 256);
+    const VF unit = hn::Set(df, 1.0f / 65536.0f);
+    const VI ix = hn::Sub(full, wx), iy = hn::Sub(full, wy);
+    return {hn::Mul(hn::ConvertTo(df, hn::Mul(ix, iy)), unit), hn::Mul(hn::ConvertTo(df, hn::Mul(wx, iy)), unit),
+            hn::Mul(hn::ConvertTo(df, hn::Mul(ix, wy)), unit), hn::Mul(hn::ConvertTo(df, hn::Mul(wx, wy)), unit)};
+}
+HWY_INLINE VF WeightedSum(const DecodedWeights& w, VF t00, VF t10, VF t01, VF t11) {
+    return hn::Add(hn::Add(hn::Add(hn::Mul(w.w00, t00), hn::Mul(w.w10, t10)), hn::Mul(w.w01, t01)),
+                   hn::Mul(w.w11, t11));
+}
+// The read from a quad of texels, each channel decoded by a gather from `table`.
+HWY_INLINE RgbV QuadDecoded(const TexelQuad& q, const float* table) {
+    const DecodedWeights w = WeightsOf(q.wx, q.wy);
+    auto channel = [&](int shift) {
+        return WeightedSum(w, DecodeByte(q.t00, shift, table), DecodeByte(q.t10, shift, table),
+                           DecodeByte(q.t01, shift, table), DecodeByte(q.t11, shift, table));
+    };
+    return {channel(0), channel(8), channel(16)};
+}
+
+// Bilinear GPU-model read at (u, v) per lane (Texture::sampleGpu), as levels.
+HWY_INLINE RgbK SampleGpuLevels(const Texture& tex, VF u, VF v) { return QuadLevels(GatherQuad(tex, u, v)); }
+
+// The same as floats (Texture::sample's values, either encoding).
 HWY_INLINE RgbV SampleGpu(const Texture& tex, VF u, VF v) {
+    if (tex.format() == TextureFormat::Srgb) return QuadDecoded(GatherQuad(tex, u, v), tex.decodeTable());
     const RgbK k = SampleGpuLevels(tex, u, v);
     return {Levels4080(k.r), Levels4080(k.g), Levels4080(k.b)};
 }
@@ -138,35 +187,67 @@ HWY_INLINE NearSplit SplitNear(VF coord, VF size, VF own) {
             hn::ConvertTo(di, hn::Add(hn::Mul(hn::Sub(t, fl), hn::Set(df, 256.0f)), hn::Set(df, 0.5f)))};
 }
 
-// The GPU-model read at (u, v) per lane, as levels, from the 3 x 3 texels around each
+// The texels of the GPU-model read at (u, v) per lane, from the 3 x 3 texels around each
 // lane's pixel (row y, pixels x .. x + N - 1 with 1 <= x, x + N <= W - 1), loaded contiguously rather
 // than gathered. Valid when every lane that counts (not in `skip`) reads within a texel of
 // its pixel: floor(u W - 0.5) and floor(v H - 0.5) are its own column and row or the ones
 // before. Otherwise returns false and writes nothing (the caller gathers). Same indices,
 // clamping (rows only: columns stay inside) and weights as SampleGpu, so the same result.
-HWY_INLINE bool NearSample(const Texture& tex, VF u, VF v, int x, int y, const hn::Mask<DF>& skip, RgbK* c) {
+// The split, and the selection of the four texels from `load(r, dx)` (row y - 1 + r clamped,
+// columns x + dx ..), shared by the texels (NearQuad) and an sRGB texture's decoded
+// channels (NearDecoded).
+struct NearSplitXY {
+    NearSplit x, y;
+};
+HWY_INLINE bool SplitNearXY(const Texture& tex, VF u, VF v, int x, int y, const hn::Mask<DF>& skip, NearSplitXY* s) {
     const DF df;
     const DI di;
-    const DU du;
-    const NearSplit sx = SplitNear(u, hn::Set(df, float(tex.width())), hn::ConvertTo(df, hn::Iota(di, x)));
-    const NearSplit sy = SplitNear(v, hn::Set(df, float(tex.height())), hn::Set(df, float(y)));
-    if (!hn::AllTrue(df, hn::Or(hn::And(sx.near, sy.near), skip))) return false;
-    const VI wx = sx.w, wy = sy.w;
-
+    s->x = SplitNear(u, hn::Set(df, float(tex.width())), hn::ConvertTo(df, hn::Iota(di, x)));
+    s->y = SplitNear(v, hn::Set(df, float(tex.height())), hn::Set(df, float(y)));
+    return hn::AllTrue(df, hn::Or(hn::And(s->x.near, s->y.near), skip));
+}
+template <class D, class Load>
+HWY_INLINE void SelectNear(D d, const NearSplitXY& s, const Load& load, hn::Vec<D> t[4]) {
+    const auto lx = hn::RebindMask(d, s.x.before), ly = hn::RebindMask(d, s.y.before);
+    hn::Vec<D> left[3], right[3];  // per row y - 1, y, y + 1: the texel pair (x0, x1) of each lane
+    for (int r = 0; r < 3; ++r) {
+        const hn::Vec<D> a = load(r, -1), b = load(r, 0), e = load(r, 1);
+        left[r] = hn::IfThenElse(lx, a, b);
+        right[r] = hn::IfThenElse(lx, b, e);
+    }
+    t[0] = hn::IfThenElse(ly, left[0], left[1]), t[1] = hn::IfThenElse(ly, right[0], right[1]);
+    t[2] = hn::IfThenElse(ly, left[1], left[2]), t[3] = hn::IfThenElse(ly, right[1], right[2]);
+}
+HWY_INLINE bool NearQuad(const Texture& tex, VF u, VF v, int x, int y, const hn::Mask<DF>& skip, TexelQuad* q) {
+    NearSplitXY s;
+    if (!SplitNearXY(tex, u, v, x, y, skip, &s)) return false;
     const auto image = tex.image();
     const int h = tex.height();
-    const auto lx = hn::RebindMask(du, sx.before), ly = hn::RebindMask(du, sy.before);
-    VU left[3], right[3];  // per row y - 1, y, y + 1: the texel pair (x0, x1) of each lane
-    for (int r = 0; r < 3; ++r) {
-        const int row = std::clamp(y - 1 + r, 0, h - 1);
-        const auto* p = reinterpret_cast<const std::uint32_t*>(image.row(row)) + x;
-        const VU a = hn::LoadU(du, p - 1), b = hn::LoadU(du, p), d = hn::LoadU(du, p + 1);
-        left[r] = hn::IfThenElse(lx, a, b);
-        right[r] = hn::IfThenElse(lx, b, d);
-    }
-    const VU t00 = hn::IfThenElse(ly, left[0], left[1]), t10 = hn::IfThenElse(ly, right[0], right[1]);
-    const VU t01 = hn::IfThenElse(ly, left[1], left[2]), t11 = hn::IfThenElse(ly, right[1], right[2]);
-    *c = ChannelLevels(t00, t10, t01, t11, wx, wy);
+    VU t[4];
+    SelectNear(
+        DU(), s,
+        [&](int r, int dx) {
+            const int row = std::clamp(y - 1 + r, 0, h - 1);
+            return hn::LoadU(DU(), reinterpret_cast<const std::uint32_t*>(image.row(row)) + x + dx);
+        },
+        t);
+    *q = {t[0], t[1], t[2], t[3], s.x.w, s.y.w};
+    return true;
+}
+// The same read for an sRGB texture, from the band's decoded channel rows (LumaRows::decoded:
+// float loads instead of a gather per texel and channel), summed as sampleGpuDecoded sums.
+HWY_INLINE bool NearDecoded(const Texture& tex, const LumaRows& L, VF u, VF v, int x, int y, const hn::Mask<DF>& skip,
+                            RgbV* c) {
+    NearSplitXY s;
+    if (!SplitNearXY(tex, u, v, x, y, skip, &s)) return false;
+    const DecodedWeights w = WeightsOf(s.x.w, s.y.w);
+    auto channel = [&](int ch) {
+        VF t[4];
+        SelectNear(
+            DF(), s, [&](int r, int dx) { return hn::LoadU(DF(), L.decodedRow(y - 1 + r, ch) + x + dx); }, t);
+        return WeightedSum(w, t[0], t[1], t[2], t[3]);
+    };
+    *c = {channel(0), channel(1), channel(2)};
     return true;
 }
 
@@ -195,6 +276,10 @@ HWY_INLINE VI Quantize(VF v) {
     const VF r = hn::Add(hn::Sub(fl, hn::IfThenElseZero(down, one)), hn::IfThenElseZero(up, one));
     return hn::ConvertTo(di, r);
 }
+
+// A filtered value's output byte in its texture's encoding, per lane (toRgba8's encode8:
+// toUnorm8, or encodeSrgb8 for an sRGB texture).
+HWY_INLINE VI EncodeByte(VF v, bool srgb) { return srgb ? ssfx::HWY_NAMESPACE::EncodeSrgb8(DF(), v) : Quantize(v); }
 
 // The 3x3 luma neighbourhood of pixels [x, x + N) of row y (S = row above, N = row below).
 struct NeighbourhoodV {
@@ -340,10 +425,98 @@ HWY_INLINE void RowChunks(int w, std::uint8_t* mask, const Chunk& chunk) {
     }
 }
 
+// LumaPlaneRows for an sRGB texture: the image rows the plane rows span (r0 - 1 .. r1 - 1,
+// clamped) decoded once each, then per plane element the decoded texels weighted 1/2 (pairs)
+// or 1/4 (quads) in Texture::sampleGpuDecoded's order (its zero terms add nothing): loads
+// instead of 6 or 12 gathers an element. A thread walking down the image asks for one plane
+// row at a time; the last image row it decoded for the same call is its next first row, kept.
+inline void LumaPlaneRowsSrgb(ImageView<const Rgba8> in, const LumaPlanes& planes, int r0, int r1) {
+    const DF df;
+    const int w = in.width(), h = in.height(), n = int(hn::Lanes(df));
+    float* data = const_cast<float*>(planes.data);
+    const VF wr = hn::Set(df, 0.299f), wg = hn::Set(df, 0.587f), wb = hn::Set(df, 0.114f);
+    const VF half = hn::Set(df, 0.5f), quarter = hn::Set(df, 0.25f);
+    auto clampRow = [h](int y) { return y < 0 ? 0 : (y >= h ? h - 1 : y); };
+    const int first = clampRow(r0 - 1), last = clampRow(r1 - 1);
+    // Decoded rows first .. last, three channel rows each.
+    thread_local std::vector<float> decoded;
+    thread_local struct {
+        std::uint64_t call = 0;
+        int row = -1;        // the last row decoded for that call
+        std::size_t at = 0;  // its offset in `decoded`
+    } kept;
+    const std::size_t rowFloats = 3 * std::size_t(w);
+    const bool reuse = kept.call == planes.call && kept.row == first && decoded.size() >= kept.at + rowFloats;
+    if (reuse && kept.at != 0) std::memmove(decoded.data(), decoded.data() + kept.at, rowFloats * sizeof(float));
+    decoded.resize(std::max(decoded.size(), std::size_t(last - first + 1) * rowFloats));
+    for (int y = reuse ? first + 1 : first; y <= last; ++y) {
+        float* d = decoded.data() + std::size_t(y - first) * rowFloats;
+        ssfx::HWY_NAMESPACE::DecodeSrgbRowPlanar(in.row(y), w, d, d + w, d + 2 * w);
+    }
+    kept = {planes.call, last, std::size_t(last - first) * rowFloats};
+    auto channels = [&](int y) { return decoded.data() + std::size_t(clampRow(y) - first) * rowFloats; };
+    auto luma3 = [&](VF r, VF g, VF b) {
+        return hn::Sqrt(hn::Add(hn::Add(hn::Mul(wr, r), hn::Mul(wg, g)), hn::Mul(wb, b)));
+    };
+    // Pairs: texels at offsets a and b of two channel rows (channel c at c * w).
+    auto pairV = [&](const float* a, const float* b) {
+        auto mean = [&](int c) {
+            return hn::Add(hn::Mul(half, hn::LoadU(df, a + c * w)), hn::Mul(half, hn::LoadU(df, b + c * w)));
+        };
+        return luma3(mean(0), mean(1), mean(2));
+    };
+    auto pairS = [&](const float* a, const float* b) {
+        auto mean = [&](int c) { return 0.5f * a[c * w] + 0.5f * b[c * w]; };
+        return luma(mean(0), mean(1), mean(2));
+    };
+    // Quads: (x0, y0) = a[0], (x1, y0) = a[1], (x0, y1) = b[0], (x1, y1) = b[1] (quadS: the
+    // four named, the edge texel twice at the borders).
+    auto quadV = [&](const float* a, const float* b) {
+        auto mean = [&](int c) {
+            const VF t =
+                hn::Add(hn::Mul(quarter, hn::LoadU(df, a + c * w)), hn::Mul(quarter, hn::LoadU(df, a + c * w + 1)));
+            return hn::Add(hn::Add(t, hn::Mul(quarter, hn::LoadU(df, b + c * w))),
+                           hn::Mul(quarter, hn::LoadU(df, b + c * w + 1)));
+        };
+        return luma3(mean(0), mean(1), mean(2));
+    };
+    auto quadS = [&](const float* a0, const float* a1, const float* b0, const float* b1) {
+        auto mean = [&](int c) {
+            return ((0.25f * a0[c * w] + 0.25f * a1[c * w]) + 0.25f * b0[c * w]) + 0.25f * b1[c * w];
+        };
+        return luma(mean(0), mean(1), mean(2));
+    };
+    for (int r = r0; r < r1; ++r) {
+        const float* a = channels(r - 1);
+        const float* b = channels(r);
+        float* out = data + planes.rowH(r);
+        int x = 0;
+        for (; x + n <= w; x += n) hn::StoreU(pairV(a + x, b + x), df, out + x);
+        for (; x < w; ++x) out[x] = pairS(a + x, b + x);
+        if (r < h) {
+            float* v = data + planes.rowV(r);
+            v[0] = pairS(b, b);
+            v[w] = pairS(b + w - 1, b + w - 1);
+            x = 0;
+            for (; x + n <= w - 1; x += n) hn::StoreU(pairV(b + x, b + x + 1), df, v + 1 + x);
+            for (; x < w - 1; ++x) v[1 + x] = pairS(b + x, b + x + 1);
+        }
+        if (!planes.hasQuad()) continue;
+        float* q = data + planes.rowQ(r);
+        q[0] = quadS(a, a, b, b);
+        q[w] = quadS(a + w - 1, a + w - 1, b + w - 1, b + w - 1);
+        int c = 1;
+        for (; c - 1 + n + 1 <= w; c += n) hn::StoreU(quadV(a + c - 1, b + c - 1), df, q + c);
+        for (; c < w; ++c) q[c] = quadS(a + c - 1, a + c, b + c - 1, b + c);
+    }
+}
+
 // Plane rows [r0, r1) of each luma plane, into their ring slots (layout in luma_planes.hpp). Half-way
 // reads between two texels are 8 (a + b) / 4080 = (a + b) / 510 per channel, between four
 // texels 4 (a + b + c + d) / 4080 = (a + b + c + d) / 1020, both exactly (same real number).
+// An sRGB texture's are the decoded texels' float sums (LumaPlaneRowsSrgb).
 inline void LumaPlaneRows(ImageView<const Rgba8> in, const LumaPlanes& planes, int r0, int r1) {
+    if (planes.format == TextureFormat::Srgb) return LumaPlaneRowsSrgb(in, planes, r0, r1);
     const DF df;
     const DU du;
     const int w = in.width(), h = in.height(), n = int(hn::Lanes(df));

@@ -8,6 +8,7 @@
 #include <bit>
 #include <cmath>
 
+#include "src/aa/luma_planes.hpp"
 #include "ssfx/aa/registry.hpp"
 #include "ssfx/core/color.hpp"
 #include "ssfx/core/sample.hpp"
@@ -127,6 +128,37 @@ TEST(SrgbTexture, FiltersDecodedTexels) {
         // A quarter of the way (u = 0.375, texel position 0.25): weights 0.75 / 0.25.
         EXPECT_FLOAT_EQ(s.sample(0.375f, 0.5f).r, 0.25f * kSrgb8[128]);
     }
+}
+
+// The vector kernels' luma planes (luma_planes.hpp) hold the lumas of the reads half-way
+// between two texels (H, V) and four (Q); an sRGB texture's must be its own reads bit for
+// bit (the decoded texels weighted 1/2 or 1/4 in Texture::sampleGpuDecoded's order), the
+// clamped borders included. 40 px wide: the vector loops and their scalar tails both run.
+TEST(SrgbTexture, LumaPlanesHoldTheTexturesHalfWayReads) {
+    const int w = 40, h = 7;
+    const auto img = test::noise(w, h, 5);
+    const Texture tex(img.view(), Filtering::Gpu, TextureFormat::Srgb);
+    // Row 3 with reach 3: plane rows 0 .. 7, all of them.
+    const aa::detail::LumaPlanes planes =
+        aa::detail::planeRowsFor(img.view(), aa::detail::newPlaneCall(), 3, 3, true, TextureFormat::Srgb);
+    int checked = 0;
+    for (int r = 0; r <= h; ++r)
+        for (int c = 0; c <= w; ++c) {
+            const float u = float(c) / float(w), v = float(r) / float(h);  // texel corners
+            ASSERT_EQ(tex.axisU(u).w, 128);
+            ASSERT_EQ(tex.axisV(v).w, 128);
+            ASSERT_EQ(planes.data[planes.rowQ(r) + std::size_t(c)], luma(tex.sample(u, v))) << "Q " << c << "," << r;
+            if (c < w) {  // between rows r - 1 and r
+                ASSERT_EQ(planes.data[planes.rowH(r) + std::size_t(c)], luma(tex.sample(tex.centreU(c), v)))
+                    << "H " << c << "," << r;
+            }
+            if (r < h) {  // between columns c - 1 and c
+                ASSERT_EQ(planes.data[planes.rowV(r) + std::size_t(c)], luma(tex.sample(u, tex.centreV(r))))
+                    << "V " << c << "," << r;
+            }
+            ++checked;
+        }
+    EXPECT_EQ(checked, (w + 1) * (h + 1));
 }
 
 TEST(SrgbMode, EveryTextureReadingMethodHasTheParameter) {

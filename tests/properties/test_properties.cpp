@@ -56,6 +56,10 @@ TEST_P(MethodProperty, FastPathEqualsTheScalarReference) {
         MethodSettings exact;
         exact.filtering = Filtering::Exact;
         EXPECT_EQ(m.run(in.view(), exact, {}), m.reference(in.view(), exact, {}));
+        if (m.id == "noaa") continue;  // reads no texture
+        MethodSettings srgb;           // an sRGB texture: the vector kernels' decoded-float reads
+        srgb.params = {{"texture", 1}};
+        EXPECT_EQ(m.run(in.view(), srgb, {}), m.reference(in.view(), srgb, {})) << "texture=srgb";
     }
 }
 
