@@ -175,6 +175,161 @@ struct GtaoLanes {
     }
 };
 
+// Sections 5.1 and 6 per lane: gtaoEdges, quantiseEdges and gtaoNormalFromDepth
+// (gtao_pixel.hpp) for pixels [x, x + N) of row y, 1 <= x, x + N <= W - 1 (the row's
+// neighbours are contiguous loads; the rows above and below are clamped). The same float
+// operations in the same order (IEEE division and square root, no FMA), so the same bits.
+template <class DF, class V = hn::Vec<DF>>
+HWY_INLINE void EdgesNormalsChunk(DF df, const GtaoSimdInput& in, int x, int y, std::uint8_t* HWY_RESTRICT edges,
+                                  float* HWY_RESTRICT normals) {
+    const hn::RebindToSigned<DF> di;
+    const hn::Rebind<std::uint8_t, DF> d8;
+    const float* t = in.chain;  // level 0
+    const float* rc = t + std::size_t(y) * std::size_t(in.width);
+    const float* ra = t + std::size_t(y > 0 ? y - 1 : 0) * std::size_t(in.width);
+    const float* rb = t + std::size_t(y + 1 < in.height ? y + 1 : in.height - 1) * std::size_t(in.width);
+    const V zero = hn::Zero(df), one = hn::Set(df, 1.0f);
+    const V tc = hn::LoadU(df, rc + x);
+    const V nb[4] = {hn::LoadU(df, rc + x - 1), hn::LoadU(df, rc + x + 1), hn::LoadU(df, ra + x),
+                     hn::LoadU(df, rb + x)};
+    hn::Mask<DF> sky[4];
+    V dt[4];
+    for (int i = 0; i < 4; ++i) sky[i] = hn::IsInf(nb[i]), dt[i] = hn::IfThenZeroElse(sky[i], hn::Sub(nb[i], tc));
+    const V half = hn::Set(df, 0.5f);
+    const V sLR = hn::Mul(hn::Sub(dt[1], dt[0]), half), sTB = hn::Mul(hn::Sub(dt[3], dt[2]), half);
+    const V adj[4] = {hn::Add(dt[0], sLR), hn::Sub(dt[1], sLR), hn::Add(dt[2], sTB), hn::Sub(dt[3], sTB)};
+    const V scale = hn::Mul(tc, hn::Set(df, 0.011f));
+    const auto skyC = hn::IsInf(tc);
+    V e[4];
+    auto packed = hn::Zero(di);
+    for (int i = 0; i < 4; ++i) {
+        const V m = hn::IfThenElse(sky[i ^ 1], hn::Abs(dt[i]), hn::Min(hn::Abs(dt[i]), hn::Abs(adj[i])));
+        const V ei = hn::Min(hn::Max(hn::Sub(hn::Set(df, 1.25f), hn::Div(m, scale)), zero), one);
+        e[i] = hn::IfThenZeroElse(hn::Or(sky[i], skyC), ei);
+        // quantiseEdges: roundEven(2.9 e) << 2 i
+        const auto q = hn::ConvertTo(di, hn::Round(hn::Mul(hn::Set(df, 2.9f), e[i])));
+        packed = hn::Or(packed, hn::ShiftLeftSame(q, 2 * i));
+    }
+    hn::StoreU(hn::DemoteTo(d8, packed), d8, edges);
+
+    // The normal: positions z (ax + bx x), z (ay + by y), z with z = -t.
+    const V fxC = hn::Add(hn::Set(df, in.ax), hn::Mul(hn::Set(df, in.bx), hn::ConvertTo(df, hn::Iota(di, x))));
+    const V fyC = hn::Set(df, in.ay + in.by * float(y));
+    const V zC = hn::Neg(tc);
+    const V cx = hn::Mul(zC, fxC), cy = hn::Mul(zC, fyC);
+    auto unitOrZero = [&](V& nx, V& ny, V& nz) {
+        const V len = hn::Sqrt(hn::Add(hn::Add(hn::Mul(nx, nx), hn::Mul(ny, ny)), hn::Mul(nz, nz)));
+        const auto ok = hn::And(hn::Gt(len, zero), hn::Not(hn::IsInf(len)));  // len >= 0 or NaN
+        nx = hn::IfThenElseZero(ok, hn::Div(nx, len));
+        ny = hn::IfThenElseZero(ok, hn::Div(ny, len));
+        nz = hn::IfThenElseZero(ok, hn::Div(nz, len));
+    };
+    // Neighbours L, R, T, B: their own positions (x -+ 1 or y -+ 1) with their t.
+    const V fxL = hn::Add(hn::Set(df, in.ax), hn::Mul(hn::Set(df, in.bx), hn::ConvertTo(df, hn::Iota(di, x - 1))));
+    const V fxR = hn::Add(hn::Set(df, in.ax), hn::Mul(hn::Set(df, in.bx), hn::ConvertTo(df, hn::Iota(di, x + 1))));
+    const V fyT = hn::Set(df, in.ay + in.by * float(y - 1)), fyB = hn::Set(df, in.ay + in.by * float(y + 1));
+    const V fxs[4] = {fxL, fxR, fxC, fxC}, fys[4] = {fyC, fyC, fyT, fyB};
+    V ux[4], uy[4], uz[4];
+    for (int i = 0; i < 4; ++i) {
+        const V z = hn::Neg(nb[i]);
+        ux[i] = hn::Sub(hn::Mul(z, fxs[i]), cx), uy[i] = hn::Sub(hn::Mul(z, fys[i]), cy), uz[i] = hn::Sub(z, zC);
+        unitOrZero(ux[i], uy[i], uz[i]);
+        ux[i] = hn::IfThenZeroElse(sky[i], ux[i]), uy[i] = hn::IfThenZeroElse(sky[i], uy[i]);
+        uz[i] = hn::IfThenZeroElse(sky[i], uz[i]);
+    }
+    enum { L, R, T, B };
+    auto weight = [&](int a, int b) {
+        const V w = hn::Min(hn::Max(hn::Add(hn::Mul(e[a], e[b]), hn::Set(df, 0.01f)), zero), one);
+        return hn::IfThenZeroElse(hn::Or(sky[a], sky[b]), w);
+    };
+    const V aLT = weight(L, T), aTR = weight(T, R), aRB = weight(R, B), aBL = weight(B, L);
+    // cross(a, b) = (a.y b.z - a.z b.y, a.z b.x - a.x b.z, a.x b.y - a.y b.x)
+    auto crossX = [&](int a, int b) { return hn::Sub(hn::Mul(uy[a], uz[b]), hn::Mul(uz[a], uy[b])); };
+    auto crossY = [&](int a, int b) { return hn::Sub(hn::Mul(uz[a], ux[b]), hn::Mul(ux[a], uz[b])); };
+    auto crossZ = [&](int a, int b) { return hn::Sub(hn::Mul(ux[a], uy[b]), hn::Mul(uy[a], ux[b])); };
+    auto blend = [&](const auto& c) {  // aLT cLT + aTR cTR + aRB cRB + aBL cBL, left to right
+        return hn::Add(hn::Add(hn::Add(hn::Mul(aLT, c(T, L)), hn::Mul(aTR, c(R, T))), hn::Mul(aRB, c(B, R))),
+                       hn::Mul(aBL, c(L, B)));
+    };
+    V nx = blend(crossX), ny = blend(crossY), nz = blend(crossZ);
+    unitOrZero(nx, ny, nz);
+    nx = hn::IfThenZeroElse(skyC, nx), ny = hn::IfThenZeroElse(skyC, ny), nz = hn::IfThenZeroElse(skyC, nz);
+    hn::StoreInterleaved3(nx, ny, nz, df, normals);
+}
+
+// Edges and normals of pixels [x0, x1) of row y (1 <= x0, x1 <= W - 1) into the work
+// region's row (edges, normals: the entries of x0 on), whole vectors; returns the first x
+// it left to the scalar loop.
+inline int GtaoEdgesNormalsRow(const GtaoSimdInput& in, int y, int x0, int x1, std::uint8_t* HWY_RESTRICT edges,
+                               float* HWY_RESTRICT normals) {
+    const hn::ScalableTag<float> df;
+    const int n = int(hn::Lanes(df));
+    int x = x0;
+    for (; x + n <= x1; x += n) EdgesNormalsChunk(df, in, x, y, edges + (x - x0), normals + 3 * std::size_t(x - x0));
+    return x;
+}
+
+// Section 8 per lane: GtaoDenoise::pixel (gtao_pixel.hpp) without bent normals, for pixels
+// [x, x + N) of row y, workX0 + 1 <= x, x + N <= workX0 + workWidth - 1 (the row's neighbours
+// are contiguous; the rows above and below are clamped to the work region). The same float
+// operations in the same order; a sky neighbour's terms are added as zeros, which leaves
+// the non-negative sums as they are.
+template <class DF, class V = hn::Vec<DF>>
+HWY_INLINE V DenoiseChunk(DF df, const GtaoDenoiseInput& in, int x, int y) {
+    const hn::RebindToSigned<DF> di;
+    const hn::Rebind<std::uint8_t, DF> d8;
+    const int ya = std::max(y - 1, in.workY0), yb = std::min(y + 1, in.workY0 + in.workHeight - 1);
+    const int rows[3] = {ya, y, yb};
+    const int i = x - in.workX0;
+    // Neighbours C, L, R, T, B, TL, TR, BL, BR: row (0 above, 1 centre, 2 below) and column offset.
+    const int nr[9] = {1, 1, 1, 0, 2, 0, 0, 2, 2}, nc[9] = {0, -1, 1, 0, 0, -1, 1, -1, 1};
+    hn::Vec<decltype(di)> e[9];
+    hn::Mask<DF> sky[9];
+    V a[9];
+    for (int k = 0; k < 9; ++k) {
+        const int r = rows[nr[k]];
+        const std::size_t work = std::size_t(r - in.workY0) * std::size_t(in.workWidth) + std::size_t(i + nc[k]);
+        e[k] = hn::PromoteTo(di, hn::LoadU(d8, in.edges + work));
+        sky[k] = hn::IsInf(hn::LoadU(df, in.t0 + std::size_t(r) * std::size_t(in.width) + std::size_t(x + nc[k])));
+        a[k] = hn::LoadU(df, in.a + work);
+    }
+    enum { C, L, R, T, B, TL, TR, BL, BR };
+    enum { SL, SR, ST, SB };
+    const V three = hn::Set(df, 3.0f), zero = hn::Zero(df), one = hn::Set(df, 1.0f);
+    auto edgeOf = [&](int k, int side) {  // float((packed >> 2 side) & 3) / 3
+        return hn::Div(hn::ConvertTo(df, hn::And(hn::ShiftRightSame(e[k], 2 * side), hn::Set(di, 3))), three);
+    };
+    auto clamp01 = [&](V v) { return hn::Min(hn::Max(v, zero), one); };
+    V eL = hn::Mul(edgeOf(C, SL), edgeOf(L, SR)), eR = hn::Mul(edgeOf(C, SR), edgeOf(R, SL));
+    V eT = hn::Mul(edgeOf(C, ST), edgeOf(T, SB)), eB = hn::Mul(edgeOf(C, SB), edgeOf(B, ST));
+    const V leak = hn::Mul(
+        hn::Div(clamp01(hn::Sub(hn::Set(df, 1.5f), hn::Add(hn::Add(hn::Add(eL, eR), eT), eB))), hn::Set(df, 1.5f)),
+        hn::Set(df, 0.5f));
+    eL = clamp01(hn::Add(eL, leak)), eR = clamp01(hn::Add(eR, leak));
+    eT = clamp01(hn::Add(eT, leak)), eB = clamp01(hn::Add(eB, leak));
+    const V k425 = hn::Set(df, 0.425f);
+    V w[9];
+    w[C] = hn::Set(df, in.beta), w[L] = eL, w[R] = eR, w[T] = eT, w[B] = eB;
+    w[TL] = hn::Mul(k425, hn::Add(hn::Mul(eL, edgeOf(L, ST)), hn::Mul(eT, edgeOf(T, SL))));
+    w[TR] = hn::Mul(k425, hn::Add(hn::Mul(eT, edgeOf(T, SR)), hn::Mul(eR, edgeOf(R, ST))));
+    w[BL] = hn::Mul(k425, hn::Add(hn::Mul(eB, edgeOf(B, SL)), hn::Mul(eL, edgeOf(L, SB))));
+    w[BR] = hn::Mul(k425, hn::Add(hn::Mul(eR, edgeOf(R, SB)), hn::Mul(eB, edgeOf(B, SR))));
+    V sum = zero, wsum = zero;
+    for (int k = 0; k < 9; ++k) {
+        sum = hn::Add(sum, hn::IfThenZeroElse(sky[k], hn::Mul(w[k], a[k])));
+        wsum = hn::Add(wsum, hn::IfThenZeroElse(sky[k], w[k]));
+    }
+    return hn::IfThenElse(sky[C], one, hn::Div(sum, wsum));
+}
+
+inline int GtaoDenoiseRow(const GtaoDenoiseInput& in, int y, int x0, int x1, float* HWY_RESTRICT out) {
+    const hn::ScalableTag<float> df;
+    const int n = int(hn::Lanes(df));
+    int x = x0;
+    for (; x + n <= x1; x += n) hn::StoreU(DenoiseChunk(df, in, x, y), df, out + (x - x0));
+    return x;
+}
+
 inline int GtaoRowSimd(const GtaoSimdInput& in, int y, int x0, int x1, float* HWY_RESTRICT out) {
     const hn::ScalableTag<float> df;
     const int n = int(hn::Lanes(df));

@@ -108,22 +108,37 @@ void chainLevel(ImageView<const float> finer, ImageView<float> coarser, float rp
     });
 }
 
-// Section 5.1 edges and section 6 normals of the work region.
+// Section 5.1 edges and section 6 normals of the work region. With `simd` (and no given
+// normals), the interior of each row takes the vector code (gtao-inl.h: the same bits).
 void edgesAndNormals(const detail::GtaoSetup& s, Region work, std::vector<std::uint8_t>& edges,
-                     std::vector<Vec3>& normals, ImageView<const Vec3> given, const Exec& exec) {
+                     std::vector<Vec3>& normals, ImageView<const Vec3> given, const detail::GtaoSimdInput* simd,
+                     const Exec& exec) {
     edges.assign(std::size_t(work.width) * std::size_t(work.height), 0);
     normals.assign(edges.size(), Vec3{0, 0, 0});
     parallelRows(work.height, exec, [&](int r0, int r1) {
-        for (int j = r0; j < r1; ++j)
-            for (int i = 0; i < work.width; ++i) {
-                const int x = work.x0 + i, y = work.y0 + j;
-                const std::size_t k = std::size_t(j) * std::size_t(work.width) + std::size_t(i);
+        for (int j = r0; j < r1; ++j) {
+            const int y = work.y0 + j;
+            const std::size_t row = std::size_t(j) * std::size_t(work.width);
+            auto pixel = [&](int x) {
+                const std::size_t k = row + std::size_t(x - work.x0);
                 float e[4];
                 detail::gtaoEdges(s.t0, x, y, e);
                 edges[k] = detail::quantiseEdges(e);
-                if (std::isinf(s.t0(x, y))) continue;
+                if (std::isinf(s.t0(x, y))) return;
                 normals[k] = given.empty() ? detail::gtaoNormalFromDepth(s, x, y, e) : detail::unitOrZero(given(x, y));
+            };
+            const int end = work.x0 + work.width;
+            int x = work.x0;
+            if (simd && given.empty()) {  // vector chunks: 1 <= x, x + N <= W - 1
+                const int first = std::min(std::max(work.x0, 1), end), last = std::min(end, s.width - 1);
+                for (; x < first; ++x) pixel(x);
+                if (first < last) {
+                    const std::size_t k = row + std::size_t(first - work.x0);
+                    x = detail::gtaoEdgesNormalsRowSimd(*simd, y, first, last, &edges[k], &normals[k].x);
+                }
             }
+            for (; x < end; ++x) pixel(x);
+        }
     });
 }
 
@@ -170,7 +185,12 @@ ImageF gtaoImpl(ImageView<const float> depth, const Camera& camera, const GtaoPa
     const int passes = p.denoisePasses;
     auto grown = [&](int by) { return gtaoGrown(out, W, H, by); };
     const Region work = grown(passes);
-    edgesAndNormals(s, work, ws.edges, ws.normals, buffers.normals, exec);
+    {  // Edges and normals: the vector code for all but the scalar reference.
+        detail::GtaoSimdInput levelZero{};
+        levelZero.chain = ws.chain.data.data(), levelZero.width = W, levelZero.height = H;
+        levelZero.ax = s.pos.ax, levelZero.bx = s.pos.bx, levelZero.ay = s.pos.ay, levelZero.by = s.pos.by;
+        edgesAndNormals(s, work, ws.edges, ws.normals, buffers.normals, scalar ? nullptr : &levelZero, exec);
+    }
     const bool bent = buffers.bentNormals != nullptr;
     if (ws.a.width() != work.width || ws.a.height() != work.height) ws.a = ImageF(work.width, work.height);
     if (bent) ws.bentA = Image<Vec3>(work.width, work.height);
@@ -265,20 +285,39 @@ ImageF gtaoImpl(ImageView<const float> depth, const Camera& camera, const GtaoPa
             if (bent && (ws.bentB.width() != work.width || ws.bentB.height() != work.height))
                 ws.bentB = Image<Vec3>(work.width, work.height);
             detail::GtaoDenoise den{s.t0, work, ws.edges.data(), beta};
+            // The vector denoiser (gtao-inl.h: the same bits) for the interior of each row of
+            // the region where its neighbours are in the work region; not for the reference,
+            // nor with bent normals.
+            const detail::GtaoDenoiseInput vin{
+                ws.chain.data.data(), W, ws.edges.data(), ws.a.data(), work.x0, work.y0, work.width, work.height, beta};
+            const bool vector = !scalar && !bent;
             parallelRows(r.height, exec, [&](int r0, int r1) {
-                for (int j = r0; j < r1; ++j)
-                    for (int i = 0; i < r.width; ++i) {
-                        const int x = r.x0 + i, y = r.y0 + j;
-                        const int wi = x - work.x0, wj = y - work.y0;
-                        float a = den.pixel(ws.a.view(), x, y, bent ? ws.bentA.view() : ImageView<const Vec3>{},
-                                            bent ? &ws.bentB(wi, wj) : nullptr);
-                        if (last) {
-                            a = std::clamp(a, 0.0f, 1.0f);
-                        } else if (p.xegtaoStorage) {
-                            a = xegtaoStore(a);
+                for (int j = r0; j < r1; ++j) {
+                    const int y = r.y0 + j, wj = y - work.y0;
+                    auto finish = [&](float a) {
+                        if (last) return std::clamp(a, 0.0f, 1.0f);
+                        return p.xegtaoStorage ? xegtaoStore(a) : a;
+                    };
+                    auto pixel = [&](int x) {
+                        const int wi = x - work.x0;
+                        ws.b(wi, wj) =
+                            finish(den.pixel(ws.a.view(), x, y, bent ? ws.bentA.view() : ImageView<const Vec3>{},
+                                             bent ? &ws.bentB(wi, wj) : nullptr));
+                    };
+                    const int end = r.x0 + r.width;
+                    int x = r.x0;
+                    if (vector) {  // vector chunks: work.x0 + 1 <= x, x + N <= work's last column
+                        const int first = std::min(std::max(r.x0, work.x0 + 1), end);
+                        const int stop = std::min(end, work.x0 + work.width - 1);
+                        for (; x < first; ++x) pixel(x);
+                        if (first < stop) {
+                            float* row = &ws.b(first - work.x0, wj);
+                            x = detail::gtaoDenoiseRowSimd(vin, y, first, stop, row);
+                            for (float* v = row; v < row + (x - first); ++v) *v = finish(*v);
                         }
-                        ws.b(wi, wj) = a;
                     }
+                    for (; x < end; ++x) pixel(x);
+                }
             });
             std::swap(ws.a, ws.b);
             if (bent) std::swap(ws.bentA, ws.bentB);

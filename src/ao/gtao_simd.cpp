@@ -9,6 +9,14 @@
 #if HWY_ONCE
 namespace ssfx::ao::detail {
 HWY_EXPORT(GtaoRowSimd);
+HWY_EXPORT(GtaoEdgesNormalsRow);
+HWY_EXPORT(GtaoDenoiseRow);
+int gtaoDenoiseRowSimd(const GtaoDenoiseInput& in, int y, int x0, int x1, float* out) {
+    return HWY_DYNAMIC_DISPATCH(GtaoDenoiseRow)(in, y, x0, x1, out);
+}
+int gtaoEdgesNormalsRowSimd(const GtaoSimdInput& in, int y, int x0, int x1, std::uint8_t* edges, float* normals) {
+    return HWY_DYNAMIC_DISPATCH(GtaoEdgesNormalsRow)(in, y, x0, x1, edges, normals);
+}
 int gtaoRowSimd(const GtaoSimdInput& in, int y, int x0, int x1, float* out) {
     return HWY_DYNAMIC_DISPATCH(GtaoRowSimd)(in, y, x0, x1, out);
 }

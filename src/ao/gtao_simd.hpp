@@ -27,4 +27,26 @@ struct GtaoSimdInput {
 //! power 2 only), whole vectors; returns the first x it left to the scalar loop.
 int gtaoRowSimd(const GtaoSimdInput& in, int y, int x0, int x1, float* out);
 
+//! The edges (packed as quantiseEdges) and normals from depth (x y z interleaved) of pixels
+//! [x0, x1) of buffer row y, 1 <= x0, x1 <= width - 1, written from edges[0] and
+//! normals[0]; whole vectors, the same bits as gtaoEdges and gtaoNormalFromDepth (sky:
+//! (0, 0, 0)); returns the first x it left to the scalar loop. Reads chain level 0,
+//! width, height, ax, bx, ay, by.
+//! What the vector denoiser reads (GtaoDenoise without bent normals).
+struct GtaoDenoiseInput {
+    const float* t0;            //!< chain level 0 (t = -z; +infinity: sky), `width` per row
+    int width;                  //!< of the buffer
+    const std::uint8_t* edges;  //!< work region, row-major (quantiseEdges)
+    const float* a;             //!< the pass's input, work region, row-major
+    int workX0, workY0, workWidth, workHeight;
+    float beta;
+};
+
+//! GtaoDenoise::pixel for pixels [x0, x1) of buffer row y (workX0 + 1 <= x0, x1 <= workX0 +
+//! workWidth - 1) into out[0 ..), whole vectors, the same bits; returns the first x it left
+//! to the scalar loop.
+int gtaoDenoiseRowSimd(const GtaoDenoiseInput& in, int y, int x0, int x1, float* out);
+
+int gtaoEdgesNormalsRowSimd(const GtaoSimdInput& in, int y, int x0, int x1, std::uint8_t* edges, float* normals);
+
 }  // namespace ssfx::ao::detail
