@@ -2,7 +2,11 @@
 // GtaoMain::pixel in gtao_pixel.hpp, whose operations the lanes follow one for one): one lane
 // per pixel along a row, every sample gathered from the depth chain stored in one buffer.
 // What differs from the oracle: the cosines, sines, arc cosines, the base-2 logarithm and the
-// final power come from Highway's float approximations (a few ulps) instead of libm. That
+// final power come from Highway's float approximations (a few ulps) instead of libm, and with
+// the exact arc cosine sin(gamma), cos(gamma +- pi/2) and the integral's cos(2 h - gamma) come
+// from the cosines they are functions of (sqrt(1 - c^2), angle-sum identities); the falloff
+// multiplies by 1 / (f Re), the level takes log2 |s| as log2 |s|^2 / 2, and slice k's
+// direction is slice 0's turned by k pi / slices (angle sums). That
 // moves A by ulps and, in rare pixels, a rounded sample offset or its chain level by one;
 // the tests hold this path to the oracle within a stated bound (tests/ao/test_gtao.cpp).
 #if defined(SSFX_AO_GTAO_INL_H_) == defined(HWY_TARGET_TOGGLE)
@@ -14,6 +18,7 @@
 
 #include <hwy/contrib/math/math-inl.h>
 #include <hwy/highway.h>
+#include <cmath>
 
 #include "src/ao/gtao_simd.hpp"
 
@@ -56,7 +61,13 @@ struct GtaoLanes {
         const VI cpy = hn::Min(hn::Max(py, zero), hn::Set(di, in.height - 1));
         const VI tx = hn::GatherIndex(di, in.texelX, hn::Add(hn::Mul(m, hn::Set(di, in.width)), cpx));
         const VI ty = hn::GatherIndex(di, in.texelY, hn::Add(hn::Mul(m, hn::Set(di, in.height)), cpy));
-        const VI off = hn::GatherIndex(di, in.levelOffset, m), lw = hn::GatherIndex(di, in.levelWidth, m);
+        // The level's start and width: five values, selected (cheaper than two gathers).
+        VI off = hn::Set(di, in.levelOffset[0]), lw = hn::Set(di, in.levelWidth[0]);
+        for (int l = 1; l < 5; ++l) {
+            const auto is = hn::Eq(m, hn::Set(di, l));
+            off = hn::IfThenElse(is, hn::Set(di, in.levelOffset[l]), off);
+            lw = hn::IfThenElse(is, hn::Set(di, in.levelWidth[l]), lw);
+        }
         const V ts = hn::GatherIndex(df, in.chain, hn::Add(off, hn::Add(hn::Mul(ty, lw), tx)));
         auto valid = hn::Not(hn::IsInf(ts));  // sky: weight 0
         if (in.discard) valid = hn::And(valid, hn::RebindMask(df, inside));
@@ -71,7 +82,7 @@ struct GtaoLanes {
             const V tz = hn::Mul(hn::Set(df, in.toc1), dz);
             lenW = hn::Sqrt(hn::Add(hn::Add(hn::Mul(dx, dx), hn::Mul(dy, dy)), hn::Mul(tz, tz)));
         }
-        const V w = Clamp01(hn::Div(hn::Sub(hn::Set(df, in.re), lenW), hn::Set(df, in.fRe)));
+        const V w = Clamp01(hn::Mul(hn::Sub(hn::Set(df, in.re), lenW), hn::Set(df, 1.0f / in.fRe)));
         const V cw = hn::Add(start, hn::Mul(w, hn::Sub(cs, start)));
         V next = hn::Max(h, cw);
         if (in.thickness > 0.0f)  // the paper's thickness heuristic
@@ -81,7 +92,7 @@ struct GtaoLanes {
 
     //! A (before the denoiser) of the lanes' pixels x, x + 1, ... of row y.
     V Pixels(int x, int y) const {
-        const float kPi = 3.14159265358979323846f, kHalfPi = kPi / 2.0f;
+        const float kPi = 3.14159265358979323846f;
         const V one = hn::Set(df, 1.0f), zero = hn::Zero(df);
         const auto xi = hn::Add(hn::Set(di, x), hn::Iota(di, 0));
         const V t0 = hn::LoadU(df, in.chain + std::ptrdiff_t(y) * in.width + x);
@@ -110,9 +121,15 @@ struct GtaoLanes {
         const V ns = hn::GatherIndex(df, in.noiseS, noiseIdx), nt = hn::GatherIndex(df, in.noiseT, noiseIdx);
         const V slices = hn::Set(df, float(in.slices)), steps = hn::Set(df, float(in.steps));
         V sum = zero;
+        // Slice k's angle is slice 0's plus k pi / slices: its cosine and sine by the angle-sum
+        // identities from slice 0's (two transcendentals a pixel, not two a slice).
+        const V phi0 = hn::Mul(hn::Div(ns, slices), hn::Set(df, kPi));
+        const V cphi0 = hn::Cos(df, phi0), sphi0 = hn::Sin(df, phi0);
         for (int k = 0; k < in.slices; ++k) {
-            const V phi = hn::Mul(hn::Div(hn::Add(hn::Set(df, float(k)), ns), slices), hn::Set(df, kPi));
-            const V cphi = hn::Cos(df, phi), sphi = hn::Sin(df, phi);
+            const double turn = double(k) * 3.14159265358979323846 / double(in.slices);
+            const V ck = hn::Set(df, float(std::cos(turn))), sk = hn::Set(df, float(std::sin(turn)));
+            const V cphi = k == 0 ? cphi0 : hn::Sub(hn::Mul(cphi0, ck), hn::Mul(sphi0, sk));
+            const V sphi = k == 0 ? sphi0 : hn::Add(hn::Mul(sphi0, ck), hn::Mul(cphi0, sk));
             const V ox = hn::Mul(cphi, r), oy = hn::Mul(hn::Neg(sphi), r);  // screen y is down
             const V dv = Dot(cphi, sphi, zero, vx, vy, vz);
             const V dpx = hn::Sub(cphi, hn::Mul(dv, vx)), dpy = hn::Sub(sphi, hn::Mul(dv, vy)),
@@ -134,9 +151,13 @@ struct GtaoLanes {
             const V ac = Acos(cg);
             const V gamma = hn::IfThenElseZero(
                 lpos, hn::IfThenElse(hn::Gt(side, zero), ac, hn::IfThenElse(hn::Lt(side, zero), hn::Neg(ac), zero)));
-            const V sg = hn::Sin(df, gamma);
-            const V lowPos = hn::Cos(df, hn::Add(gamma, hn::Set(df, kHalfPi)));
-            const V lowNeg = hn::Cos(df, hn::Sub(gamma, hn::Set(df, kHalfPi)));
+            // sin(gamma); with an exact arc cosine (cos gamma = cg) as +-sqrt(1 - cg^2).
+            auto sine = [&](V c) { return hn::Sqrt(hn::Max(hn::Sub(one, hn::Mul(c, c)), zero)); };
+            const V sg = in.fastAcos ? hn::Sin(df, gamma)
+                                     : hn::Sub(hn::IfThenElseZero(hn::Gt(gamma, zero), sine(cg)),
+                                               hn::IfThenElseZero(hn::Lt(gamma, zero), sine(cg)));
+            // cos(gamma +- pi/2) = -+sin(gamma).
+            const V lowPos = hn::Neg(sg), lowNeg = sg;
             const V startPos = in.minusOne ? hn::Set(df, -1.0f) : lowPos;
             const V startNeg = in.minusOne ? hn::Set(df, -1.0f) : lowNeg;
             V hp = startPos, hneg = startNeg;
@@ -147,10 +168,12 @@ struct GtaoLanes {
                 const V s = hn::Div(hn::Add(hn::Set(df, float(j)), xj), steps);
                 const V u = hn::Add(hn::Mul(s, s), smin);  // sampleDistributionPower 2
                 const V sx = hn::Mul(u, ox), sy = hn::Mul(u, oy);
-                const V lod = hn::Min(hn::Max(hn::Sub(hn::Log2(df, hn::Sqrt(hn::Add(hn::Mul(sx, sx), hn::Mul(sy, sy)))),
-                                                      hn::Set(df, in.mipOffset)),
-                                              zero),
-                                      hn::Set(df, 5.0f));
+                // log2 |s| as half of log2 |s|^2 (no square root)
+                const V lod = hn::Min(
+                    hn::Max(hn::Sub(hn::Mul(hn::Set(df, 0.5f), hn::Log2(df, hn::Add(hn::Mul(sx, sx), hn::Mul(sy, sy)))),
+                                    hn::Set(df, in.mipOffset)),
+                            zero),
+                    hn::Set(df, 5.0f));
                 const auto m = hn::Min(hn::Set(di, 4), hn::ConvertTo(di, hn::Floor(hn::Add(lod, hn::Set(df, 0.5f)))));
                 const auto qx = hn::NearestInt(sx), qy = hn::NearestInt(sy);
                 const auto yi = hn::Set(di, y);
@@ -160,12 +183,17 @@ struct GtaoLanes {
             if (in.minusOne) hp = hn::Max(hp, lowPos), hneg = hn::Max(hneg, lowNeg);  // onto the hemisphere
             const V h1 = Acos(hp), h0 = hn::Neg(Acos(hneg));
             const V lp = in.lift ? hn::Add(hn::Mul(hn::Set(df, 0.95f), l), hn::Set(df, 0.05f)) : l;
-            auto iota = [&](V h) {
-                const V c2 = hn::Cos(df, hn::Sub(hn::Mul(hn::Set(df, 2.0f), h), gamma));
-                return hn::Mul(hn::Sub(hn::Add(cg, hn::Mul(hn::Mul(hn::Set(df, 2.0f), h), sg)), c2),
-                               hn::Set(df, 0.25f));
+            // The slice's integral, (cg + 2 h sin(gamma) - cos(2 h - gamma)) / 4 per side. With an
+            // exact arc cosine, cos h and sin h are the horizon's cosine c and +-sqrt(1 - c^2),
+            // so cos(2 h - gamma) = (2 c^2 - 1) cg + 2 c sin(h) sin(gamma) without a cosine.
+            const V two = hn::Set(df, 2.0f);
+            auto iota = [&](V h, V c, V sinH) {
+                const V c2 = in.fastAcos ? hn::Cos(df, hn::Sub(hn::Mul(two, h), gamma))
+                                         : hn::Add(hn::Mul(hn::Sub(hn::Mul(two, hn::Mul(c, c)), one), cg),
+                                                   hn::Mul(hn::Mul(two, hn::Mul(c, sinH)), sg));
+                return hn::Mul(hn::Sub(hn::Add(cg, hn::Mul(hn::Mul(two, h), sg)), c2), hn::Set(df, 0.25f));
             };
-            sum = hn::Add(sum, hn::Mul(lp, hn::Add(iota(h0), iota(h1))));
+            sum = hn::Add(sum, hn::Mul(lp, hn::Add(iota(h0, hneg, hn::Neg(sine(hneg))), iota(h1, hp, sine(hp)))));
         }
         V a = hn::Max(zero, hn::Div(hn::Add(v0, sum), slices));
         if (in.finalPower != 1.0f)  // a^p = exp(p ln a), 0 for a = 0
