@@ -46,20 +46,29 @@ ImageF absoluteError(const ImageRgbF& a, const ImageRgbF& b) {
 
 void validate(const ShadingParams& p) { validateParams(kShadingParams, &p, "shading"); }
 
-SampleShader::SampleShader(const scene::Scene& scene, const scene::GBuffer& g, const ShadingParams& params)
-    : scene_(scene), g_(g), p_(params) {
-    validate(params);
+std::vector<CameraLight> cameraLights(const std::vector<scene::Light>& sceneLights, const glm::dmat4& v) {
+    std::vector<CameraLight> lights;
+    for (const auto& l : sceneLights) {
+        if (l.type == scene::Light::Type::Directional)
+            lights.push_back({false, glm::normalize(-glm::vec3(glm::dmat3(v) * glm::dvec3(l.vector))), l.color});
+        else
+            lights.push_back({true, glm::vec3(v * glm::dvec4(glm::dvec3(l.vector), 1.0)), l.color});
+    }
+    return lights;
+}
+
+void validateGBuffer(const scene::GBuffer& g, std::size_t materials, std::size_t layers) {
     const std::size_t n = std::size_t(g.sampleWidth()) * std::size_t(g.sampleHeight());
     if (g.width < 1 || g.height < 1 || g.m < 1 || g.depth.pixelCount() != std::int64_t(n) || g.normal.size() != n ||
         g.uv.size() != n || g.uvGrad.size() != n || g.material.size() != n || g.layer.size() != n)
         throw Error("deferred: the G-buffer's planes do not match its size");
     for (std::size_t i = 0; i < n; ++i) {
-        if (g.material[i] != scene::GBuffer::kNoMaterial && g.material[i] >= scene.materials.size())
-            throw Error(fmt::format("deferred: G-buffer sample {} names material {} of {}", i, g.material[i],
-                                    scene.materials.size()));
-        if (g.layer[i] >= int(scene.textures.layers.size()))
-            throw Error(fmt::format("deferred: G-buffer sample {} names texture layer {} of {}", i, g.layer[i],
-                                    scene.textures.layers.size()));
+        if (g.material[i] != scene::GBuffer::kNoMaterial && g.material[i] >= materials)
+            throw Error(
+                fmt::format("deferred: G-buffer sample {} names material {} of {}", i, g.material[i], materials));
+        if (g.layer[i] >= std::int64_t(layers))
+            throw Error(
+                fmt::format("deferred: G-buffer sample {} names texture layer {} of {}", i, g.layer[i], layers));
         // Values a caller's (or a file's) G-buffer may carry: named by sample, never shaded.
         const int sx = int(i % std::size_t(g.sampleWidth())), sy = int(i / std::size_t(g.sampleWidth()));
         const float d = g.depth.data()[i];
@@ -73,14 +82,14 @@ SampleShader::SampleShader(const scene::Scene& scene, const scene::GBuffer& g, c
             throw Error(
                 fmt::format("deferred: G-buffer sample ({}, {}) has a non-finite normal, uv or uv gradient", sx, sy));
     }
+}
+
+SampleShader::SampleShader(const scene::Scene& scene, const scene::GBuffer& g, const ShadingParams& params)
+    : scene_(scene), g_(g), p_(params) {
+    validate(params);
+    validateGBuffer(g, scene.materials.size(), scene.textures.layers.size());
     proj_ = ssfx::projection(g.camera.camera, g.sampleWidth(), g.sampleHeight());
-    const glm::dmat4& v = g.camera.view;
-    for (const auto& l : scene.lights) {
-        if (l.type == scene::Light::Type::Directional)
-            lights_.push_back({false, glm::normalize(-glm::vec3(glm::dmat3(v) * glm::dvec3(l.vector))), l.color});
-        else
-            lights_.push_back({true, glm::vec3(v * glm::dvec4(glm::dvec3(l.vector), 1.0)), l.color});
-    }
+    lights_ = cameraLights(scene.lights, g.camera.view);
 }
 
 float SampleShader::linearDepth(int sx, int sy) const {

@@ -61,6 +61,22 @@ inline constexpr auto kShadingParams = shadingRows<>();
 //! Throws ssfx::Error naming the parameter when one is out of range.
 void validate(const ShadingParams& p);
 
+//! A light as the shading sees it: in the G-buffer's camera space.
+struct CameraLight {
+    bool point;
+    glm::vec3 vector;  //!< a directional light's unit direction towards it, or a point light's position
+    glm::vec3 color;
+};
+//! The scene's lights in the camera space of `view` (world -> camera), computed in double
+//! and rounded once (the CPU's and the GPU pass's lights: deferred_pass.cpp).
+std::vector<CameraLight> cameraLights(const std::vector<scene::Light>& lights, const glm::dmat4& view);
+
+//! Throws ssfx::Error when the G-buffer's planes do not match its size, or a sample names a
+//! material or texture layer beyond the scene's counts, or has a depth outside [0, 1] or a
+//! non-finite normal, uv or uv gradient (named by sample). What SampleShader and the GPU
+//! pass check.
+void validateGBuffer(const scene::GBuffer& gbuffer, std::size_t materials, std::size_t layers);
+
 class SampleShader {
 public:
     //! Throws ssfx::Error when the G-buffer is empty or inconsistent, or the params are bad.
@@ -78,15 +94,11 @@ public:
     float linearDepth(int sx, int sy) const;
 
 private:
-    struct LightC {
-        bool point;
-        glm::vec3 vector, color;  // camera space: direction towards the light, or position
-    };
     const scene::Scene& scene_;
     const scene::GBuffer& g_;
     ShadingParams p_;
     Projection proj_;
-    std::vector<LightC> lights_;
+    std::vector<CameraLight> lights_;
 };
 
 }  // namespace ssfx::deferred
