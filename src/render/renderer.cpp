@@ -169,46 +169,6 @@ struct Renderer::Impl {
         return pipelines.emplace(key, vk::raii::Pipeline(ctx.device, nullptr, info)).first->second;
     }
 
-    // Uploads the scene's texture array (a 1x1 white layer when it has none).
-    vkx::Image uploadTextures(const scene::TextureArray& t) {
-        scene::TextureArray white;
-        white.size = 1;
-        white.layers.push_back({ImageRgba8(1, 1, Rgba8{255, 255, 255, 255})});
-        const scene::TextureArray& tex = t.layers.empty() ? white : t;
-        const auto layers = std::uint32_t(tex.layers.size()), levels = std::uint32_t(tex.levelCount());
-        vk::DeviceSize total = 0;
-        for (std::uint32_t l = 0; l < levels; ++l) total += vk::DeviceSize(tex.layers[0][l].pixelCount()) * 4 * layers;
-        vkx::Buffer staging = ctx.createBuffer(total, vk::BufferUsageFlagBits::eTransferSrc, true);
-        std::vector<vk::BufferImageCopy> regions;
-        vk::DeviceSize offset = 0;
-        for (std::uint32_t l = 0; l < levels; ++l) {
-            const auto& first = tex.layers[0][l];
-            regions.emplace_back(
-                offset, 0, 0, vk::ImageSubresourceLayers(vk::ImageAspectFlagBits::eColor, l, 0, layers),
-                vk::Offset3D(0, 0, 0), vk::Extent3D(std::uint32_t(first.width()), std::uint32_t(first.height()), 1));
-            for (std::uint32_t k = 0; k < layers; ++k) {
-                const auto& img = tex.layers[k][l];
-                std::memcpy(static_cast<std::uint8_t*>(staging.mapped) + offset, img.data(),
-                            std::size_t(img.pixelCount()) * 4);
-                offset += vk::DeviceSize(img.pixelCount()) * 4;
-            }
-        }
-        const auto size = std::uint32_t(tex.layers[0][0].width());
-        vkx::Image image = ctx.createImage(vk::Format::eR8G8B8A8Unorm, size, size,
-                                           vk::ImageUsageFlagBits::eSampled | vk::ImageUsageFlagBits::eTransferDst,
-                                           vk::ImageAspectFlagBits::eColor, layers, levels);
-        ctx.submit([&](const vk::raii::CommandBuffer& cmd) {
-            vkx::transition(cmd, image, vk::ImageLayout::eUndefined, vk::ImageLayout::eTransferDstOptimal,
-                            vk::PipelineStageFlagBits::eTopOfPipe, {}, vk::PipelineStageFlagBits::eTransfer,
-                            vk::AccessFlagBits::eTransferWrite);
-            cmd.copyBufferToImage(*staging.buffer, *image.image, vk::ImageLayout::eTransferDstOptimal, regions);
-            vkx::transition(cmd, image, vk::ImageLayout::eTransferDstOptimal, vk::ImageLayout::eShaderReadOnlyOptimal,
-                            vk::PipelineStageFlagBits::eTransfer, vk::AccessFlagBits::eTransferWrite,
-                            vk::PipelineStageFlagBits::eFragmentShader, vk::AccessFlagBits::eShaderRead);
-        });
-        return image;
-    }
-
     struct Result {
         std::vector<vkx::Buffer> colors;
         vkx::Buffer depth;
@@ -247,7 +207,7 @@ struct Renderer::Impl {
         const FrameData frame{glm::mat4(cam.view), glm::vec4(scene.ambient, 0.0f),
                               glm::vec4(derivativeScale, lightCount, 0, 0), glm::vec4(glm::vec3(eye), 1.0f)};
         vkx::Buffer frameBuffer = ctx.uploadBuffer(&frame, sizeof(frame), vk::BufferUsageFlagBits::eUniformBuffer);
-        vkx::Image textures = uploadTextures(scene.textures);
+        vkx::Image textures = uploadTextureArray(ctx, scene.textures);
 
         vkx::DescriptorSets sets(ctx, setLayout, kBindings);
         sets.bind(0, 0, frameBuffer);
@@ -355,6 +315,53 @@ struct Renderer::Impl {
 };
 
 using vkx::guarded;
+
+// A scene's texture array as one sampled image (renderer.hpp).
+vkx::Image uploadTextureArray(vkx::Context& ctx, const scene::TextureArray& t) {
+    return guarded("uploading the texture array", [&] {
+        scene::TextureArray white;
+        white.size = 1;
+        white.layers.push_back({ImageRgba8(1, 1, Rgba8{255, 255, 255, 255})});
+        const scene::TextureArray& tex = t.layers.empty() ? white : t;
+        const auto layers = std::uint32_t(tex.layers.size()), levels = std::uint32_t(tex.levelCount());
+        vk::DeviceSize total = 0;
+        for (std::uint32_t l = 0; l < levels; ++l) total += vk::DeviceSize(tex.layers[0][l].pixelCount()) * 4 * layers;
+        vkx::Buffer staging = ctx.createBuffer(total, vk::BufferUsageFlagBits::eTransferSrc, true);
+        std::vector<vk::BufferImageCopy> regions;
+        vk::DeviceSize offset = 0;
+        for (std::uint32_t l = 0; l < levels; ++l) {
+            const auto& first = tex.layers[0][l];
+            regions.emplace_back(
+                offset, 0, 0, vk::ImageSubresourceLayers(vk::ImageAspectFlagBits::eColor, l, 0, layers),
+                vk::Offset3D(0, 0, 0), vk::Extent3D(std::uint32_t(first.width()), std::uint32_t(first.height()), 1));
+            for (std::uint32_t k = 0; k < layers; ++k) {
+                const auto& img = tex.layers[k][l];
+                std::memcpy(static_cast<std::uint8_t*>(staging.mapped) + offset, img.data(),
+                            std::size_t(img.pixelCount()) * 4);
+                offset += vk::DeviceSize(img.pixelCount()) * 4;
+            }
+        }
+        const auto size = std::uint32_t(tex.layers[0][0].width());
+        vkx::Image image = ctx.createImage(vk::Format::eR8G8B8A8Unorm, size, size,
+                                           vk::ImageUsageFlagBits::eSampled | vk::ImageUsageFlagBits::eTransferDst,
+                                           vk::ImageAspectFlagBits::eColor, layers, levels);
+        // Read by the renderer's fragment shaders and the GPU shading's compute passes (a
+        // compute-only queue has no fragment stage).
+        const vk::PipelineStageFlags readers =
+            ctx.graphics ? vk::PipelineStageFlagBits::eFragmentShader | vk::PipelineStageFlagBits::eComputeShader
+                         : vk::PipelineStageFlags(vk::PipelineStageFlagBits::eComputeShader);
+        ctx.submit([&](const vk::raii::CommandBuffer& cmd) {
+            vkx::transition(cmd, image, vk::ImageLayout::eUndefined, vk::ImageLayout::eTransferDstOptimal,
+                            vk::PipelineStageFlagBits::eTopOfPipe, {}, vk::PipelineStageFlagBits::eTransfer,
+                            vk::AccessFlagBits::eTransferWrite);
+            cmd.copyBufferToImage(*staging.buffer, *image.image, vk::ImageLayout::eTransferDstOptimal, regions);
+            vkx::transition(cmd, image, vk::ImageLayout::eTransferDstOptimal, vk::ImageLayout::eShaderReadOnlyOptimal,
+                            vk::PipelineStageFlagBits::eTransfer, vk::AccessFlagBits::eTransferWrite, readers,
+                            vk::AccessFlagBits::eShaderRead);
+        });
+        return image;
+    });
+}
 
 Renderer::Renderer(const RendererOptions& options)
     : Renderer(vkx::Context::create(vkx::ContextOptions{options.device, options.validation, true})) {}

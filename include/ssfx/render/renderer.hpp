@@ -17,6 +17,7 @@
 #include "ssfx/scene/gbuffer.hpp"
 #include "ssfx/scene/scene.hpp"
 #include "ssfx/vk/device.hpp"
+#include "ssfx/vk/resources.hpp"
 
 #include <vulkan/vulkan_raii.hpp>
 
@@ -93,6 +94,12 @@ private:
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };
+
+//! A scene's texture array as one image on ctx's device: R8G8B8A8_UNORM, one layer per texture
+//! with its mip chain (a 1x1 white layer when the scene has none), SAMPLED, in layout
+//! SHADER_READ_ONLY_OPTIMAL (its view: 2-D array). What the renderer's and the GPU shading's
+//! samplers read.
+vkx::Image uploadTextureArray(vkx::Context& ctx, const scene::TextureArray& textures);
 
 //! The anti-aliasing evaluation's render set (ssfx/eval/quality.hpp) of one view: NAME.png at
 //! width x height and NAMEx2.png, NAMEx4.png, NAMEx8.png at 2, 4 and 8 times that size, all
