@@ -22,6 +22,7 @@ declare -A allowed=(
   [render]="core io ao scene vk render"
   [deferred]="core io ao scene deferred"
   [gpu]="core aa ao vk gpu"
+  [gpu_deferred]="core io aa ao scene vk render deferred gpu"
   [eval]="core io aa ao scene vk render gpu deferred eval"
 )
 # module -> third-party headers it must not include (a regex on the include)
@@ -35,14 +36,19 @@ declare -A forbidden=(
   [render]="cairo|assimp|embree"
   [deferred]="cairo|vulkan|assimp|embree"
   [gpu]="cairo|assimp|embree|glm/|stb/"
+  [gpu_deferred]="cairo|assimp|embree|stb/"
   [eval]="vulkan/"
 )
+# The gpu folder's deferred family is its own target (ssfx_gpu_deferred, on gpu, deferred and
+# render) so that ssfx_gpu stays free of scenes: these files are module gpu_deferred.
+gpu_deferred_files=" $src/src/gpu/deferred_pass.cpp $src/include/ssfx/gpu/deferred.hpp "
 checked=0
 for m in "${!allowed[@]}"; do
   for dir in "$src/src/$m" "$src/include/ssfx/$m"; do
     [ -d "$dir" ] || continue
     while IFS= read -r line; do
       file=${line%%:*}
+      [[ $m == gpu && $gpu_deferred_files == *" $file "* ]] && continue
       inc=$(sed -E 's/.*#include *[<"]([^>"]+)[>"].*/\1/' <<<"$line")
       checked=$((checked + 1))
       if [[ $inc =~ ^ssfx/([a-z_]+)/ ]]; then
@@ -59,6 +65,23 @@ for m in "${!allowed[@]}"; do
     done < <(grep -rHE '^#include' "$dir" --include=*.cpp --include=*.hpp --include=*.h)
   done
 done
+for file in $gpu_deferred_files; do
+  [ -f "$file" ] || bad "$file: listed as module gpu_deferred but absent"
+done
+# shellcheck disable=SC2086
+while IFS= read -r line; do
+  file=${line%%:*}
+  inc=$(sed -E 's/.*#include *[<"]([^>"]+)[>"].*/\1/' <<<"$line")
+  checked=$((checked + 1))
+  if [[ $inc =~ ^ssfx/([a-z_]+)/ ]]; then
+    [[ " ${allowed[gpu_deferred]} " == *" ${BASH_REMATCH[1]} "* ]] || bad "$file (gpu_deferred) includes $inc"
+  elif [[ $inc =~ ^src/([a-z_]+)/ ]]; then
+    [ "${BASH_REMATCH[1]}" = gpu ] || bad "$file (gpu_deferred) includes another module's private header $inc"
+  elif grep -Eq "^(${forbidden[gpu_deferred]})" <<<"$inc"; then
+    bad "$file (gpu_deferred) includes $inc"
+  fi
+done < <(grep -HE '^#include' $gpu_deferred_files)
+
 # The registries live in their families' modules (ssfx/aa/registry.hpp, ssfx/ao/registry.hpp,
 # ssfx/deferred/registry.hpp); nothing is left at the top of the tree.
 for file in "$src/src/registry.cpp" "$src/include/ssfx/registry.hpp"; do
@@ -83,6 +106,7 @@ declare -A nolink=(
   [ssfx_vk]="cairo|assimp|embree|ssfx_scene|ssfx_render|ssfx_eval|ssfx_deferred"
   [ssfx_render]="cairo|ssfx_eval|ssfx_deferred"
   [ssfx_gpu]="cairo|assimp|embree|ssfx_scene|ssfx_render|ssfx_eval|ssfx_deferred"
+  [ssfx_gpu_deferred]="cairo|ssfx_eval"
 )
 while IFS= read -r line; do
   target=${line%%:*}
