@@ -13,21 +13,76 @@
 #include "ssfx/eval/plot.hpp"
 #include "ssfx/io/png.hpp"
 #include "ssfx/render/renderer.hpp"
+#include "ssfx/vk/context.hpp"
+#ifdef SSFX_HAVE_GPU
+#include "ssfx/gpu/deferred.hpp"
+#endif
 
 namespace ssfx::cli {
 
 namespace {
 
 struct DeferredOptions {
-    std::string scene, view, size = "1024x768", out, device;
+    std::string scene, view, size = "1024x768", out, device, backend = "cpu", lookup;
     std::vector<std::string> params;
     int m = 4, stall = 0, threads = 0;
     bool bruteForce = false;
 };
 
+#ifdef SSFX_HAVE_GPU
+// The method (and brute force) on the GPU, on a compute context of its own: lavapipe's
+// compute timestamps do not cover the dispatches once the renderer has drawn on the same
+// context (docs/gpu.md, "Adaptive shading").
+struct GpuRun {
+    deferred::DeferredResult adaptive;
+    std::optional<deferred::DeferredResult> brute;
+    std::string device, summary;
+};
+GpuRun runOnGpu(const DeferredOptions& o, const scene::Scene& scene, const scene::GBuffer& g,
+                const deferred::AdaptiveParams& p) {
+    vkx::ContextOptions co;
+    co.device = o.device;
+    auto ctx = vkx::Context::create(co);
+    gpu::AdaptiveShading shading(ctx, scene, gpu::parseSampling(o.lookup.empty() ? "model" : o.lookup));
+    GpuRun r;
+    r.device = ctx->info.name;
+    // Untimed warm-up of each pipeline (without the stall): lavapipe compiles a shader's
+    // variant on its first dispatch, inside the timestamps.
+    deferred::AdaptiveParams warm = p;
+    warm.shading.stall = 0;
+    for (const bool tiled : {false, true}) {
+        warm.tiled = tiled;
+        shading.adaptive(g, warm);
+    }
+    if (o.bruteForce) shading.bruteForce(g, warm.shading);
+    const gpu::GpuDeferredResult a = shading.adaptive(g, p);
+    deferred::AdaptiveParams other = p;
+    other.tiled = !p.tiled;
+    const gpu::GpuDeferredResult t = shading.adaptive(g, other);
+    const gpu::GpuDeferredResult& perPixel = p.tiled ? t : a;
+    const gpu::GpuDeferredResult& tiled = p.tiled ? a : t;
+    r.summary = fmt::format(
+        "; rest pass: per pixel {:.2f} ms, {:.1f} % of lanes idle; tiled {:.2f} ms, {:.1f} % idle "
+        "(subgroup {})",
+        perPixel.restMs, 100.0 * perPixel.idleLaneShare(), tiled.restMs, 100.0 * tiled.idleLaneShare(), a.subgroupSize);
+    r.adaptive = a;
+    if (o.bruteForce) {
+        const gpu::GpuDeferredResult b = shading.bruteForce(g, p.shading);
+        r.summary += fmt::format("; brute force {:.1f} % of lanes idle", 100.0 * b.idleLaneShare());
+        r.brute = b;
+    }
+    return r;
+}
+#endif
+
 void run(const DeferredOptions& o) {
     if (o.scene.empty()) throw Error("no scene given (--scene atrium | cornell | FILE.json | MODEL)");
     if (o.out.empty()) throw Error("no output folder given (--out DIR)");
+    const bool vulkan = o.backend == "vulkan";
+    if (!o.lookup.empty() && !vulkan) throw Error("--lookup goes with --backend vulkan (the CPU runs the model)");
+#ifndef SSFX_HAVE_GPU
+    if (vulkan) throw Error("--backend vulkan: this ssfx was built without the GPU backend");
+#endif
     const auto [w, h] = parseSize(o.size, "--size", 8192);
     const deferred::DeferredMethodInfo& method = deferred::deferredMethodById("adaptive");
     deferred::DeferredParams params = method.defaults();
@@ -43,9 +98,22 @@ void run(const DeferredOptions& o) {
     render::Renderer renderer({o.device, false});
     const scene::GBuffer g = renderer.renderGBuffer(scene, view, w, h, o.m);
     const Exec exec{o.threads};
-    const auto a = deferred::adaptiveSupersampling(scene, g, p, exec);
+    deferred::DeferredResult a;
     std::optional<deferred::DeferredResult> ref;  // brute force
-    if (o.bruteForce) ref = deferred::bruteForceSupersampling(scene, g, p.shading, exec);
+    std::string where = renderer.device().name, gpuSummary;
+    if (vulkan) {
+#ifdef SSFX_HAVE_GPU
+        GpuRun r = runOnGpu(o, scene, g, p);
+        a = std::move(r.adaptive);
+        ref = std::move(r.brute);
+        where = fmt::format("{} (vulkan, lookup={}; GPU ms)", r.device, o.lookup.empty() ? "model" : o.lookup);
+        gpuSummary = r.summary;
+#endif
+    } else {
+        a = deferred::adaptiveSupersampling(scene, g, p, exec);
+        if (o.bruteForce) ref = deferred::bruteForceSupersampling(scene, g, p.shading, exec);
+        where += "; cpu";
+    }
 
     namespace fs = std::filesystem;
     io::makeDirectories(o.out);
@@ -60,19 +128,18 @@ void run(const DeferredOptions& o) {
     io::writePng((dir / "k_normal.png").string(), eval::heatMap(a.kNormal.view(), 0.0f, n).view());
     io::writePng((dir / "k_shading.png").string(), eval::heatMap(a.kShading.view(), 0.0f, n).view());
     std::string summary = fmt::format(
-        "{} {}x{} m={} on {}: G-buffer {:.1f} ms (GPU); adaptive {:.1f} ms (first {:.1f}, evaluate {:.1f}, rest "
-        "{:.1f}), {:.2f} % of the samples",
-        scene.name, w, h, o.m, renderer.device().name, g.gpuMs, a.totalMs(), a.firstMs, a.evaluateMs, a.restMs,
-        a.shadedPercent());
+        "{} {}x{} m={} on {}: G-buffer {:.1f} ms (GPU); adaptive {:.2f} ms (first {:.2f}, evaluate {:.2f}, rest "
+        "{:.2f}), {:.2f} % of the samples",
+        scene.name, w, h, o.m, where, g.gpuMs, a.totalMs(), a.firstMs, a.evaluateMs, a.restMs, a.shadedPercent());
     if (ref) {
         io::writePng((dir / "brute_force.png").string(), deferred::toRgba8(ref->image).view());
         io::writePng((dir / "error.png").string(),
                      eval::heatMap(deferred::absoluteError(a.image, ref->image).view(), 0.0f, 0.05f).view());
         const double mse = deferred::mse(a.image, ref->image);
-        summary += fmt::format("; brute force {:.1f} ms; MSE {:.3g} (x1e-5: {:.2f}), PSNR {:.2f} dB", ref->restMs, mse,
+        summary += fmt::format("; brute force {:.2f} ms; MSE {:.3g} (x1e-5: {:.2f}), PSNR {:.2f} dB", ref->restMs, mse,
                                mse * 1e5, eval::psnrFromMse(mse));
     }
-    printResult(summary + fmt::format(" -> {}\n", o.out));
+    printResult(summary + gpuSummary + fmt::format(" -> {}\n", o.out));
 }
 
 }  // namespace
@@ -99,11 +166,21 @@ void addDeferredCommand(CLI::App& app) {
     cmd->add_option("--out", o->out,
                     "Output folder: image.png, samples.png (k heat map), k_depth/k_normal/k_shading.png "
                     "(each metric's k), with --brute-force brute_force.png, error.png (|error| 0..0.05)");
+    cmd->add_option("--backend", o->backend,
+                    "cpu (default) or vulkan: shade on the GPU (the G-buffer read back and uploaded; times from GPU "
+                    "timestamps after an untimed warm-up; also runs the other rest-pass variant and prints both "
+                    "variants' idle-lane shares)")
+        ->check(CLI::IsMember({"cpu", "vulkan"}));
+    cmd->add_option("--lookup", o->lookup,
+                    "With --backend vulkan: model (default: the CPU's sampler model in the shader) or hardware (the "
+                    "device's textureGrad with anisotropic filtering)")
+        ->check(CLI::IsMember({"model", "hardware"}));
     cmd->add_option("--device", o->device, "Vulkan device index or part of its name");
     cmd->add_option("--threads", o->threads, "Worker threads (0 = all)")->check(CLI::Range(0, 1024));
     cmd->footer(
         "docs/methods/adaptive.md. Example:\n"
-        "  ssfx deferred --scene atrium --view nave --size 1024x768 --ss 4 --brute-force --out out/deferred");
+        "  ssfx deferred --scene atrium --view nave --size 1024x768 --ss 4 --brute-force --out out/deferred\n"
+        "  ssfx deferred --backend vulkan --lookup hardware --scene atrium --ss 4 --brute-force --out out/gpu");
     cmd->callback([o] {
         io::OutputSet outputs;  // the images, the heat maps and the numbers: all or none
         run(*o);
