@@ -305,6 +305,11 @@ void addReport(CLI::App& eval) {
                     "and per-pass times from GPU timestamps) beside the CPU columns")
         ->check(CLI::IsMember({"cpu", "vulkan"}));
     cmd->add_option("--ao-device", o->aoDevice, "With --ao-backend vulkan: a device index or part of its name");
+    auto deferredBackend = std::make_shared<std::string>("cpu");
+    cmd->add_option("--deferred-backend", *deferredBackend,
+                    "cpu (default) or vulkan: adaptive supersampling's Table 1 also on the GPU passes (GPU "
+                    "timestamps, idle lanes, distance to the CPU's image) in a table beside the CPU's")
+        ->check(CLI::IsMember({"cpu", "vulkan"}));
     auto scenes = std::make_shared<std::vector<std::string>>(kDefaultAoScenes);
     cmd->add_option("--ao-scene", *scenes,
                     "Rendered scenes for the AO accuracy table, SCENE[:VIEW] (repeatable; "
@@ -314,7 +319,9 @@ void addReport(CLI::App& eval) {
     auto noRender = std::make_shared<bool>(false);
     cmd->add_flag("--no-render", *noRender,
                   "Leave out what needs the Vulkan renderer: the atrium in the quality table, adaptive supersampling");
-    cmd->callback([o, threads, scenes, noRender] {
+    cmd->callback([o, threads, scenes, noRender, deferredBackend] {
+        if (*deferredBackend == "vulkan" && *noRender)
+            throw Error("--deferred-backend with --no-render: the experiment needs the renderer");
         if (!o->aoDevice.empty() && o->aoBackend != "vulkan") throw Error("--ao-device goes with --ao-backend vulkan");
         if (o->aoBackend == "vulkan" && !o->ambientObscurance) throw Error("--ao-backend with --no-ao: nothing to run");
         ProgressLine line("eval", true);
@@ -346,9 +353,11 @@ void addReport(CLI::App& eval) {
 #ifdef SSFX_HAVE_RENDER
         // Adaptive supersampling's Table 1 at 512x384 (the paper's 1024x768: ssfx eval deferred).
         if (!*noRender)
-            o->deferredExperiment = [quick = o->quick, threads = *threads](const std::string& dir) {
+            o->deferredExperiment = [quick = o->quick, threads = *threads,
+                                     backend = *deferredBackend](const std::string& dir) {
                 eval::DeferredExperimentOptions d;
                 d.outDir = dir;
+                d.backend = backend;
                 d.quick = quick;
                 d.width = 512;
                 d.height = 384;
@@ -381,9 +390,18 @@ void addDeferred(CLI::App& eval) {
         ->check(CLI::Range(0, 10000000));
     cmd->add_option("--reps", o->repetitions, "Timed runs per row, median (default 3)")->check(CLI::Range(1, 1000));
     cmd->add_flag("--quick", o->quick, "256x192, one run (tests)");
-    cmd->add_option("--device", o->device, "Vulkan device for the G-buffer");
+    cmd->add_option("--device", o->device, "Vulkan device for the G-buffer (and the GPU passes)");
+    cmd->add_option("--backend", o->backend,
+                    "cpu (default) or vulkan: also the GPU passes on the same G-buffers, in a table of their own "
+                    "(GPU timestamps, idle lanes, distance to the CPU's image)")
+        ->check(CLI::IsMember({"cpu", "vulkan"}));
+    auto lookup = cmd->add_option("--lookup", o->lookup,
+                                  "With --backend vulkan: model (default, the CPU's sampler model) or hardware (the "
+                                  "device's anisotropic sampler)")
+                      ->check(CLI::IsMember({"model", "hardware"}));
     cmd->add_option("--threads", *threads, "Worker threads (0 = all)")->check(CLI::Range(0, 1024));
-    cmd->callback([o, threads, size] {
+    cmd->callback([o, threads, size, lookup] {
+        if (lookup->count() && o->backend != "vulkan") throw Error("--lookup goes with --backend vulkan");
         std::tie(o->width, o->height) = parseSize(*size, "--size", 8192);
         o->exec = Exec{*threads};
         ProgressLine line("eval", true);

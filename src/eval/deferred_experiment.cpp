@@ -16,6 +16,9 @@
 #include "ssfx/eval/timing.hpp"
 #include "ssfx/io/png.hpp"
 #include "ssfx/render/renderer.hpp"
+#ifdef SSFX_HAVE_GPU
+#include "ssfx/gpu/deferred.hpp"
+#endif
 
 namespace ssfx::eval {
 
@@ -29,6 +32,21 @@ ImageF toFloat(const Image<std::uint8_t>& k) {
     ImageF f(k.width(), k.height());
     for (std::size_t i = 0; i < k.pixels().size(); ++i) f.data()[i] = float(k.pixels()[i]);
     return f;
+}
+
+double maxAbsoluteError(const deferred::ImageRgbF& a, const deferred::ImageRgbF& b) {
+    const ImageF e = deferred::absoluteError(a, b);
+    return double(*std::max_element(e.pixels().begin(), e.pixels().end()));
+}
+
+std::size_t countDifferent(const Image<std::uint8_t>& a, const Image<std::uint8_t>& b) {
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < a.pixels().size(); ++i) n += a.pixels()[i] != b.pixels()[i];
+    return n;
+}
+
+nlohmann::ordered_json number(double v) {
+    return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json();
 }
 
 }  // namespace
@@ -53,11 +71,37 @@ Section runDeferredExperiment(const DeferredExperimentOptions& o) {
     deferred::AdaptiveParams tiledParams = o.params, tiledStalledParams = stalledParams;
     tiledParams.tiled = tiledStalledParams.tiled = true;
 
+    if (o.backend != "cpu" && o.backend != "vulkan")
+        throw Error(fmt::format("eval deferred: backend '{}' (expected cpu or vulkan)", o.backend));
+#ifdef SSFX_HAVE_GPU
+    // The GPU passes on a compute context of their own: lavapipe's compute timestamps do not
+    // cover the dispatches once the renderer has drawn on the same context (docs/gpu.md).
+    std::unique_ptr<gpu::AdaptiveShading> gpuShading;
+    std::string gpuDevice;
+    if (o.backend == "vulkan") {
+        vkx::ContextOptions co;
+        co.device = o.device;
+        auto ctx = vkx::Context::create(co);
+        gpuDevice = ctx->info.name;
+        gpuShading = std::make_unique<gpu::AdaptiveShading>(ctx, scene, gpu::parseSampling(o.lookup));
+    }
+#else
+    if (o.backend == "vulkan")
+        throw Error("eval deferred --backend vulkan: this ssfx was built without the GPU backend");
+#endif
+
     struct Row {
         std::string ss, method;
         double gbufferMs, shadeMs, stalledMs, mse, psnr, samples;
+        double idleLanes = NAN, vsCpu = NAN;  // the GPU rows: rest pass's idle lanes, max |GPU - CPU|
     };
     std::vector<Row> rows;
+#ifdef SSFX_HAVE_GPU
+    std::vector<Row> gpuRows;
+    std::vector<std::string> gpuNotes;  // k against the CPU's, per m
+    double gpuSpeedupPlain = NAN, gpuSpeedupStalled = NAN;
+    int gpuSubgroup = 0;
+#endif
     nlohmann::ordered_json j;
     j["scene"] = o.scene;
     j["view"] = o.view;
@@ -105,6 +149,51 @@ Section runDeferredExperiment(const DeferredExperimentOptions& o) {
             tiledStallMs.push_back(deferred::adaptiveSupersampling(scene, g, tiledStalledParams, o.exec).totalMs());
         }
         const std::string ss = fmt::format("{0}x{0}", m);
+#ifdef SSFX_HAVE_GPU
+        if (gpuShading) {
+            // The same rows on the GPU passes, on the same G-buffer, times from GPU timestamps.
+            std::vector<double> bMs, bStallMs, aMs, aStallMs, tMs, tStallMs;
+            gpu::GpuDeferredResult gb, ga, gt;
+            // Run -1 warms up, untimed: lavapipe compiles a shader's variant on its first dispatch.
+            for (int r = -1; r < reps; ++r) {
+                const auto keep = [r](std::vector<double>& v, double ms) {
+                    if (r >= 0) v.push_back(ms);
+                };
+                gb = gpuShading->bruteForce(g, o.params.shading);
+                keep(bMs, gb.totalMs());
+                keep(bStallMs, gpuShading->bruteForce(g, stalled).totalMs());
+                if (m == 1) continue;
+                ga = gpuShading->adaptive(g, o.params);
+                keep(aMs, ga.totalMs());
+                keep(aStallMs, gpuShading->adaptive(g, stalledParams).totalMs());
+                gt = gpuShading->adaptive(g, tiledParams);
+                SSFX_ASSERT(gt.image == ga.image && gt.shaded == ga.shaded);  // only the lanes' order differs
+                keep(tMs, gt.totalMs());
+                keep(tStallMs, gpuShading->adaptive(g, tiledStalledParams).totalMs());
+            }
+            gpuSubgroup = gb.subgroupSize;
+            const double vsCpuRef = maxAbsoluteError(gb.image, ref.image);
+            if (m == 1) {
+                gpuRows.push_back({ss, "default", gbufferMs, median(bMs), median(bStallMs), NAN, NAN, NAN,
+                                   gb.idleLaneShare(), vsCpuRef});
+            } else {
+                const double gmse = deferred::mse(ga.image, gb.image);
+                gpuRows.push_back({ss, "brute force", gbufferMs, median(bMs), median(bStallMs), NAN, NAN, 100.0,
+                                   gb.idleLaneShare(), vsCpuRef});
+                const double vsCpuOurs = maxAbsoluteError(ga.image, ours.image);
+                gpuRows.push_back({ss, "ours", gbufferMs, median(aMs), median(aStallMs), gmse, psnrFromMse(gmse),
+                                   ga.shadedPercent(), ga.idleLaneShare(), vsCpuOurs});
+                gpuRows.push_back({ss, "ours, tiles by k", gbufferMs, median(tMs), median(tStallMs), gmse,
+                                   psnrFromMse(gmse), gt.shadedPercent(), gt.idleLaneShare(), vsCpuOurs});
+                gpuNotes.push_back(fmt::format("{}: k differs from the CPU's at {} of {} pixels", ss,
+                                               countDifferent(ga.samples, ours.samples), ga.samples.pixels().size()));
+                if (m == 4) {
+                    gpuSpeedupPlain = median(bMs) / median(aMs);
+                    gpuSpeedupStalled = median(bStallMs) / median(aStallMs);
+                }
+            }
+        }
+#endif
         io::writePng((out / "images" / fmt::format("deferred_m{}_brute_force.png", m)).string(),
                      deferred::toRgba8(ref.image).view());
         if (m == 1) {
@@ -158,16 +247,14 @@ Section runDeferredExperiment(const DeferredExperimentOptions& o) {
     for (const auto& r : rows) {
         b.table.addRow({r.ss, r.method, cell(r.gbufferMs, 1), cell(r.shadeMs, 1), cell(r.gbufferMs + r.shadeMs, 1),
                         cell(r.stalledMs, 1), cell(r.mse * 1e5, 2), cell(r.psnr, 2), cell(r.samples, 2)});
-        j["rows"].push_back(
-            {{"supersampling", r.ss},
-             {"method", r.method},
-             {"gbuffer_ms", r.gbufferMs},
-             {"shading_ms", r.shadeMs},
-             {"stalled_ms", r.stalledMs},
-             {"mse", std::isfinite(r.mse) ? nlohmann::ordered_json(r.mse) : nlohmann::ordered_json()},
-             {"psnr", std::isfinite(r.psnr) ? nlohmann::ordered_json(r.psnr) : nlohmann::ordered_json()},
-             {"samples_percent",
-              std::isfinite(r.samples) ? nlohmann::ordered_json(r.samples) : nlohmann::ordered_json()}});
+        j["rows"].push_back({{"supersampling", r.ss},
+                             {"method", r.method},
+                             {"gbuffer_ms", r.gbufferMs},
+                             {"shading_ms", r.shadeMs},
+                             {"stalled_ms", r.stalledMs},
+                             {"mse", number(r.mse)},
+                             {"psnr", number(r.psnr)},
+                             {"samples_percent", number(r.samples)}});
     }
     b.after =
         fmt::format("At 4x4: ours is {:.2f}x faster than brute force in shading, {:.2f}x with the stall (same run).",
@@ -177,6 +264,46 @@ Section runDeferredExperiment(const DeferredExperimentOptions& o) {
             {fmt::format("images/deferred_m4_{}.png", name), fmt::format("4x4: {}", name), Figure::Kind::Image, 0, 0});
     section.blocks.push_back(std::move(b));
     j["speedup_4x4"] = {{"plain", speedupPlain}, {"stalled", speedupStalled}};
+#ifdef SSFX_HAVE_GPU
+    if (gpuShading) {
+        Block gb;
+        gb.heading = fmt::format("The same on the GPU passes ({}, lookup {})", gpuDevice, o.lookup);
+        gb.text = fmt::format(
+            "gpu::AdaptiveShading (docs/gpu.md, \"Adaptive shading\") on the same G-buffers (uploaded), shading "
+            "times from GPU timestamps around the passes, median of {} run(s); MSE and PSNR of ours against the GPU's "
+            "brute force at the same m. \"Lanes idle\": the share of the rest pass's (brute force's) lane-iterations "
+            "that wait for a busier lane of their subgroup (subgroup {}), counted in the shader. \"Max |GPU - CPU|\": "
+            "the largest channel difference from the CPU's image of the same row (RGB in [0, 1]). \"Tiles by k\": "
+            "each 8x8 tile's pixels ranked by k before the rest pass (the same image).",
+            reps, gpuSubgroup);
+        gb.table.header = {"supersampling", "method",  "shading ms", "total ms",     "stalled shading ms",
+                           "MSE (x1e-5)",   "PSNR dB", "samples %",  "lanes idle %", "max |GPU - CPU|"};
+        for (const auto& r : gpuRows) {
+            gb.table.addRow({r.ss, r.method, cell(r.shadeMs, 2), cell(r.gbufferMs + r.shadeMs, 1), cell(r.stalledMs, 1),
+                             cell(r.mse * 1e5, 2), cell(r.psnr, 2), cell(r.samples, 2), cell(100.0 * r.idleLanes, 1),
+                             fmt::format("{:.2g}", r.vsCpu)});
+            j["gpu"]["rows"].push_back({{"supersampling", r.ss},
+                                        {"method", r.method},
+                                        {"shading_ms", r.shadeMs},
+                                        {"stalled_ms", r.stalledMs},
+                                        {"mse", number(r.mse)},
+                                        {"psnr", number(r.psnr)},
+                                        {"samples_percent", number(r.samples)},
+                                        {"idle_lanes", r.idleLanes},
+                                        {"max_abs_vs_cpu", r.vsCpu}});
+        }
+        std::string notes;
+        for (const auto& n : gpuNotes) notes += (notes.empty() ? "" : "; ") + n;
+        gb.after = fmt::format(
+            "At 4x4 on the GPU: ours is {:.2f}x faster than brute force in shading, {:.2f}x with the stall (the CPU: "
+            "{:.2f}x, {:.2f}x). {}.",
+            gpuSpeedupPlain, gpuSpeedupStalled, speedupPlain, speedupStalled, notes);
+        j["gpu"]["device"] = gpuDevice;
+        j["gpu"]["lookup"] = o.lookup;
+        j["gpu"]["speedup_4x4"] = {{"plain", gpuSpeedupPlain}, {"stalled", gpuSpeedupStalled}};
+        section.blocks.push_back(std::move(gb));
+    }
+#endif
     const std::string text = j.dump(2) + "\n";
     io::writeTextAtomic((out / "data" / "deferred.json").string(), text);
     io::writeTextAtomic((out / "data" / "deferred.md").string(), markdown(section));

@@ -433,8 +433,39 @@ PY
   contains deferred_param "$OUT/deferred_param.err" "cDepth"
   check deferred_unknown 2 $VK "$SSFX" deferred --scene atrium --size 32x24 -p nope=1 --out "$OUT/y"
   [ ! -e "$OUT/y" ] || { echo "FAIL deferred: a failed run left $OUT/y"; fail=1; }
-  check eval_deferred 0 $VK "$SSFX" eval deferred --quick --out "$OUT/evaldef"
+  # The same on the GPU (both lookups; the hardware one without anisotropy, slow on lavapipe).
+  check deferred_gpu 0 $VK "$SSFX" deferred --backend vulkan --scene atrium --size 64x48 --ss 3 --brute-force \
+    --out "$OUT/dg"
+  contains deferred_gpu "$OUT/deferred_gpu.out" "of lanes idle"
+  [ -s "$OUT/dg/samples.png" ] || { echo "FAIL deferred_gpu: no samples.png"; fail=1; }
+  check deferred_gpu_hw 0 $VK "$SSFX" deferred --backend vulkan --lookup hardware -p maxAnisotropy=1 \
+    --scene cornell --size 48x32 --ss 2 --out "$OUT/dh"
+  contains deferred_gpu_hw "$OUT/deferred_gpu_hw.out" "lookup=hardware"
+  check deferred_lookup_cpu 2 $VK "$SSFX" deferred --lookup hardware --scene atrium --size 32x24 --out "$OUT/y"
+  contains deferred_lookup_cpu "$OUT/deferred_lookup_cpu.err" "--backend vulkan"
+  [ ! -e "$OUT/y" ] || { echo "FAIL deferred: a failed run left $OUT/y"; fail=1; }
+  # Table 1 on the CPU and the GPU passes: the GPU's rows are the CPU's within the parity
+  # bounds of tests/gpu/test_gpu_deferred.cpp (image 1e-4; k the same but at float ties).
+  check eval_deferred 0 $VK "$SSFX" eval deferred --quick --backend vulkan --out "$OUT/evaldef"
   contains eval_deferred "$OUT/evaldef/data/deferred.md" "4x4 | ours"
+  contains eval_deferred "$OUT/evaldef/data/deferred.md" "ours, tiles by k"
+  python3 - "$OUT/evaldef/data/deferred.json" <<'PY' || { echo "FAIL eval_deferred: GPU rows"; fail=1; }
+import json, sys
+j = json.load(open(sys.argv[1]))
+cpu = {(r["supersampling"], r["method"]): r for r in j["rows"]}
+gpu = j["gpu"]["rows"]
+assert len(gpu) == 10, len(gpu)  # 1x1 default; brute force, ours, tiles for 2x2..4x4
+for r in gpu:
+    assert r["max_abs_vs_cpu"] <= 1e-4, r
+    assert r["shading_ms"] > 0, r
+    if r["method"] == "ours":
+        c = cpu[(r["supersampling"], "ours")]
+        assert abs(r["samples_percent"] - c["samples_percent"]) <= 0.01, (r, c)
+        assert abs(r["psnr"] - c["psnr"]) <= 0.1, (r, c)
+PY
+  check eval_deferred_lookup 2 $VK "$SSFX" eval deferred --quick --lookup hardware --out "$OUT/y"
+  contains eval_deferred_lookup "$OUT/eval_deferred_lookup.err" "--backend vulkan"
+  [ ! -e "$OUT/y" ] || { echo "FAIL eval_deferred_lookup: a failed run left $OUT/y"; fail=1; }
 fi
 
 # An existing output survives a failed run untouched.

@@ -3,8 +3,10 @@
 // Vulkan device, shading on the CPU, total), the shading time with a stall that makes
 // shading dominate, MSE and PSNR against brute-force supersampling at the same m, and the percentage of
 // samples shaded; plus the images of the paper's figures (sample-count heat map, absolute
-// error, the metrics' separate contributions). Built in the ssfx_deferred library (it
-// needs the renderer).
+// error, the metrics' separate contributions). With backend "vulkan" the same rows on the
+// GPU passes (gpu/deferred.hpp) from GPU timestamps, with the idle lanes of the rest pass and
+// the distance to the CPU's image, in a table of their own. Built in ssfx_eval when the
+// renderer is (it renders the G-buffers).
 #pragma once
 
 #include <functional>
@@ -25,7 +27,10 @@ struct DeferredExperimentOptions {
     int repetitions = 3;  //!< timed runs per row (median)
     bool quick = false;   //!< 256x192, one repetition (tests)
     deferred::AdaptiveParams params;
-    std::string device;  //!< Vulkan device
+    std::string device;  //!< Vulkan device (the G-buffer's and, with backend "vulkan", the shading's)
+    //! "cpu" (default) or "vulkan": also the GPU passes (needs a build with the GPU backend);
+    //! `lookup` their texture lookups, "model" (default, the CPU's) or "hardware".
+    std::string backend = "cpu", lookup = "model";
     Exec exec;
     ProgressFn progress;
 };
