@@ -9,6 +9,7 @@
 #include "ssfx/deferred/adaptive.hpp"
 #include "ssfx/deferred/registry.hpp"
 #include "ssfx/deferred/sampler.hpp"
+#include "tests/deferred/hand_made_gbuffer.hpp"
 #include "tests/render/render_fixture.hpp"
 #include "tests/support/param_tables.hpp"
 
@@ -94,37 +95,10 @@ TEST(Sampler, ConstantTextureAndAnisotropicFootprints) {
     EXPECT_NEAR(textureBilinear(t, 1, 0, {-1.0f + 0.5f / 16.0f, 0.5f}).r, 0.0f, 1e-6f);
 }
 
-// A hand-made G-buffer: a textured plane facing the camera whose depth changes along x.
-scene::GBuffer handMade(const scene::Scene& scene, int w, int h, int m, bool slanted) {
-    scene::GBuffer g;
-    g.width = w;
-    g.height = h;
-    g.m = m;
-    scene::View v;
-    v.eye = {0, 1, 5};
-    v.target = {0, 1, 0};
-    g.camera = scene::cameraSetup(v, m * w, m * h);
-    const int sw = m * w, sh = m * h;
-    const std::size_t n = std::size_t(sw) * std::size_t(sh);
-    g.depth = ImageF(sw, sh);
-    g.normal.assign(n, glm::vec3(0, 0, 1));
-    g.uv.resize(n);
-    g.uvGrad.assign(n, glm::vec4(0.05f, 0.0f, 0.0f, 0.05f));
-    g.material.assign(n, 0);  // atrium material 0: the checker floor (texture layer 0)
-    g.layer.assign(n, std::int16_t(scene.materials[0].textureLayer));
-    for (int y = 0; y < sh; ++y)
-        for (int x = 0; x < sw; ++x) {
-            const double z = slanted ? -(4.0 + 0.3 * x) : -4.0;
-            g.depth(x, y) = float(ao::zToDepth(z, g.camera.camera));
-            g.uv[g.index(x, y)] = {0.05f * float(x) / float(m), 0.05f * float(y) / float(m)};
-        }
-    return g;
-}
-
 TEST(Adaptive, AllSamplesReproduceTheReferenceExactly) {
     const scene::Scene scene = scene::atrium();
     for (int m = 2; m <= 4; ++m) {
-        const scene::GBuffer g = handMade(scene, 6, 5, m, true);
+        const scene::GBuffer g = handMadeGBuffer(scene, 6, 5, m, true);
         AdaptiveParams p;
         p.cDepth = 1e9f;  // every window has depth variance: k = m^2 everywhere
         const auto a = adaptiveSupersampling(scene, g, p);
@@ -139,7 +113,7 @@ TEST(Adaptive, AllSamplesReproduceTheReferenceExactly) {
 
 TEST(Adaptive, FlatRegionsShadeOneSample) {
     const scene::Scene scene = scene::atrium();
-    const scene::GBuffer g = handMade(scene, 8, 6, 4, false);
+    const scene::GBuffer g = handMadeGBuffer(scene, 8, 6, 4, false);
     AdaptiveParams p;
     p.cShading = 0.0f;  // the checker's own contrast would trigger the shading metric
     const auto a = adaptiveSupersampling(scene, g, p);
@@ -170,10 +144,10 @@ TEST(Adaptive, BadParametersAreRejected) {
     p.shading.shininess = std::nanf("");
     EXPECT_THROW(validate(p), Error);
     const scene::Scene scene = scene::atrium();
-    scene::GBuffer g = handMade(scene, 4, 4, 2, false);
+    scene::GBuffer g = handMadeGBuffer(scene, 4, 4, 2, false);
     g.normal.pop_back();
     EXPECT_THROW(adaptiveSupersampling(scene, g, {}), Error);
-    g = handMade(scene, 4, 4, 2, false);
+    g = handMadeGBuffer(scene, 4, 4, 2, false);
     g.material[3] = 999;
     EXPECT_THROW(bruteForceSupersampling(scene, g, {}), Error);
 }

@@ -13,17 +13,28 @@
 
 namespace ssfx::test {
 
+//! A context with validation on, or null (saying why) where there is no such device.
+inline std::shared_ptr<vkx::Context> createContextOrNull(bool graphics) {
+    vkx::ContextOptions o;
+    o.validation = true;
+    o.graphics = graphics;
+    try {
+        return vkx::Context::create(o);
+    } catch (const Error& e) {
+        std::fprintf(stderr, "no Vulkan device%s: %s\n", graphics ? " with graphics" : "", e.what());
+        return {};
+    }
+}
+
 inline std::shared_ptr<vkx::Context> gpuContext() {
-    static std::shared_ptr<vkx::Context> ctx = [] {
-        vkx::ContextOptions o;
-        o.validation = true;
-        try {
-            return vkx::Context::create(o);
-        } catch (const Error& e) {
-            std::fprintf(stderr, "no Vulkan device: %s\n", e.what());
-            return std::shared_ptr<vkx::Context>();
-        }
-    }();
+    static const std::shared_ptr<vkx::Context> ctx = createContextOrNull(false);
+    return ctx;
+}
+
+//! A second shared context with a graphics queue, for tests where the renderer and the GPU
+//! passes share one device (as a frame does); null where no device has graphics.
+inline std::shared_ptr<vkx::Context> graphicsContext() {
+    static const std::shared_ptr<vkx::Context> ctx = createContextOrNull(true);
     return ctx;
 }
 
@@ -40,4 +51,10 @@ inline void expectNoValidationMessages(const std::shared_ptr<vkx::Context>& ctx 
     do {                                                                                   \
         if (!::ssfx::test::gpuContext())                                                   \
             GTEST_SKIP() << "no Vulkan device (install mesa-vulkan-drivers for lavapipe)"; \
+    } while (0)
+
+#define REQUIRE_GRAPHICS()                                                                  \
+    do {                                                                                    \
+        if (!::ssfx::test::graphicsContext())                                               \
+            GTEST_SKIP() << "no Vulkan device with graphics (install mesa-vulkan-drivers)"; \
     } while (0)

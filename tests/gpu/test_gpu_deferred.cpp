@@ -8,36 +8,16 @@
 #include <cmath>
 #include <cstdio>
 
-#include "ssfx/ao/depth.hpp"
 #include "ssfx/core/error.hpp"
 #include "ssfx/deferred/adaptive.hpp"
 #include "ssfx/gpu/deferred.hpp"
 #include "ssfx/render/renderer.hpp"
 #include "ssfx/scene/scene.hpp"
+#include "tests/deferred/hand_made_gbuffer.hpp"
 #include "tests/gpu/gpu_context.hpp"
 
 namespace ssfx::test {
 namespace {
-
-// The renderer and the GPU shading share one graphics context (as the frame does).
-std::shared_ptr<vkx::Context> graphicsContext() {
-    static std::shared_ptr<vkx::Context> ctx = [] {
-        vkx::ContextOptions o;
-        o.validation = true;
-        o.graphics = true;
-        try {
-            return vkx::Context::create(o);
-        } catch (const Error& e) {
-            std::fprintf(stderr, "no Vulkan device with graphics: %s\n", e.what());
-            return std::shared_ptr<vkx::Context>();
-        }
-    }();
-    return ctx;
-}
-#define REQUIRE_GRAPHICS()                                                                                      \
-    do {                                                                                                        \
-        if (!graphicsContext()) GTEST_SKIP() << "no Vulkan device with graphics (install mesa-vulkan-drivers)"; \
-    } while (0)
 
 struct Diff {
     double max = 0, mean = 0;
@@ -75,7 +55,7 @@ bool tie(const deferred::DeferredResult& cpu, const deferred::DeferredResult& gp
 //    division, a few ulp of values up to about 1.5); mean within 1e-6.
 TEST(GpuDeferred, AdaptiveOnRenderedGBuffersIsTheCpus) {
     REQUIRE_GRAPHICS();
-    auto ctx = graphicsContext();
+    auto ctx = test::graphicsContext();
     render::Renderer renderer(ctx);
     for (const auto& [name, viewName] : {std::pair{"atrium", "nave"}, std::pair{"cornell", "corner"}}) {
         const scene::Scene scene = scene::loadScene(name);
@@ -148,7 +128,7 @@ TEST(GpuDeferred, AdaptiveOnRenderedGBuffersIsTheCpus) {
 // and the samples are the model's but where S differs enough to move the shading metric.
 TEST(GpuDeferred, HardwareLookupIsCloseToTheModel) {
     REQUIRE_GRAPHICS();
-    auto ctx = graphicsContext();
+    auto ctx = test::graphicsContext();
     render::Renderer renderer(ctx);
     const scene::Scene scene = scene::atrium();
     const scene::GBuffer g = renderer.renderGBuffer(scene, scene.view("nave"), 160, 120, 4);
@@ -168,32 +148,6 @@ TEST(GpuDeferred, HardwareLookupIsCloseToTheModel) {
     expectNoValidationMessages(ctx);
 }
 
-// A hand-made G-buffer (the CPU test's): a slanted textured plane, every window with depth
-// variance, so that k = m^2 everywhere and the method is brute force, bit for bit on the GPU
-// too (the same shader code, the same order of the sum).
-scene::GBuffer slantedPlane(const scene::Scene& scene, int w, int h, int m) {
-    scene::GBuffer g;
-    g.width = w, g.height = h, g.m = m;
-    scene::View v;
-    v.eye = {0, 1, 5};
-    v.target = {0, 1, 0};
-    g.camera = scene::cameraSetup(v, m * w, m * h);
-    const int sw = m * w, sh = m * h;
-    const std::size_t n = std::size_t(sw) * std::size_t(sh);
-    g.depth = ImageF(sw, sh);
-    g.normal.assign(n, glm::vec3(0, 0, 1));
-    g.uv.resize(n);
-    g.uvGrad.assign(n, glm::vec4(0.05f, 0.0f, 0.0f, 0.05f));
-    g.material.assign(n, 0);  // atrium material 0: the checker floor (texture layer 0)
-    g.layer.assign(n, std::int16_t(scene.materials[0].textureLayer));
-    for (int y = 0; y < sh; ++y)
-        for (int x = 0; x < sw; ++x) {
-            g.depth(x, y) = float(ao::zToDepth(-(4.0 + 0.3 * x), g.camera.camera));
-            g.uv[g.index(x, y)] = {0.05f * float(x) / float(m), 0.05f * float(y) / float(m)};
-        }
-    return g;
-}
-
 TEST(GpuDeferred, AllSamplesAreBruteForceBitForBit) {
     REQUIRE_DEVICE();
     auto ctx = gpuContext();
@@ -201,7 +155,7 @@ TEST(GpuDeferred, AllSamplesAreBruteForceBitForBit) {
     gpu::AdaptiveShading shading(ctx, scene);
     for (int m = 1; m <= 4; ++m) {
         SCOPED_TRACE(m);
-        const scene::GBuffer g = slantedPlane(scene, 19, 13, m);  // partial 8 x 8 tiles
+        const scene::GBuffer g = test::handMadeGBuffer(scene, 19, 13, m, true);  // partial 8 x 8 tiles
         deferred::AdaptiveParams p;
         p.cDepth = 1e9f;
         for (const bool tiled : {false, true}) {
@@ -223,7 +177,7 @@ TEST(GpuDeferred, BadInputIsRefusedByName) {
     auto ctx = gpuContext();
     const scene::Scene scene = scene::atrium();
     gpu::AdaptiveShading shading(ctx, scene);
-    const scene::GBuffer good = slantedPlane(scene, 8, 6, 2);
+    const scene::GBuffer good = test::handMadeGBuffer(scene, 8, 6, 2, true);
     auto expectError = [&](const scene::GBuffer& g, const deferred::AdaptiveParams& p, const std::string& part) {
         try {
             shading.adaptive(g, p);
