@@ -474,6 +474,18 @@ GpuDeferredResult AdaptiveShading::bruteForce(const scene::GBuffer& gbuffer, con
     return impl_->run(gbuffer, params, nullptr);
 }
 
+DeviceGBuffer deviceGBuffer(const render::DeviceGBufferImages& images) {
+    const auto ref = [](const render::DeviceDepth& d) {
+        return ImageRef{d.view, d.format, d.usage, d.width, d.height, d.layout};
+    };
+    DeviceGBuffer g;
+    g.depth = ref(images.depth), g.normal = ref(images.normal), g.uv = ref(images.uv);
+    g.uvGrad = ref(images.uvGrad), g.ids = ref(images.ids);
+    g.width = images.width, g.height = images.height, g.m = images.m;
+    g.camera = images.camera.camera, g.view = images.camera.view;
+    return g;
+}
+
 void AdaptiveShading::record(const vk::raii::CommandBuffer& cmd, const DeviceGBuffer& g,
                              const deferred::AdaptiveParams& params, const ImageRef& output) {
     deferred::validate(params);

@@ -175,10 +175,15 @@ struct Renderer::Impl {
         double gpuMs = 0;
     };
 
+    // Work recorded after a draw, on its attachments left on the device.
+    using Recorder = std::function<void(const vk::raii::CommandBuffer&, const DeviceDepth& depth,
+                                        const std::vector<DeviceDepth>& colors)>;
+
     // One draw of `scene` from `cam` into width x height attachments; returns their contents.
-    // `after`: the depth stays on the device for work recorded after the draw (not read back).
+    // `after`: the attachments stay on the device for work recorded after the draw (not read
+    // back): the depth in DEPTH_READ_ONLY_OPTIMAL, the colours in SHADER_READ_ONLY_OPTIMAL.
     Result draw(const scene::Scene& scene, const scene::CameraSetup& cam, Pass pass, vk::Format depthFormat,
-                const std::vector<ColorTarget>& targets, float derivativeScale, const DepthRecorder& after = {}) {
+                const std::vector<ColorTarget>& targets, float derivativeScale, const Recorder& after = {}) {
         scene.validate();
         const auto w = std::uint32_t(cam.bufferWidth()), h = std::uint32_t(cam.bufferHeight());
         ctx.requireImageSize(w, h, "render size");
@@ -215,24 +220,33 @@ struct Renderer::Impl {
         sets.bind(0, 2, lightBuffer);
         sets.bind(0, 3, *textures.view, vk::ImageLayout::eShaderReadOnlyOptimal, *sampler);
 
-        // Attachments and their read-back buffers.
+        // Attachments and their read-back buffers (none with `after`).
         const auto usage = vk::ImageUsageFlagBits::eTransferSrc;
+        const vk::ImageUsageFlags onDevice = after ? vk::ImageUsageFlagBits::eSampled : vk::ImageUsageFlags{};
         std::vector<vkx::Image> colorImages;
         Result result;
         for (const auto& t : targets) {
-            colorImages.push_back(ctx.createImage(t.format, w, h, vk::ImageUsageFlagBits::eColorAttachment | usage,
+            colorImages.push_back(ctx.createImage(t.format, w, h,
+                                                  vk::ImageUsageFlagBits::eColorAttachment | usage | onDevice,
                                                   vk::ImageAspectFlagBits::eColor));
-            result.colors.push_back(
-                ctx.createBuffer(vk::DeviceSize(w) * h * t.bytesPerTexel, vk::BufferUsageFlagBits::eTransferDst, true));
+            if (!after)
+                result.colors.push_back(ctx.createBuffer(vk::DeviceSize(w) * h * t.bytesPerTexel,
+                                                         vk::BufferUsageFlagBits::eTransferDst, true));
         }
-        const vk::ImageUsageFlags depthUsage = vk::ImageUsageFlagBits::eDepthStencilAttachment | usage |
-                                               (after ? vk::ImageUsageFlagBits::eSampled : vk::ImageUsageFlags{});
+        const vk::ImageUsageFlags depthUsage = vk::ImageUsageFlagBits::eDepthStencilAttachment | usage | onDevice;
         vkx::Image depthImage = ctx.createImage(depthFormat, w, h, depthUsage, vk::ImageAspectFlagBits::eDepth);
-        vk::raii::ImageView depth2d{nullptr};  // for `after`: a 2-D view (a sampled image's own is an array)
-        if (after)
-            depth2d = vk::raii::ImageView(
-                ctx.device, vk::ImageViewCreateInfo({}, *depthImage.image, vk::ImageViewType::e2D, depthFormat, {},
-                                                    {vk::ImageAspectFlagBits::eDepth, 0, 1, 0, 1}));
+        // For `after`: 2-D views (a sampled image's own view is an array).
+        const auto view2d = [&](const vkx::Image& img, vk::Format format, vk::ImageAspectFlags aspect) {
+            return vk::raii::ImageView(ctx.device, vk::ImageViewCreateInfo({}, *img.image, vk::ImageViewType::e2D,
+                                                                           format, {}, {aspect, 0, 1, 0, 1}));
+        };
+        vk::raii::ImageView depth2d{nullptr};
+        std::vector<vk::raii::ImageView> colors2d;
+        if (after) {
+            depth2d = view2d(depthImage, depthFormat, vk::ImageAspectFlagBits::eDepth);
+            for (std::size_t i = 0; i < targets.size(); ++i)
+                colors2d.push_back(view2d(colorImages[i], targets[i].format, vk::ImageAspectFlagBits::eColor));
+        }
         const bool readDepth = pass != Pass::Forward && !after;
         if (readDepth)
             result.depth = ctx.createBuffer(vk::DeviceSize(w) * h * depthBytes(depthFormat),
@@ -273,7 +287,7 @@ struct Renderer::Impl {
             cmd.drawIndexed(std::uint32_t(scene.indices.size()), 1, 0, 0, 0);
             cmd.endRendering();
             timer.end(cmd);
-            for (std::size_t i = 0; i < targets.size(); ++i) {
+            for (std::size_t i = 0; i < targets.size() && !after; ++i) {
                 vkx::transition(cmd, colorImages[i], vk::ImageLayout::eColorAttachmentOptimal,
                                 vk::ImageLayout::eTransferSrcOptimal, S::eColorAttachmentOutput,
                                 A::eColorAttachmentWrite, S::eTransfer, A::eTransferRead);
@@ -286,8 +300,17 @@ struct Renderer::Impl {
                 vkx::transition(cmd, depthImage, vk::ImageLayout::eDepthAttachmentOptimal,
                                 vk::ImageLayout::eDepthReadOnlyOptimal, S::eEarlyFragmentTests | S::eLateFragmentTests,
                                 A::eDepthStencilAttachmentWrite, S::eComputeShader, A::eShaderRead);
-                after(cmd,
-                      DeviceDepth{*depth2d, depthFormat, depthUsage, w, h, vk::ImageLayout::eDepthReadOnlyOptimal});
+                std::vector<DeviceDepth> colors;
+                for (std::size_t i = 0; i < targets.size(); ++i) {
+                    vkx::transition(cmd, colorImages[i], vk::ImageLayout::eColorAttachmentOptimal,
+                                    vk::ImageLayout::eShaderReadOnlyOptimal, S::eColorAttachmentOutput,
+                                    A::eColorAttachmentWrite, S::eComputeShader, A::eShaderRead);
+                    colors.push_back(DeviceDepth{*colors2d[i], targets[i].format,
+                                                 vk::ImageUsageFlagBits::eColorAttachment | usage | onDevice, w, h,
+                                                 vk::ImageLayout::eShaderReadOnlyOptimal});
+                }
+                after(cmd, DeviceDepth{*depth2d, depthFormat, depthUsage, w, h, vk::ImageLayout::eDepthReadOnlyOptimal},
+                      colors);
             }
             if (readDepth) {
                 vkx::transition(cmd, depthImage, vk::ImageLayout::eDepthAttachmentOptimal,
@@ -396,29 +419,62 @@ DepthRender Renderer::renderDepthOnDevice(const scene::Scene& scene, const scene
     return guarded("rendering depth", [&] {
         DepthRender out;
         out.camera = scene::cameraSetup(view, width, height, guard);
-        const auto r = impl_->draw(scene, out.camera, Pass::Depth, vkDepthFormat(format), {}, 1.0f, after);
+        const auto r = impl_->draw(scene, out.camera, Pass::Depth, vkDepthFormat(format), {}, 1.0f,
+                                   [&](const vk::raii::CommandBuffer& cmd, const DeviceDepth& depth,
+                                       const std::vector<DeviceDepth>&) { after(cmd, depth); });
         out.gpuMs = r.gpuMs;
         return out;
     });
 }
 
+namespace {
+
+// A G-buffer's size, m and camera (no planes), after checking them.
+scene::GBuffer gbufferFrame(const scene::View& view, int width, int height, int m) {
+    if (m < 1 || m > 4) throw Error(fmt::format("G-buffer supersampling m = {} is not in 1..4", m));
+    checkDimensions(width, height, "G-buffer size");
+    scene::GBuffer g;
+    g.width = width;
+    g.height = height;
+    g.m = m;
+    g.camera = scene::cameraSetup(view, m * width, m * height, 0);
+    return g;
+}
+
+// The G-buffer's attachments: normal, uv, uv gradient, ids (background: 0xFFFF, none).
+std::vector<ColorTarget> gbufferTargets() {
+    const std::array<vk::ClearColorValue, 4> clears = {
+        vk::ClearColorValue(0.0f, 0.0f, 0.0f, 0.0f), vk::ClearColorValue(0.0f, 0.0f, 0.0f, 0.0f),
+        vk::ClearColorValue(0.0f, 0.0f, 0.0f, 0.0f),
+        vk::ClearColorValue(std::array<std::uint32_t, 4>{0xFFFFu, 0xFFFFu, 0, 0})};
+    std::vector<ColorTarget> targets;
+    for (std::size_t i = 0; i < 4; ++i) targets.push_back({kGBufferFormats[i], clears[i], kGBufferBytes[i]});
+    return targets;
+}
+
+}  // namespace
+
+scene::GBuffer Renderer::renderGBufferOnDevice(const scene::Scene& scene, const scene::View& view, int width,
+                                               int height, int m, const GBufferRecorder& after) {
+    if (!after) throw Error("renderGBufferOnDevice: no work to record after the draw");
+    scene::GBuffer g = gbufferFrame(view, width, height, m);
+    return guarded("rendering the G-buffer", [&] {
+        const auto r = impl_->draw(
+            scene, g.camera, Pass::GBuffer, vk::Format::eD32Sfloat, gbufferTargets(), float(m),
+            [&](const vk::raii::CommandBuffer& cmd, const DeviceDepth& depth, const std::vector<DeviceDepth>& colors) {
+                after(cmd, DeviceGBufferImages{depth, colors[0], colors[1], colors[2], colors[3], g.width, g.height,
+                                               g.m, g.camera});
+            });
+        g.gpuMs = r.gpuMs;
+        return g;
+    });
+}
+
 scene::GBuffer Renderer::renderGBuffer(const scene::Scene& scene, const scene::View& view, int width, int height,
                                        int m) {
-    if (m < 1 || m > 4) throw Error(fmt::format("G-buffer supersampling m = {} is not in 1..4", m));
+    scene::GBuffer g = gbufferFrame(view, width, height, m);
     return guarded("rendering the G-buffer", [&] {
-        scene::GBuffer g;
-        g.width = width;
-        g.height = height;
-        g.m = m;
-        checkDimensions(width, height, "G-buffer size");
-        g.camera = scene::cameraSetup(view, m * width, m * height, 0);
-        std::vector<ColorTarget> targets;
-        const std::array<vk::ClearColorValue, 4> clears = {
-            vk::ClearColorValue(0.0f, 0.0f, 0.0f, 0.0f), vk::ClearColorValue(0.0f, 0.0f, 0.0f, 0.0f),
-            vk::ClearColorValue(0.0f, 0.0f, 0.0f, 0.0f),
-            vk::ClearColorValue(std::array<std::uint32_t, 4>{0xFFFFu, 0xFFFFu, 0, 0})};
-        for (std::size_t i = 0; i < 4; ++i) targets.push_back({kGBufferFormats[i], clears[i], kGBufferBytes[i]});
-        auto r = impl_->draw(scene, g.camera, Pass::GBuffer, vk::Format::eD32Sfloat, targets, float(m));
+        auto r = impl_->draw(scene, g.camera, Pass::GBuffer, vk::Format::eD32Sfloat, gbufferTargets(), float(m));
         const int sw = g.sampleWidth(), sh = g.sampleHeight();
         const std::size_t n = std::size_t(sw) * std::size_t(sh);
         g.depth = depthFromBytes(r.depth.mapped, vk::Format::eD32Sfloat, sw, sh);

@@ -148,6 +148,64 @@ TEST(GpuDeferred, HardwareLookupIsCloseToTheModel) {
     expectNoValidationMessages(ctx);
 }
 
+// record() on the renderer's G-buffer where the draw left it (no read-back, no upload), in
+// the draw's command buffer, against adaptive() on the same draw read back and uploaded. The
+// only difference is the normals: the device decodes the SNORM attachment itself where the
+// host path uploads the renderer's decoded floats (max(c / 32767, -1) both, within an ulp),
+// so the bound is the parity test's: k equal, the image within 1e-4 per channel.
+TEST(GpuDeferred, RecordOnTheRenderersGBufferInGpuMemoryIsTheUploadedRun) {
+    REQUIRE_GRAPHICS();
+    auto ctx = test::graphicsContext();
+    render::Renderer renderer(ctx);
+    const scene::Scene scene = scene::atrium();
+    const scene::View& view = scene.view("nave");
+    gpu::AdaptiveShading shading(ctx, scene);
+    const int w = 96, h = 72, m = 3;
+    deferred::AdaptiveParams p;
+    p.tiled = true;
+    const auto uploaded = shading.adaptive(renderer.renderGBuffer(scene, view, w, h, m), p);
+
+    using F = vk::Format;
+    using L = vk::ImageLayout;
+    using S = vk::PipelineStageFlagBits;
+    using A = vk::AccessFlagBits;
+    const auto usage = vk::ImageUsageFlagBits::eStorage | vk::ImageUsageFlagBits::eTransferSrc;
+    vkx::Image out = ctx->createImage(F::eR32G32B32A32Sfloat, std::uint32_t(w), std::uint32_t(h), usage,
+                                      vk::ImageAspectFlagBits::eColor);
+    vkx::Buffer down = ctx->createBuffer(vk::DeviceSize(w) * h * 16, vk::BufferUsageFlagBits::eTransferDst, true);
+    const scene::GBuffer frame = renderer.renderGBufferOnDevice(
+        scene, view, w, h, m, [&](const vk::raii::CommandBuffer& cmd, const render::DeviceGBufferImages& images) {
+            vkx::transition(cmd, out, L::eUndefined, L::eGeneral, S::eTopOfPipe, {}, S::eComputeShader,
+                            A::eShaderWrite);
+            shading.record(cmd, gpu::deviceGBuffer(images), p,
+                           gpu::ImageRef{*out.view, F::eR32G32B32A32Sfloat, usage, std::uint32_t(w), std::uint32_t(h),
+                                         L::eGeneral});
+            vkx::transition(cmd, out, L::eGeneral, L::eTransferSrcOptimal, S::eComputeShader, A::eShaderWrite,
+                            S::eTransfer, A::eTransferRead);
+            cmd.copyImageToBuffer(*out.image, L::eTransferSrcOptimal, *down.buffer,
+                                  vk::BufferImageCopy(0, 0, 0, {vk::ImageAspectFlagBits::eColor, 0, 0, 1}, {0, 0, 0},
+                                                      {std::uint32_t(w), std::uint32_t(h), 1}));
+        });
+    EXPECT_EQ(frame.width, w);
+    EXPECT_EQ(frame.m, m);
+    EXPECT_TRUE(frame.depth.empty() && frame.normal.empty());  // nothing was read back
+    deferred::ImageRgbF recorded(w, h);
+    const auto* texels = static_cast<const float*>(down.mapped);
+    for (std::size_t i = 0; i < recorded.pixels.size(); ++i) {
+        recorded.pixels[i] = {texels[4 * i], texels[4 * i + 1], texels[4 * i + 2]};
+        ASSERT_EQ(texels[4 * i + 3], 1.0f);
+    }
+    const Diff d = diff(recorded, uploaded.image);
+    EXPECT_LE(d.max, 1e-4);
+    EXPECT_LE(d.mean, 1e-6);
+    std::fprintf(stderr, "record on the renderer's G-buffer against the uploaded run: max %.3g, mean %.3g\n", d.max,
+                 d.mean);
+    // Nothing to record, or a bad m: refused before any draw.
+    EXPECT_THROW(renderer.renderGBufferOnDevice(scene, view, w, h, m, {}), Error);
+    EXPECT_THROW(renderer.renderGBufferOnDevice(scene, view, w, h, 5, [](auto&&...) {}), Error);
+    expectNoValidationMessages(ctx);
+}
+
 TEST(GpuDeferred, AllSamplesAreBruteForceBitForBit) {
     REQUIRE_DEVICE();
     auto ctx = gpuContext();

@@ -30,6 +30,7 @@
 
 #include "ssfx/deferred/adaptive.hpp"
 #include "ssfx/gpu/aa.hpp"
+#include "ssfx/render/renderer.hpp"
 #include "ssfx/scene/gbuffer.hpp"
 #include "ssfx/scene/scene.hpp"
 #include "ssfx/vk/context.hpp"
@@ -49,6 +50,10 @@ struct DeviceGBuffer {
     Camera camera;                     //!< of the (m width) x (m height) sample grid
     glm::dmat4 view{1.0};              //!< world -> camera (for the lights)
 };
+
+//! The renderer's G-buffer left on the device (render::Renderer::renderGBufferOnDevice) as
+//! the passes' input: the attachments' views, formats and layouts, the size, m, the camera.
+DeviceGBuffer deviceGBuffer(const render::DeviceGBufferImages& images);
 
 //! What one run gives: the CPU's DeferredResult (firstMs, evaluateMs and restMs are the
 //! passes' GPU times from timestamps, 0 where the queue has none) and the lane counts.

@@ -57,6 +57,19 @@ struct DeviceDepth {
 //! Records GPU work after the draw, into the draw's command buffer.
 using DepthRecorder = std::function<void(const vk::raii::CommandBuffer&, const DeviceDepth&)>;
 
+//! A G-buffer while it is on the device (Renderer::renderGBufferOnDevice): 2-D views of the
+//! draw's attachments, (m width) x (m height), SAMPLED, their writes made visible to
+//! compute-shader reads. Formats: depth D32_SFLOAT (its depth aspect, layout
+//! DEPTH_READ_ONLY_OPTIMAL); normal R16G16B16A16_SNORM (camera space), uv R32G32_SFLOAT,
+//! uvGrad R32G32B32A32_SFLOAT (du/dx, dv/dx, du/dy, dv/dy per final pixel), ids R16G16_UINT
+//! (material, texture layer; 0xFFFF: background, none), in layout SHADER_READ_ONLY_OPTIMAL.
+struct DeviceGBufferImages {
+    DeviceDepth depth, normal, uv, uvGrad, ids;  //!< DeviceDepth: a view, format, usage, size and layout
+    int width = 0, height = 0, m = 1;            //!< the final image and the samples per pixel's side
+    scene::CameraSetup camera;                   //!< of the (m width) x (m height) sample grid
+};
+using GBufferRecorder = std::function<void(const vk::raii::CommandBuffer&, const DeviceGBufferImages&)>;
+
 class Renderer {
 public:
     //! Creates its own Vulkan context (instance, device, a graphics queue). Throws ssfx::Error
@@ -87,6 +100,12 @@ public:
                                     DepthFormat format, int guard, const DepthRecorder& after);
     //! G-buffer at m x m supersampling (m = 1..4) of a width x height image.
     scene::GBuffer renderGBuffer(const scene::Scene& scene, const scene::View& view, int width, int height, int m);
+    //! The same draw with the G-buffer left on the device: `after` records into the draw's
+    //! command buffer, after it (how the GPU adaptive shading reads the renderer's G-buffer
+    //! without a copy). Nothing is read back; returns when the submission is done, with the
+    //! G-buffer's size, m, camera and draw time and no planes.
+    scene::GBuffer renderGBufferOnDevice(const scene::Scene& scene, const scene::View& view, int width, int height,
+                                         int m, const GBufferRecorder& after);
     //! Forward-shaded colour at (scale width) x (scale height).
     ColorRender renderColor(const scene::Scene& scene, const scene::View& view, int width, int height, int scale = 1);
 
