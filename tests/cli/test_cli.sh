@@ -229,6 +229,9 @@ check testscene_big 2 "$SSFX" testscene --out "$OUT/big_scene" --width 5000 --he
 check ao_save_badparam 2 "$SSFX" ao --scene room --size 32x24 --save-depth "$OUT/sd.exr" -p radius=-1 -o "$OUT/x.png"
 [ -e "$OUT/sd.exr" ] && { echo "FAIL ao_save_badparam: --save-depth was written"; fail=1; }
 check report_noref 2 "$SSFX" eval report --quick --no-ao --no-render --out "$OUT/rep" --author-data "$OUT/no/such/dir"
+check report_deferred_norender 2 "$SSFX" eval report --quick --no-ao --no-render --deferred-backend vulkan --out "$OUT/rep2"
+contains report_deferred_norender "$OUT/report_deferred_norender.err" "--no-render"
+[ ! -e "$OUT/rep2" ] || { echo "FAIL report_deferred_norender: a refused run wrote $OUT/rep2"; fail=1; }
 [ -e "$OUT/x.png" ] && { echo "FAIL: a refused run wrote x.png"; fail=1; }
 check ao_badparam 2 "$SSFX" ao --scene room --size 32x24 -p radius=-2 -o "$OUT/x.png"
 contains ao_badparam "$OUT/ao_badparam.err" "radius"
