@@ -29,6 +29,9 @@ const std::uint32_t kEvaluate[] = {
 const std::uint32_t kRest[] = {
 #include "shaders/deferred_rest.comp.inc"
 };
+const std::uint32_t kList[] = {
+#include "shaders/deferred_list.comp.inc"
+};
 
 using S = vk::PipelineStageFlagBits;
 using A = vk::AccessFlagBits;
@@ -66,12 +69,25 @@ const std::vector<vkx::BindingSpec> kBindings = {
     {Desc::eStorageBuffer},        {Desc::eCombinedImageSampler}, {Desc::eCombinedImageSampler},
     {Desc::eCombinedImageSampler}, {Desc::eCombinedImageSampler}, {Desc::eCombinedImageSampler},
     {Desc::eCombinedImageSampler}, {Desc::eStorageImage},         {Desc::eStorageImage},
-    {Desc::eStorageImage},         {Desc::eStorageImage},         {Desc::eStorageBuffer}};
+    {Desc::eStorageImage},         {Desc::eStorageImage},         {Desc::eStorageBuffer},
+    {Desc::eStorageBuffer},        {Desc::eStorageBuffer},        {Desc::eStorageBuffer},
+    {Desc::eStorageBuffer}};
 
 constexpr F kColorFormat = F::eR32G32B32A32Sfloat;  // S, the metrics, the output
 constexpr F kKFormat = F::eR32Uint;
 constexpr int kGroup = 8;  // deferred.glsl's local size
-enum Variant { kPerPixel = 0, kTiled = 1, kBruteForce = 2 };
+// The rest pass's shaders (deferred_rest.comp's kVariant; the list is deferred_list.comp).
+enum Variant { kPerPixel = 0, kTiled = 1, kBruteForce = 2, kSampleList = 3 };
+
+int variantOf(Schedule schedule, const deferred::AdaptiveParams& p) {
+    switch (schedule) {
+        case Schedule::PerPixel: return kPerPixel;
+        case Schedule::Tiled: return kTiled;
+        case Schedule::SampleList: return kSampleList;
+        case Schedule::FromParams: break;
+    }
+    return p.tiled ? kTiled : kPerPixel;
+}
 
 // A double as a float pair hi + lo (exact.glsl's pairs).
 std::array<float, 2> pairOf(double v) {
@@ -125,7 +141,12 @@ struct AdaptiveShading::Impl {
     int hardwareAnisotropy = -1;  // the hardware sampler's maxAnisotropy
     std::unique_ptr<vkx::ComputePipeline> first, evaluate;
     std::array<std::unique_ptr<vkx::ComputePipeline>, 3> rest;
+    std::array<std::unique_ptr<vkx::ComputePipeline>, 4> list;  // enqueue, args, shade, resolve
     vkx::Buffer setupBuffer, lightBuffer, counters;
+    // The sample list's buffers, for `listPixels` pixels of up to `listSamples` samples each
+    // (grown on demand), and its indirect group counts.
+    vkx::Buffer entries, colours, bases, listArgs;
+    std::size_t listPixels = 0, listSamples = 0;
     std::unique_ptr<vkx::GpuTimer> timer;
     bool profiling = false;
     // Scratch of one image size: S, k, the metrics.
@@ -145,11 +166,12 @@ struct AdaptiveShading::Impl {
         const auto subgroup =
             c.physical.getProperties2<vk::PhysicalDeviceProperties2, vk::PhysicalDeviceSubgroupProperties>()
                 .get<vk::PhysicalDeviceSubgroupProperties>();
+        const auto needed = vk::SubgroupFeatureFlagBits::eArithmetic | vk::SubgroupFeatureFlagBits::eBallot;
         if (!(subgroup.supportedStages & vk::ShaderStageFlagBits::eCompute) ||
-            !(subgroup.supportedOperations & vk::SubgroupFeatureFlagBits::eArithmetic))
+            (subgroup.supportedOperations & needed) != needed)
             throw Error(
-                "gpu::AdaptiveShading: the device has no subgroup arithmetic in compute shaders (the rest "
-                "pass counts its idle lanes with it)");
+                "gpu::AdaptiveShading: the device has no subgroup arithmetic and ballot in compute shaders (the rest "
+                "pass counts its idle lanes with them; the sample list reserves its ranges with them)");
         scene.validate();
         lights = scene.lights;
         ambient = scene.ambient;
@@ -182,6 +204,9 @@ struct AdaptiveShading::Impl {
             first = make(kFirst, 0);
             evaluate = make(kEvaluate, 0);
             for (int v = 0; v < 3; ++v) rest[std::size_t(v)] = make(kRest, v);
+            for (int stage = 0; stage < 4; ++stage) list[std::size_t(stage)] = make(kList, stage);
+            listArgs = c.createBuffer(
+                16, vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eIndirectBuffer, false);
             setupBuffer = c.createBuffer(sizeof(DeferredSetup), vk::BufferUsageFlagBits::eStorageBuffer, true);
             counters = c.createBuffer(
                 16, vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eTransferDst, true);
@@ -224,6 +249,18 @@ struct AdaptiveShading::Impl {
             hardwareAnisotropy = maxAnisotropy;
         }
         return hardware;
+    }
+
+    // The sample list's buffers for a w x h image of n samples per pixel (every sample at worst).
+    void ensureList(int w, int h, int n) {
+        const std::size_t pixels = std::size_t(w) * std::size_t(h), samples = std::size_t(n);
+        if (pixels <= listPixels && samples <= listSamples) return;
+        listPixels = std::max(listPixels, pixels), listSamples = std::max(listSamples, samples);
+        const vk::DeviceSize most = vk::DeviceSize(listPixels) * listSamples;
+        const auto usage = vk::BufferUsageFlagBits::eStorageBuffer;
+        entries = ctx->createBuffer(most * 4, usage, false);
+        colours = ctx->createBuffer(most * 16, usage, false);
+        bases = ctx->createBuffer(vk::DeviceSize(listPixels) * 4, usage, false);
     }
 
     void ensureScratch(int w, int h) {
@@ -303,6 +340,16 @@ struct AdaptiveShading::Impl {
         for (std::uint32_t b = 0; b < 6; ++b) writes.push_back({{}, 4 + b, 0, Desc::eCombinedImageSampler, sampled[b]});
         for (std::uint32_t b = 0; b < 4; ++b) writes.push_back({{}, 10 + b, 0, Desc::eStorageImage, storage[b]});
         writes.push_back({{}, 14, 0, Desc::eStorageBuffer, {}, bufs[4]});
+        const bool sampleList = variant == kSampleList;
+        vk::DescriptorBufferInfo listBufs[4];
+        if (sampleList) {
+            ensureList(g.width, g.height, g.m * g.m);
+            const vk::Buffer listBuffers[] = {*entries.buffer, *colours.buffer, *bases.buffer, *listArgs.buffer};
+            for (std::size_t b = 0; b < 4; ++b)
+                listBufs[b] = vk::DescriptorBufferInfo(listBuffers[b], 0, VK_WHOLE_SIZE);
+            for (std::uint32_t b = 0; b < 4; ++b)
+                writes.push_back({{}, 15 + b, 0, Desc::eStorageBuffer, {}, listBufs[b]});
+        }
 
         const std::uint32_t gx = vkx::groupCount(w, kGroup), gy = vkx::groupCount(h, kGroup);
         auto pass = [&](const vkx::ComputePipeline& p, std::uint32_t interval) {
@@ -316,12 +363,26 @@ struct AdaptiveShading::Impl {
             pass(*first, 1);
             pass(*evaluate, 2);
         }
-        pass(*rest[std::size_t(variant)], variant == kBruteForce ? 1 : 3);
+        if (!sampleList) {
+            pass(*rest[std::size_t(variant)], variant == kBruteForce ? 1 : 3);
+            return;
+        }
+        // The sample list: enqueue, its group counts, the samples (indirect), the resolve.
+        if (profiling) timer->begin(cmd, 3, S::eComputeShader);
+        list[0]->dispatchPushed(cmd, writes, nullptr, gx, gy);
+        vkx::computeBarrier(cmd, S::eComputeShader, A::eShaderRead | A::eShaderWrite);
+        list[1]->dispatchPushed(cmd, writes, nullptr, 1);
+        vkx::computeBarrier(cmd, S::eComputeShader | S::eDrawIndirect, A::eShaderRead | A::eIndirectCommandRead);
+        list[2]->dispatchPushedIndirect(cmd, writes, nullptr, *listArgs.buffer);
+        vkx::computeBarrier(cmd, S::eComputeShader, A::eShaderRead | A::eShaderWrite);
+        list[3]->dispatchPushed(cmd, writes, nullptr, gx, gy);
+        if (profiling) timer->end(cmd, 3, S::eComputeShader);
+        vkx::computeBarrier(cmd, S::eComputeShader, A::eShaderRead | A::eShaderWrite);
     }
 
     // Uploads a host G-buffer, runs, reads back.
     GpuDeferredResult run(const scene::GBuffer& g, const deferred::ShadingParams& sp,
-                          const deferred::AdaptiveParams* ap) {
+                          const deferred::AdaptiveParams* ap, Schedule schedule) {
         deferred::validateGBuffer(g, materialCount, layerCount);
         if (g.m < 1 || g.m > 4) throw Error(fmt::format("deferred: G-buffer supersampling m = {} is not in 1..4", g.m));
         vkx::Context& c = *ctx;
@@ -382,7 +443,7 @@ struct AdaptiveShading::Impl {
             dg.width = g.width, dg.height = g.height, dg.m = g.m;
             dg.camera = g.camera.camera, dg.view = g.camera.view;
             writeSetup(dg, sp, ap);
-            const int variant = !adaptive ? kBruteForce : ap->tiled ? kTiled : kPerPixel;
+            const int variant = !adaptive ? kBruteForce : variantOf(schedule, *ap);
 
             c.submit([&](const vk::raii::CommandBuffer& cmd) {
                 for (std::size_t i = 0; i < images.size(); ++i) {
@@ -464,14 +525,15 @@ AdaptiveShading::~AdaptiveShading() = default;
 
 Sampling AdaptiveShading::lookup() const { return impl_->lookup; }
 
-GpuDeferredResult AdaptiveShading::adaptive(const scene::GBuffer& gbuffer, const deferred::AdaptiveParams& params) {
+GpuDeferredResult AdaptiveShading::adaptive(const scene::GBuffer& gbuffer, const deferred::AdaptiveParams& params,
+                                            Schedule schedule) {
     deferred::validate(params);
-    return impl_->run(gbuffer, params.shading, &params);
+    return impl_->run(gbuffer, params.shading, &params, schedule);
 }
 
 GpuDeferredResult AdaptiveShading::bruteForce(const scene::GBuffer& gbuffer, const deferred::ShadingParams& params) {
     deferred::validate(params);
-    return impl_->run(gbuffer, params, nullptr);
+    return impl_->run(gbuffer, params, nullptr, Schedule::FromParams);
 }
 
 DeviceGBuffer deviceGBuffer(const render::DeviceGBufferImages& images) {
@@ -487,7 +549,7 @@ DeviceGBuffer deviceGBuffer(const render::DeviceGBufferImages& images) {
 }
 
 void AdaptiveShading::record(const vk::raii::CommandBuffer& cmd, const DeviceGBuffer& g,
-                             const deferred::AdaptiveParams& params, const ImageRef& output) {
+                             const deferred::AdaptiveParams& params, const ImageRef& output, Schedule schedule) {
     deferred::validate(params);
     if (g.m < 1 || g.m > 4) throw Error(fmt::format("gpu::AdaptiveShading: m = {} is not in 1..4", g.m));
     checkDimensions(g.width, g.height, "gpu::AdaptiveShading image");
@@ -508,7 +570,7 @@ void AdaptiveShading::record(const vk::raii::CommandBuffer& cmd, const DeviceGBu
                                 g.width, g.height));
     vkx::guarded("recording the GPU adaptive shading", [&] {
         impl_->writeSetup(g, params.shading, &params);
-        impl_->recordPasses(cmd, g, params.tiled ? kTiled : kPerPixel, params.shading.maxAnisotropy, output.view);
+        impl_->recordPasses(cmd, g, variantOf(schedule, params), params.shading.maxAnisotropy, output.view);
     });
 }
 

@@ -104,6 +104,14 @@ TEST(GpuDeferred, AdaptiveOnRenderedGBuffersIsTheCpus) {
             EXPECT_EQ(t.shaded, gpu.shaded);
             EXPECT_EQ(t.busyLanes, gpu.busyLanes);
             EXPECT_LT(t.idleLaneShare(), gpu.idleLaneShare());
+            // The sample list: the same image, samples and busy lanes; idle lanes only in the
+            // last partial subgroup of the shade stage.
+            const auto l = shading.adaptive(g, p, gpu::Schedule::SampleList);
+            EXPECT_EQ(l.image, gpu.image);
+            EXPECT_EQ(l.samples.pixels(), gpu.samples.pixels());
+            EXPECT_EQ(l.shaded, gpu.shaded);
+            EXPECT_EQ(l.busyLanes, gpu.busyLanes);
+            EXPECT_LT(l.issuedLanes - l.busyLanes, std::uint64_t(l.subgroupSize));
 
             // Brute force on the GPU against the CPU's, within the same bounds.
             const auto bf = shading.bruteForce(g, p.shading);
@@ -179,7 +187,8 @@ TEST(GpuDeferred, RecordOnTheRenderersGBufferInGpuMemoryIsTheUploadedRun) {
                             A::eShaderWrite);
             shading.record(cmd, gpu::deviceGBuffer(images), p,
                            gpu::ImageRef{*out.view, F::eR32G32B32A32Sfloat, usage, std::uint32_t(w), std::uint32_t(h),
-                                         L::eGeneral});
+                                         L::eGeneral},
+                           gpu::Schedule::SampleList);  // (its indirect dispatch in the caller's buffer)
             vkx::transition(cmd, out, L::eGeneral, L::eTransferSrcOptimal, S::eComputeShader, A::eShaderWrite,
                             S::eTransfer, A::eTransferRead);
             cmd.copyImageToBuffer(*out.image, L::eTransferSrcOptimal, *down.buffer,
@@ -216,9 +225,9 @@ TEST(GpuDeferred, AllSamplesAreBruteForceBitForBit) {
         const scene::GBuffer g = test::handMadeGBuffer(scene, 19, 13, m, true);  // partial 8 x 8 tiles
         deferred::AdaptiveParams p;
         p.cDepth = 1e9f;
-        for (const bool tiled : {false, true}) {
-            p.tiled = tiled;
-            const auto a = shading.adaptive(g, p);
+        for (const gpu::Schedule schedule :
+             {gpu::Schedule::PerPixel, gpu::Schedule::Tiled, gpu::Schedule::SampleList}) {
+            const auto a = shading.adaptive(g, p, schedule);
             const auto r = shading.bruteForce(g, p.shading);
             for (auto k : a.samples.pixels()) ASSERT_EQ(k, m * m);
             EXPECT_EQ(a.image, r.image);

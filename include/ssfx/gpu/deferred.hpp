@@ -11,9 +11,10 @@
 // index 0 of every window with the whole pixel's footprint, and its luma), evaluate (k from
 // the depth variance, the normal cone and S's luminance range), rest (k - 1 more samples in
 // dither order, averaged with the first). Brute force is one dispatch of every sample.
-// The rest pass has two variants (AdaptiveParams::tiled): per pixel, or tiled (the tile's
-// pixels ranked by k, so that the lanes of a subgroup hold similar k: the paper's future
-// work); both give the same image, and the pass counts the share of its lanes that idle.
+// The rest pass has three schedules (gpu::Schedule): per pixel, tiled (the tile's pixels
+// ranked by k, so that the lanes of a subgroup hold similar k: the paper's future work), or
+// a sample list (one sample per invocation, an indirect dispatch, a resolve); all give the
+// same image, and the pass counts the share of its lanes that idle.
 //
 // Texture lookups (gpu::Sampling): `model` runs the CPU's sampler model (deferred/sampler.hpp:
 // bilinear on the texels' bytes, its probes and level of detail) in the shader; `hardware`
@@ -65,12 +66,21 @@ struct GpuDeferredResult : deferred::DeferredResult {
     double idleLaneShare() const { return issuedLanes ? 1.0 - double(busyLanes) / double(issuedLanes) : 0.0; }
 };
 
+//! How the rest pass spreads its samples over the lanes (the image is the same bit for bit):
+//! FromParams: AdaptiveParams::tiled picks Tiled or PerPixel (the CPU's choice);
+//! PerPixel: one invocation per pixel loops over its samples (a subgroup runs as long as its
+//! largest k); Tiled: each 8 x 8 tile's pixels ranked by k first (the paper's future work);
+//! SampleList: the samples enqueued, shaded one per invocation by an indirect dispatch, and
+//! summed per pixel in dither order (no lane waits for another pixel's loop).
+enum class Schedule { FromParams, PerPixel, Tiled, SampleList };
+
 class AdaptiveShading {
 public:
     //! Uploads the scene's materials and texture array (the model's bytes and the device's
     //! image) and makes the pipelines. Throws ssfx::Error for a device without push
-    //! descriptors or subgroup arithmetic in compute shaders (the lane counts), or a scene
-    //! that does not validate. The scene is copied where needed: it need not outlive this.
+    //! descriptors or subgroup arithmetic and ballot in compute shaders (the lane counts, the
+    //! sample list), or a scene that does not validate. The scene is copied where needed: it
+    //! need not outlive this.
     AdaptiveShading(std::shared_ptr<vkx::Context> ctx, const scene::Scene& scene, Sampling lookup = Sampling::Model);
     ~AdaptiveShading();
     AdaptiveShading(const AdaptiveShading&) = delete;
@@ -81,17 +91,20 @@ public:
     //! The method on a host G-buffer (uploaded, run, read back: image, k, the metrics, the
     //! counts). Throws ssfx::Error as the CPU does for a bad G-buffer or params, and for a
     //! sample grid beyond the device's image limit.
-    GpuDeferredResult adaptive(const scene::GBuffer& gbuffer, const deferred::AdaptiveParams& params);
+    GpuDeferredResult adaptive(const scene::GBuffer& gbuffer, const deferred::AdaptiveParams& params,
+                               Schedule schedule = Schedule::FromParams);
     //! Brute force: every sample with the 1/m footprint (the image and the counts).
     GpuDeferredResult bruteForce(const scene::GBuffer& gbuffer, const deferred::ShadingParams& params);
 
     //! Records the adaptive passes into `cmd`: reads `gbuffer`, writes every pixel of
     //! `output` (R32G32B32A32_SFLOAT, STORAGE usage, layout GENERAL, width x height; linear
     //! RGB, alpha 1); the caller's barrier after record() makes the writes visible to what
-    //! reads next. The pass's scratch images (S, k, the metrics) and its setup and counters
-    //! buffers are shared between recordings: one recording in flight at a time.
+    //! reads next. The pass's scratch images (S, k, the metrics), its setup and counters
+    //! buffers and the sample list's buffers (SampleList: 20 bytes per possible sample,
+    //! grown on demand) are shared between recordings: one recording in flight at a time.
     void record(const vk::raii::CommandBuffer& cmd, const DeviceGBuffer& gbuffer,
-                const deferred::AdaptiveParams& params, const ImageRef& output);
+                const deferred::AdaptiveParams& params, const ImageRef& output,
+                Schedule schedule = Schedule::FromParams);
 
 private:
     struct Impl;

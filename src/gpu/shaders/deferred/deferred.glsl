@@ -50,8 +50,15 @@ layout(set = 0, binding = 11, r32ui) uniform uimage2D kImage;       // samples p
 layout(set = 0, binding = 12, rgba32f) uniform image2D metrics;     // k_d, k_n, k_s
 layout(set = 0, binding = 13, rgba32f) uniform writeonly image2D outImage;
 // [0] samples shaded by the rest pass (= the busy lane-iterations), [1] lane-iterations
-// issued (per subgroup: its lanes x its busiest lane's samples), [2] the subgroup size seen.
-layout(set = 0, binding = 14, std430) buffer Counters { uint counters[3]; };
+// issued (per subgroup: its lanes x its busiest lane's samples), [2] the subgroup size seen,
+// [3] the sample list's length (the sample-list schedule).
+layout(set = 0, binding = 14, std430) buffer Counters { uint counters[4]; };
+// The sample-list schedule (deferred_list.comp): per entry its pixel (y width + x) and its
+// colour; per pixel the first entry of its range; the shade stage's indirect group counts.
+layout(set = 0, binding = 15, std430) buffer Entries { uint entries[]; };
+layout(set = 0, binding = 16, std430) buffer Colours { vec4 colours[]; };
+layout(set = 0, binding = 17, std430) buffer Bases { uint bases[]; };
+layout(set = 0, binding = 18, std430) buffer Args { uint args[3]; };
 
 layout(constant_id = 0) const int kLookupHardware = 0;  // 1: the device's sampler (textureGrad)
 
@@ -192,6 +199,10 @@ float lumaOf(vec3 c) {
 }
 
 // This invocation's pixel; false outside the image.
+// Whether the rest of pixel p (k samples) shades its first sample again: where k > 1 and it
+// is textured (its albedo depends on the footprint, so that k = m^2 equals brute force).
+bool reshadesFirst(ivec2 p, int k) { return k > 1 && texelFetch(gIds, windowSample(p, 0), 0).y != kNoMaterial; }
+
 bool pixelOf(out ivec2 p) {
     p = ivec2(gl_GlobalInvocationID.xy);
     return p.x < setup.width && p.y < setup.height;

@@ -31,7 +31,7 @@ uint shadePixel(ivec2 p) {
     // One loop for the re-shaded first sample and the others (not a branch before a loop):
     // lanes that start at 0 and lanes that start at 1 run the same iterations together, and
     // a pixel with k = 1 runs none (its image is S). 0 + x and x / 1 are exact: the CPU's sums.
-    const bool reshade = k > 1 && texelFetch(gIds, windowSample(p, 0), 0).y != kNoMaterial;
+    const bool reshade = reshadesFirst(p, k);
     const float footprint = 1.0 / sqrt(float(k));
     vec3 sum = reshade ? vec3(0.0) : imageLoad(firstImage, p).rgb;
     for (int s = reshade ? 0 : 1; s < k; ++s) sum += shadeSample(windowSample(p, s), footprint);
