@@ -1,6 +1,7 @@
 // ssfx deferred: adaptive supersampling of a rendered G-buffer, beside brute-force supersampling.
 #include <fmt/format.h>
 
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <optional>
@@ -23,7 +24,7 @@ namespace ssfx::cli {
 namespace {
 
 struct DeferredOptions {
-    std::string scene, view, size = "1024x768", out, device, backend = "cpu", lookup;
+    std::string scene, view, size = "1024x768", out, device, backend = "cpu", lookup, schedule;
     std::vector<std::string> params;
     int m = 4, stall = 0, threads = 0;
     bool bruteForce = false;
@@ -48,24 +49,27 @@ GpuRun runOnGpu(const DeferredOptions& o, const scene::Scene& scene, const scene
     r.device = ctx->info.name;
     // Untimed warm-up of each pipeline (without the stall): lavapipe compiles a shader's
     // variant on its first dispatch, inside the timestamps.
+    constexpr std::array<gpu::Schedule, 3> kSchedules{gpu::Schedule::PerPixel, gpu::Schedule::Tiled,
+                                                      gpu::Schedule::SampleList};
     deferred::AdaptiveParams warm = p;
     warm.shading.stall = 0;
-    for (const bool tiled : {false, true}) {
-        warm.tiled = tiled;
-        shading.adaptive(g, warm);
-    }
+    for (const gpu::Schedule s : kSchedules) shading.adaptive(g, warm, s);
     if (o.bruteForce) shading.bruteForce(g, warm.shading);
-    const gpu::GpuDeferredResult a = shading.adaptive(g, p);
-    deferred::AdaptiveParams other = p;
-    other.tiled = !p.tiled;
-    const gpu::GpuDeferredResult t = shading.adaptive(g, other);
-    const gpu::GpuDeferredResult& perPixel = p.tiled ? t : a;
-    const gpu::GpuDeferredResult& tiled = p.tiled ? a : t;
-    r.summary = fmt::format(
-        "; rest pass: per pixel {:.2f} ms, {:.1f} % of lanes idle; tiled {:.2f} ms, {:.1f} % idle "
-        "(subgroup {})",
-        perPixel.restMs, 100.0 * perPixel.idleLaneShare(), tiled.restMs, 100.0 * tiled.idleLaneShare(), a.subgroupSize);
-    r.adaptive = a;
+    // Every schedule (the same image); the one asked for (or -p tiled's) is the result.
+    const gpu::Schedule chosen = o.schedule == "pixel"   ? gpu::Schedule::PerPixel
+                                 : o.schedule == "tiled" ? gpu::Schedule::Tiled
+                                 : o.schedule == "list"  ? gpu::Schedule::SampleList
+                                 : p.tiled               ? gpu::Schedule::Tiled
+                                                         : gpu::Schedule::PerPixel;
+    r.summary = "; rest pass:";
+    const char* names[] = {"per pixel", "tiled", "sample list"};
+    for (std::size_t i = 0; i < kSchedules.size(); ++i) {
+        gpu::GpuDeferredResult one = shading.adaptive(g, p, kSchedules[i]);
+        r.summary += fmt::format("{} {} {:.2f} ms, {:.1f} % of lanes idle", i ? ";" : "", names[i], one.restMs,
+                                 100.0 * one.idleLaneShare());
+        if (i + 1 == kSchedules.size()) r.summary += fmt::format(" (subgroup {})", one.subgroupSize);
+        if (kSchedules[i] == chosen) r.adaptive = std::move(one);
+    }
     if (o.bruteForce) {
         const gpu::GpuDeferredResult b = shading.bruteForce(g, p.shading);
         r.summary += fmt::format("; brute force {:.1f} % of lanes idle", 100.0 * b.idleLaneShare());
@@ -80,6 +84,8 @@ void run(const DeferredOptions& o) {
     if (o.out.empty()) throw Error("no output folder given (--out DIR)");
     const bool vulkan = o.backend == "vulkan";
     if (!o.lookup.empty() && !vulkan) throw Error("--lookup goes with --backend vulkan (the CPU runs the model)");
+    if (!o.schedule.empty() && !vulkan)
+        throw Error("--schedule goes with --backend vulkan (on the CPU: -p tiled=true|false)");
 #ifndef SSFX_HAVE_GPU
     if (vulkan) throw Error("--backend vulkan: this ssfx was built without the GPU backend");
 #endif
@@ -168,13 +174,18 @@ void addDeferredCommand(CLI::App& app) {
                     "(each metric's k), with --brute-force brute_force.png, error.png (|error| 0..0.05)");
     cmd->add_option("--backend", o->backend,
                     "cpu (default) or vulkan: shade on the GPU (the G-buffer read back and uploaded; times from GPU "
-                    "timestamps after an untimed warm-up; also runs the other rest-pass variant and prints both "
-                    "variants' idle-lane shares)")
+                    "timestamps after an untimed warm-up; runs the rest pass's three schedules and prints each one's "
+                    "time and idle-lane share)")
         ->check(CLI::IsMember({"cpu", "vulkan"}));
     cmd->add_option("--lookup", o->lookup,
                     "With --backend vulkan: model (default: the CPU's sampler model in the shader) or hardware (the "
                     "device's textureGrad with anisotropic filtering)")
         ->check(CLI::IsMember({"model", "hardware"}));
+    cmd->add_option("--schedule", o->schedule,
+                    "With --backend vulkan: the rest pass's schedule whose result is written: pixel (one invocation "
+                    "per pixel), tiled (8x8 tiles ranked by k) or list (one sample per invocation); default: -p "
+                    "tiled's. All three run and are printed; their images are the same")
+        ->check(CLI::IsMember({"pixel", "tiled", "list"}));
     cmd->add_option("--device", o->device, "Vulkan device index or part of its name");
     cmd->add_option("--threads", o->threads, "Worker threads (0 = all)")->check(CLI::Range(0, 1024));
     cmd->footer(

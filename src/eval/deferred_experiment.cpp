@@ -99,7 +99,7 @@ Section runDeferredExperiment(const DeferredExperimentOptions& o) {
 #ifdef SSFX_HAVE_GPU
     std::vector<Row> gpuRows;
     std::vector<std::string> gpuNotes;  // k against the CPU's, per m
-    double gpuSpeedupPlain = NAN, gpuSpeedupStalled = NAN;
+    double gpuSpeedupPlain = NAN, gpuSpeedupStalled = NAN, listSpeedupPlain = NAN, listSpeedupStalled = NAN;
     int gpuSubgroup = 0;
 #endif
     nlohmann::ordered_json j;
@@ -152,8 +152,8 @@ Section runDeferredExperiment(const DeferredExperimentOptions& o) {
 #ifdef SSFX_HAVE_GPU
         if (gpuShading) {
             // The same rows on the GPU passes, on the same G-buffer, times from GPU timestamps.
-            std::vector<double> bMs, bStallMs, aMs, aStallMs, tMs, tStallMs;
-            gpu::GpuDeferredResult gb, ga, gt;
+            std::vector<double> bMs, bStallMs, aMs, aStallMs, tMs, tStallMs, lMs, lStallMs;
+            gpu::GpuDeferredResult gb, ga, gt, gl;
             // Run -1 warms up, untimed: lavapipe compiles a shader's variant on its first dispatch.
             for (int r = -1; r < reps; ++r) {
                 const auto keep = [r](std::vector<double>& v, double ms) {
@@ -163,13 +163,19 @@ Section runDeferredExperiment(const DeferredExperimentOptions& o) {
                 keep(bMs, gb.totalMs());
                 keep(bStallMs, gpuShading->bruteForce(g, stalled).totalMs());
                 if (m == 1) continue;
-                ga = gpuShading->adaptive(g, o.params);
+                using gpu::Schedule;
+                ga = gpuShading->adaptive(g, o.params, Schedule::PerPixel);
                 keep(aMs, ga.totalMs());
-                keep(aStallMs, gpuShading->adaptive(g, stalledParams).totalMs());
-                gt = gpuShading->adaptive(g, tiledParams);
-                SSFX_ASSERT(gt.image == ga.image && gt.shaded == ga.shaded);  // only the lanes' order differs
+                keep(aStallMs, gpuShading->adaptive(g, stalledParams, Schedule::PerPixel).totalMs());
+                gt = gpuShading->adaptive(g, o.params, Schedule::Tiled);
                 keep(tMs, gt.totalMs());
-                keep(tStallMs, gpuShading->adaptive(g, tiledStalledParams).totalMs());
+                keep(tStallMs, gpuShading->adaptive(g, stalledParams, Schedule::Tiled).totalMs());
+                gl = gpuShading->adaptive(g, o.params, Schedule::SampleList);
+                keep(lMs, gl.totalMs());
+                keep(lStallMs, gpuShading->adaptive(g, stalledParams, Schedule::SampleList).totalMs());
+                // Only the lanes' order differs.
+                SSFX_ASSERT(gt.image == ga.image && gt.shaded == ga.shaded);
+                SSFX_ASSERT(gl.image == ga.image && gl.shaded == ga.shaded);
             }
             gpuSubgroup = gb.subgroupSize;
             const double vsCpuRef = maxAbsoluteError(gb.image, ref.image);
@@ -185,11 +191,15 @@ Section runDeferredExperiment(const DeferredExperimentOptions& o) {
                                    ga.shadedPercent(), ga.idleLaneShare(), vsCpuOurs});
                 gpuRows.push_back({ss, "ours, tiles by k", gbufferMs, median(tMs), median(tStallMs), gmse,
                                    psnrFromMse(gmse), gt.shadedPercent(), gt.idleLaneShare(), vsCpuOurs});
+                gpuRows.push_back({ss, "ours, sample list", gbufferMs, median(lMs), median(lStallMs), gmse,
+                                   psnrFromMse(gmse), gl.shadedPercent(), gl.idleLaneShare(), vsCpuOurs});
                 gpuNotes.push_back(fmt::format("{}: k differs from the CPU's at {} of {} pixels", ss,
                                                countDifferent(ga.samples, ours.samples), ga.samples.pixels().size()));
                 if (m == 4) {
                     gpuSpeedupPlain = median(bMs) / median(aMs);
                     gpuSpeedupStalled = median(bStallMs) / median(aStallMs);
+                    listSpeedupPlain = median(bMs) / median(lMs);
+                    listSpeedupStalled = median(bStallMs) / median(lStallMs);
                 }
             }
         }
@@ -273,8 +283,9 @@ Section runDeferredExperiment(const DeferredExperimentOptions& o) {
             "times from GPU timestamps around the passes, median of {} run(s); MSE and PSNR of ours against the GPU's "
             "brute force at the same m. \"Lanes idle\": the share of the rest pass's (brute force's) lane-iterations "
             "that wait for a busier lane of their subgroup (subgroup {}), counted in the shader. \"Max |GPU - CPU|\": "
-            "the largest channel difference from the CPU's image of the same row (RGB in [0, 1]). \"Tiles by k\": "
-            "each 8x8 tile's pixels ranked by k before the rest pass (the same image).",
+            "the largest channel difference from the CPU's image of the same row (RGB in [0, 1]). \"Ours\": one "
+            "invocation per pixel; \"tiles by k\": each 8x8 tile's pixels ranked by k before the rest pass; \"sample "
+            "list\": the samples enqueued and shaded one per invocation (gpu::Schedule; the same image).",
             reps, gpuSubgroup);
         gb.table.header = {"supersampling", "method",  "shading ms", "total ms",     "stalled shading ms",
                            "MSE (x1e-5)",   "PSNR dB", "samples %",  "lanes idle %", "max |GPU - CPU|"};
@@ -295,12 +306,14 @@ Section runDeferredExperiment(const DeferredExperimentOptions& o) {
         std::string notes;
         for (const auto& n : gpuNotes) notes += (notes.empty() ? "" : "; ") + n;
         gb.after = fmt::format(
-            "At 4x4 on the GPU: ours is {:.2f}x faster than brute force in shading, {:.2f}x with the stall (the CPU: "
-            "{:.2f}x, {:.2f}x). {}.",
-            gpuSpeedupPlain, gpuSpeedupStalled, speedupPlain, speedupStalled, notes);
+            "At 4x4 on the GPU: ours is {:.2f}x faster than brute force in shading, {:.2f}x with the stall; with the "
+            "sample list {:.2f}x and {:.2f}x (the CPU: {:.2f}x, {:.2f}x). {}.",
+            gpuSpeedupPlain, gpuSpeedupStalled, listSpeedupPlain, listSpeedupStalled, speedupPlain, speedupStalled,
+            notes);
         j["gpu"]["device"] = gpuDevice;
         j["gpu"]["lookup"] = o.lookup;
         j["gpu"]["speedup_4x4"] = {{"plain", gpuSpeedupPlain}, {"stalled", gpuSpeedupStalled}};
+        j["gpu"]["sample_list_speedup_4x4"] = {{"plain", listSpeedupPlain}, {"stalled", listSpeedupStalled}};
         section.blocks.push_back(std::move(gb));
     }
 #endif

@@ -440,11 +440,14 @@ PY
   check deferred_gpu 0 $VK "$SSFX" deferred --backend vulkan --scene atrium --size 64x48 --ss 3 --brute-force \
     --out "$OUT/dg"
   contains deferred_gpu "$OUT/deferred_gpu.out" "of lanes idle"
+  contains deferred_gpu "$OUT/deferred_gpu.out" "sample list"
   [ -s "$OUT/dg/samples.png" ] || { echo "FAIL deferred_gpu: no samples.png"; fail=1; }
-  check deferred_gpu_hw 0 $VK "$SSFX" deferred --backend vulkan --lookup hardware -p maxAnisotropy=1 \
+  check deferred_gpu_hw 0 $VK "$SSFX" deferred --backend vulkan --lookup hardware --schedule list -p maxAnisotropy=1 \
     --scene cornell --size 48x32 --ss 2 --out "$OUT/dh"
   contains deferred_gpu_hw "$OUT/deferred_gpu_hw.out" "lookup=hardware"
   check deferred_lookup_cpu 2 $VK "$SSFX" deferred --lookup hardware --scene atrium --size 32x24 --out "$OUT/y"
+  check deferred_schedule_cpu 2 $VK "$SSFX" deferred --schedule list --scene atrium --size 32x24 --out "$OUT/y"
+  contains deferred_schedule_cpu "$OUT/deferred_schedule_cpu.err" "--backend vulkan"
   contains deferred_lookup_cpu "$OUT/deferred_lookup_cpu.err" "--backend vulkan"
   [ ! -e "$OUT/y" ] || { echo "FAIL deferred: a failed run left $OUT/y"; fail=1; }
   # Table 1 on the CPU and the GPU passes: the GPU's rows are the CPU's within the parity
@@ -457,7 +460,7 @@ import json, sys
 j = json.load(open(sys.argv[1]))
 cpu = {(r["supersampling"], r["method"]): r for r in j["rows"]}
 gpu = j["gpu"]["rows"]
-assert len(gpu) == 10, len(gpu)  # 1x1 default; brute force, ours, tiles for 2x2..4x4
+assert len(gpu) == 13, len(gpu)  # 1x1 default; brute force, ours, tiles, list for 2x2..4x4
 for r in gpu:
     assert r["max_abs_vs_cpu"] <= 1e-4, r
     assert r["shading_ms"] > 0, r
@@ -465,6 +468,9 @@ for r in gpu:
         c = cpu[(r["supersampling"], "ours")]
         assert abs(r["samples_percent"] - c["samples_percent"]) <= 0.01, (r, c)
         assert abs(r["psnr"] - c["psnr"]) <= 0.1, (r, c)
+idle = {(r["supersampling"], r["method"]): r["idle_lanes"] for r in gpu}
+for m in ("2x2", "3x3", "4x4"):  # the list leaves lanes idle only in its last subgroup
+    assert idle[(m, "ours, sample list")] < idle[(m, "ours")], idle
 PY
   check eval_deferred_lookup 2 $VK "$SSFX" eval deferred --quick --lookup hardware --out "$OUT/y"
   contains eval_deferred_lookup "$OUT/eval_deferred_lookup.err" "--backend vulkan"
