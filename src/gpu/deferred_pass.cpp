@@ -145,7 +145,7 @@ struct AdaptiveShading::Impl {
     vkx::Buffer setupBuffer, lightBuffer, counters;
     // The sample list's buffers, for `listPixels` pixels of up to `listSamples` samples each
     // (grown on demand), and its indirect group counts.
-    vkx::Buffer entries, colours, bases, listArgs;
+    vkx::Buffer listEntries, listColours, listBases, listArgs;
     std::size_t listPixels = 0, listSamples = 0;
     std::unique_ptr<vkx::GpuTimer> timer;
     bool profiling = false;
@@ -258,9 +258,9 @@ struct AdaptiveShading::Impl {
         listPixels = std::max(listPixels, pixels), listSamples = std::max(listSamples, samples);
         const vk::DeviceSize most = vk::DeviceSize(listPixels) * listSamples;
         const auto usage = vk::BufferUsageFlagBits::eStorageBuffer;
-        entries = ctx->createBuffer(most * 4, usage, false);
-        colours = ctx->createBuffer(most * 16, usage, false);
-        bases = ctx->createBuffer(vk::DeviceSize(listPixels) * 4, usage, false);
+        listEntries = ctx->createBuffer(most * 4, usage, false);
+        listColours = ctx->createBuffer(most * 16, usage, false);
+        listBases = ctx->createBuffer(vk::DeviceSize(listPixels) * 4, usage, false);
     }
 
     void ensureScratch(int w, int h) {
@@ -344,7 +344,8 @@ struct AdaptiveShading::Impl {
         vk::DescriptorBufferInfo listBufs[4];
         if (sampleList) {
             ensureList(g.width, g.height, g.m * g.m);
-            const vk::Buffer listBuffers[] = {*entries.buffer, *colours.buffer, *bases.buffer, *listArgs.buffer};
+            const vk::Buffer listBuffers[] = {*listEntries.buffer, *listColours.buffer, *listBases.buffer,
+                                              *listArgs.buffer};
             for (std::size_t b = 0; b < 4; ++b)
                 listBufs[b] = vk::DescriptorBufferInfo(listBuffers[b], 0, VK_WHOLE_SIZE);
             for (std::uint32_t b = 0; b < 4; ++b)
