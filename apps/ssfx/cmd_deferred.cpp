@@ -12,6 +12,7 @@
 #include "ssfx/deferred/registry.hpp"
 #include "ssfx/eval/metrics.hpp"
 #include "ssfx/eval/plot.hpp"
+#include "ssfx/io/exr.hpp"
 #include "ssfx/io/png.hpp"
 #include "ssfx/render/renderer.hpp"
 #include "ssfx/vk/context.hpp"
@@ -24,7 +25,7 @@ namespace ssfx::cli {
 namespace {
 
 struct DeferredOptions {
-    std::string scene, view, size = "1024x768", out, device, backend = "cpu", lookup, schedule;
+    std::string scene, view, size = "1024x768", out, device, backend = "cpu", lookup, schedule, aoImage;
     std::vector<std::string> params;
     int m = 4, stall = 0, threads = 0;
     bool bruteForce = false;
@@ -102,7 +103,14 @@ void run(const DeferredOptions& o) {
     const scene::Scene scene = scene::loadScene(o.scene);
     const scene::View& view = o.view.empty() ? scene.views.at(0).second : scene.view(o.view);
     render::Renderer renderer({o.device, false});
-    const scene::GBuffer g = renderer.renderGBuffer(scene, view, w, h, o.m);
+    // The ambient occlusion is read (and checked) before the draw: a bad file costs nothing.
+    ImageF ambientOcclusion;
+    if (!o.aoImage.empty()) ambientOcclusion = io::readExr(o.aoImage);
+    if (!ambientOcclusion.empty() && (ambientOcclusion.width() != w || ambientOcclusion.height() != h))
+        throw Error(fmt::format("--ao-image {}: {}x{}, the image is {}x{}", o.aoImage, ambientOcclusion.width(),
+                                ambientOcclusion.height(), w, h));
+    scene::GBuffer g = renderer.renderGBuffer(scene, view, w, h, o.m);
+    g.ambientOcclusion = std::move(ambientOcclusion);
     const Exec exec{o.threads};
     deferred::DeferredResult a;
     std::optional<deferred::DeferredResult> ref;  // brute force
@@ -186,6 +194,9 @@ void addDeferredCommand(CLI::App& app) {
                     "per pixel), tiled (8x8 tiles ranked by k) or list (one sample per invocation); default: -p "
                     "tiled's. All three run and are printed; their images are the same")
         ->check(CLI::IsMember({"pixel", "tiled", "list"}));
+    cmd->add_option("--ao-image", o->aoImage,
+                    "Ambient occlusion of the final pixels (an EXR of --size, values in [0, 1], e.g. from ssfx ao -o "
+                    "ao.exr with the same scene, view and size): multiplies the ambient term of every sample");
     cmd->add_option("--device", o->device, "Vulkan device index or part of its name");
     cmd->add_option("--threads", o->threads, "Worker threads (0 = all)")->check(CLI::Range(0, 1024));
     cmd->footer(

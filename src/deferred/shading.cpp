@@ -82,6 +82,16 @@ void validateGBuffer(const scene::GBuffer& g, std::size_t materials, std::size_t
             throw Error(
                 fmt::format("deferred: G-buffer sample ({}, {}) has a non-finite normal, uv or uv gradient", sx, sy));
     }
+    const ImageF& ao = g.ambientOcclusion;
+    if (ao.empty()) return;
+    if (ao.width() != g.width || ao.height() != g.height)
+        throw Error(fmt::format("deferred: the ambient occlusion is {}x{}, the image {}x{}", ao.width(), ao.height(),
+                                g.width, g.height));
+    for (int y = 0; y < ao.height(); ++y)
+        for (int x = 0; x < ao.width(); ++x)
+            if (!(ao(x, y) >= 0.0f && ao(x, y) <= 1.0f))
+                throw Error(
+                    fmt::format("deferred: ambient occlusion {} at pixel ({}, {}) is not in [0, 1]", ao(x, y), x, y));
 }
 
 SampleShader::SampleShader(const scene::Scene& scene, const scene::GBuffer& g, const ShadingParams& params)
@@ -130,6 +140,7 @@ glm::vec3 SampleShader::shade(int sx, int sy, float footprint) const {
         const glm::vec3 n = glm::normalize(g_.normal[i]);
         const glm::vec3 toEye = glm::normalize(-pos);
         glm::vec3 diffuse = scene_.ambient, specular(0.0f);
+        if (!g_.ambientOcclusion.empty()) diffuse *= g_.ambientOcclusion(sx / g_.m, sy / g_.m);
         for (const auto& l : lights_) {
             glm::vec3 dir = l.vector, irradiance = l.color;
             if (l.point) {

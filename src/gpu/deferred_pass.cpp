@@ -43,7 +43,7 @@ using Desc = vk::DescriptorType;
 struct DeferredSetup {
     std::int32_t width, height, m, n;
     std::int32_t sampleW, sampleH, lightCount, maxAnisotropy;
-    std::int32_t stall, textureSize, levelCount, pad1;
+    std::int32_t stall, textureSize, levelCount, useAo;
     float cDepth, cNormal, cShading, tMin;
     float tEdge, specular, shininess, p00;
     float p11, c0Hi, c0Lo, c1Hi;
@@ -71,7 +71,7 @@ const std::vector<vkx::BindingSpec> kBindings = {
     {Desc::eCombinedImageSampler}, {Desc::eStorageImage},         {Desc::eStorageImage},
     {Desc::eStorageImage},         {Desc::eStorageImage},         {Desc::eStorageBuffer},
     {Desc::eStorageBuffer},        {Desc::eStorageBuffer},        {Desc::eStorageBuffer},
-    {Desc::eStorageBuffer}};
+    {Desc::eStorageBuffer},        {Desc::eCombinedImageSampler}};
 
 constexpr F kColorFormat = F::eR32G32B32A32Sfloat;  // S, the metrics, the output
 constexpr F kKFormat = F::eR32Uint;
@@ -146,6 +146,9 @@ struct AdaptiveShading::Impl {
     // The sample list's buffers, for `listPixels` pixels of up to `listSamples` samples each
     // (grown on demand), and its indirect group counts.
     vkx::Buffer listEntries, listColours, listBases, listArgs;
+    // Bound for the ambient occlusion when a G-buffer has none (setup.useAo = 0: never read).
+    vkx::Image aoStandIn;
+    vk::raii::ImageView aoStandInView{nullptr};
     std::size_t listPixels = 0, listSamples = 0;
     std::unique_ptr<vkx::GpuTimer> timer;
     bool profiling = false;
@@ -211,6 +214,19 @@ struct AdaptiveShading::Impl {
             counters = c.createBuffer(
                 16, vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eTransferDst, true);
             timer = std::make_unique<vkx::GpuTimer>(c, 4);
+            aoStandIn = c.createImage(F::eR32Sfloat, 1, 1,
+                                      vk::ImageUsageFlagBits::eSampled | vk::ImageUsageFlagBits::eTransferDst,
+                                      vk::ImageAspectFlagBits::eColor);
+            aoStandInView = view2d(c, aoStandIn);
+            c.submit([&](const vk::raii::CommandBuffer& cmd) {
+                vkx::transition(cmd, aoStandIn, L::eUndefined, L::eTransferDstOptimal, S::eTopOfPipe, {}, S::eTransfer,
+                                A::eTransferWrite);
+                cmd.clearColorImage(*aoStandIn.image, L::eTransferDstOptimal,
+                                    vk::ClearColorValue(1.0f, 1.0f, 1.0f, 1.0f),
+                                    vk::ImageSubresourceRange(vk::ImageAspectFlagBits::eColor, 0, 1, 0, 1));
+                vkx::transition(cmd, aoStandIn, L::eTransferDstOptimal, L::eShaderReadOnlyOptimal, S::eTransfer,
+                                A::eTransferWrite, S::eComputeShader, A::eShaderRead);
+            });
         });
     }
 
@@ -283,6 +299,7 @@ struct AdaptiveShading::Impl {
         s.sampleW = sw, s.sampleH = sh;
         s.maxAnisotropy = sp.maxAnisotropy, s.stall = sp.stall;
         s.textureSize = textureSize, s.levelCount = levelCount;
+        s.useAo = g.ambientOcclusion.view ? 1 : 0;
         if (ap) {
             s.cDepth = ap->cDepth, s.cNormal = ap->cNormal, s.cShading = ap->cShading;
             s.tMin = ap->tMin, s.tEdge = ap->tEdge;
@@ -325,12 +342,16 @@ struct AdaptiveShading::Impl {
                                                  {*materials.buffer, 0, VK_WHOLE_SIZE},
                                                  {*texels.buffer, 0, VK_WHOLE_SIZE},
                                                  {*counters.buffer, 0, VK_WHOLE_SIZE}};
-        const vk::DescriptorImageInfo sampled[] = {{texSampler, *textures.view, L::eShaderReadOnlyOptimal},
-                                                   {*nearest, g.depth.view, g.depth.layout},
-                                                   {*nearest, g.normal.view, g.normal.layout},
-                                                   {*nearest, g.uv.view, g.uv.layout},
-                                                   {*nearest, g.uvGrad.view, g.uvGrad.layout},
-                                                   {*nearest, g.ids.view, g.ids.layout}};
+        const vk::DescriptorImageInfo sampled[] = {
+            {texSampler, *textures.view, L::eShaderReadOnlyOptimal},
+            {*nearest, g.depth.view, g.depth.layout},
+            {*nearest, g.normal.view, g.normal.layout},
+            {*nearest, g.uv.view, g.uv.layout},
+            {*nearest, g.uvGrad.view, g.uvGrad.layout},
+            {*nearest, g.ids.view, g.ids.layout},
+            g.ambientOcclusion.view
+                ? vk::DescriptorImageInfo(*nearest, g.ambientOcclusion.view, g.ambientOcclusion.layout)
+                : vk::DescriptorImageInfo(*nearest, *aoStandInView, L::eShaderReadOnlyOptimal)};
         const vk::DescriptorImageInfo storage[] = {{nullptr, *scratch.first.view, L::eGeneral},
                                                    {nullptr, *scratch.k.view, L::eGeneral},
                                                    {nullptr, *scratch.metrics.view, L::eGeneral},
@@ -340,6 +361,7 @@ struct AdaptiveShading::Impl {
         for (std::uint32_t b = 0; b < 6; ++b) writes.push_back({{}, 4 + b, 0, Desc::eCombinedImageSampler, sampled[b]});
         for (std::uint32_t b = 0; b < 4; ++b) writes.push_back({{}, 10 + b, 0, Desc::eStorageImage, storage[b]});
         writes.push_back({{}, 14, 0, Desc::eStorageBuffer, {}, bufs[4]});
+        writes.push_back({{}, 19, 0, Desc::eCombinedImageSampler, sampled[6]});
         const bool sampleList = variant == kSampleList;
         vk::DescriptorBufferInfo listBufs[4];
         if (sampleList) {
@@ -396,8 +418,9 @@ struct AdaptiveShading::Impl {
             // The planes, in the formats that hold the host's values exactly.
             struct Plane {
                 F format;
-                std::size_t bytes;
+                std::size_t bytes;  // per texel
                 const void* data;
+                std::uint32_t width, height;
             };
             std::vector<std::uint32_t> ids(n);
             std::vector<glm::vec4> normals(n);
@@ -405,25 +428,28 @@ struct AdaptiveShading::Impl {
                 ids[i] = std::uint32_t(g.material[i]) | std::uint32_t(std::uint16_t(g.layer[i])) << 16;
                 normals[i] = glm::vec4(g.normal[i], 0.0f);
             }
-            const std::array<Plane, 5> planes{{{F::eR32Sfloat, 4, g.depth.data()},
-                                               {F::eR32G32B32A32Sfloat, 16, normals.data()},
-                                               {F::eR32G32Sfloat, 8, g.uv.data()},
-                                               {F::eR32G32B32A32Sfloat, 16, g.uvGrad.data()},
-                                               {F::eR16G16Uint, 4, ids.data()}}};
+            std::vector<Plane> planes{{F::eR32Sfloat, 4, g.depth.data(), sw, sh},
+                                      {F::eR32G32B32A32Sfloat, 16, normals.data(), sw, sh},
+                                      {F::eR32G32Sfloat, 8, g.uv.data(), sw, sh},
+                                      {F::eR32G32B32A32Sfloat, 16, g.uvGrad.data(), sw, sh},
+                                      {F::eR16G16Uint, 4, ids.data(), sw, sh}};
+            const bool occlusion = !g.ambientOcclusion.empty();
+            if (occlusion) planes.push_back({F::eR32Sfloat, 4, g.ambientOcclusion.data(), w, h});
             // Each plane at a multiple of 16 bytes (a copy's offset is a multiple of its texel size).
             auto aligned = [](vk::DeviceSize v) { return (v + 15) & ~vk::DeviceSize(15); };
+            auto planeBytes = [](const Plane& p) { return vk::DeviceSize(p.bytes) * p.width * p.height; };
             vk::DeviceSize total = 0;
-            for (const Plane& p : planes) total += aligned(p.bytes * n);
+            for (const Plane& p : planes) total += aligned(planeBytes(p));
             vkx::Buffer upload = c.createBuffer(total, vk::BufferUsageFlagBits::eTransferSrc, true);
             std::vector<vkx::Image> images;
             std::vector<vk::raii::ImageView> views;
             std::vector<vk::DeviceSize> offsets;
             vk::DeviceSize offset = 0;
             for (const Plane& p : planes) {
-                std::memcpy(static_cast<std::uint8_t*>(upload.mapped) + offset, p.data, p.bytes * n);
+                std::memcpy(static_cast<std::uint8_t*>(upload.mapped) + offset, p.data, planeBytes(p));
                 offsets.push_back(offset);
-                offset += aligned(p.bytes * n);
-                images.push_back(c.createImage(p.format, sw, sh,
+                offset += aligned(planeBytes(p));
+                images.push_back(c.createImage(p.format, p.width, p.height,
                                                vk::ImageUsageFlagBits::eSampled | vk::ImageUsageFlagBits::eTransferDst,
                                                vk::ImageAspectFlagBits::eColor));
                 views.push_back(view2d(c, images.back()));
@@ -438,9 +464,11 @@ struct AdaptiveShading::Impl {
             DeviceGBuffer dg;
             const auto sampled = vk::ImageUsageFlagBits::eSampled;
             auto ref = [&](std::size_t i) {
-                return ImageRef{*views[i], planes[i].format, sampled, sw, sh, L::eShaderReadOnlyOptimal};
+                return ImageRef{*views[i],       planes[i].format, sampled,
+                                planes[i].width, planes[i].height, L::eShaderReadOnlyOptimal};
             };
             dg.depth = ref(0), dg.normal = ref(1), dg.uv = ref(2), dg.uvGrad = ref(3), dg.ids = ref(4);
+            if (occlusion) dg.ambientOcclusion = ref(5);
             dg.width = g.width, dg.height = g.height, dg.m = g.m;
             dg.camera = g.camera.camera, dg.view = g.camera.view;
             writeSetup(dg, sp, ap);
@@ -453,7 +481,7 @@ struct AdaptiveShading::Impl {
                     cmd.copyBufferToImage(
                         *upload.buffer, *images[i].image, L::eTransferDstOptimal,
                         vk::BufferImageCopy(offsets[i], 0, 0, {vk::ImageAspectFlagBits::eColor, 0, 0, 1}, {0, 0, 0},
-                                            {sw, sh, 1}));
+                                            {planes[i].width, planes[i].height, 1}));
                     vkx::transition(cmd, images[i], L::eTransferDstOptimal, L::eShaderReadOnlyOptimal, S::eTransfer,
                                     A::eTransferWrite, S::eComputeShader, A::eShaderRead);
                 }
@@ -561,6 +589,9 @@ void AdaptiveShading::record(const vk::raii::CommandBuffer& cmd, const DeviceGBu
     checkPlane(g.uv, "uv", {F::eR32G32Sfloat}, sw, sh);
     checkPlane(g.uvGrad, "uv gradient", {F::eR32G32B32A32Sfloat}, sw, sh);
     checkPlane(g.ids, "ids", {F::eR16G16Uint}, sw, sh);
+    if (g.ambientOcclusion.view)
+        checkPlane(g.ambientOcclusion, "ambient occlusion", {F::eR32Sfloat}, std::uint32_t(g.width),
+                   std::uint32_t(g.height));
     if (!output.view || output.format != kColorFormat || !(output.usage & vk::ImageUsageFlagBits::eStorage) ||
         output.layout != L::eGeneral)
         throw Error(

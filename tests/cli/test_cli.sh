@@ -447,6 +447,16 @@ PY
   contains deferred_gpu_hw "$OUT/deferred_gpu_hw.out" "lookup=hardware"
   check deferred_lookup_cpu 2 $VK "$SSFX" deferred --lookup hardware --scene atrium --size 32x24 --out "$OUT/y"
   check deferred_schedule_cpu 2 $VK "$SSFX" deferred --schedule list --scene atrium --size 32x24 --out "$OUT/y"
+  # SAO on the ambient term: ssfx ao's EXR of the same scene, view and size, on both backends.
+  check deferred_ao_src 0 $VK "$SSFX" ao --scene atrium --view nave --size 48x32 -p guardBand=8 -o "$OUT/dao.exr"
+  check deferred_ao 0 $VK "$SSFX" deferred --scene atrium --view nave --size 48x32 --ss 2 --ao-image "$OUT/dao.exr" \
+    --out "$OUT/dao"
+  check deferred_ao_gpu 0 $VK "$SSFX" deferred --backend vulkan --scene atrium --view nave --size 48x32 --ss 2 \
+    --ao-image "$OUT/dao.exr" --out "$OUT/daog"
+  check deferred_noao 0 $VK "$SSFX" deferred --scene atrium --view nave --size 48x32 --ss 2 --out "$OUT/dnoao"
+  cmp -s "$OUT/dao/image.png" "$OUT/dnoao/image.png" && { echo "FAIL deferred_ao: the occlusion changed nothing"; fail=1; }
+  check deferred_ao_size 2 $VK "$SSFX" deferred --scene atrium --size 32x24 --ao-image "$OUT/dao.exr" --out "$OUT/y"
+  contains deferred_ao_size "$OUT/deferred_ao_size.err" "48x32"
   contains deferred_schedule_cpu "$OUT/deferred_schedule_cpu.err" "--backend vulkan"
   contains deferred_lookup_cpu "$OUT/deferred_lookup_cpu.err" "--backend vulkan"
   [ ! -e "$OUT/y" ] || { echo "FAIL deferred: a failed run left $OUT/y"; fail=1; }

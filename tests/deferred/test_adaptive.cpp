@@ -122,6 +122,45 @@ TEST(Adaptive, FlatRegionsShadeOneSample) {
     EXPECT_DOUBLE_EQ(a.shadedPercent(), 100.0 / 16.0);
 }
 
+// GBuffer::ambientOcclusion multiplies the ambient term of each of a pixel's samples: 1
+// leaves every bit as without it, 0 gives the image of a scene without ambient light, and
+// what is not a width x height image of values in [0, 1] is refused by name.
+TEST(Adaptive, AmbientOcclusionScalesTheAmbientTerm) {
+    scene::Scene scene = scene::atrium();
+    scene::GBuffer g = handMadeGBuffer(scene, 8, 6, 2, true);
+    const AdaptiveParams p;
+    const auto plain = adaptiveSupersampling(scene, g, p);
+    const auto plainBrute = bruteForceSupersampling(scene, g, p.shading);
+    g.ambientOcclusion = ImageF(8, 6, 1.0f);
+    EXPECT_EQ(adaptiveSupersampling(scene, g, p).image, plain.image);
+    EXPECT_EQ(bruteForceSupersampling(scene, g, p.shading).image, plainBrute.image);
+    g.ambientOcclusion = ImageF(8, 6, 0.0f);
+    const auto occluded = adaptiveSupersampling(scene, g, p);
+    EXPECT_NE(occluded.image, plain.image);
+    scene::Scene dark = scene;
+    dark.ambient = glm::vec3(0.0f);
+    scene::GBuffer noAo = g;
+    noAo.ambientOcclusion = ImageF();
+    EXPECT_EQ(occluded.image, adaptiveSupersampling(dark, noAo, p).image);
+    // Per pixel: occluding one pixel changes that pixel only (k aside: S's luma feeds it).
+    g.ambientOcclusion = ImageF(8, 6, 1.0f);
+    g.ambientOcclusion(3, 2) = 0.25f;
+    const auto one = bruteForceSupersampling(scene, g, p.shading);
+    for (int y = 0; y < 6; ++y)
+        for (int x = 0; x < 8; ++x)
+            EXPECT_EQ(one.image(x, y) == plainBrute.image(x, y), x != 3 || y != 2) << x << "," << y;
+    for (const auto& [bad, what] : {std::pair{ImageF(7, 6, 1.0f), "7x6"}, std::pair{ImageF(8, 6, NAN), "nan"},
+                                    std::pair{ImageF(8, 6, 1.5f), "1.5"}, std::pair{ImageF(8, 6, -0.1f), "-0.1"}}) {
+        g.ambientOcclusion = bad;
+        try {
+            adaptiveSupersampling(scene, g, p);
+            ADD_FAILURE() << "accepted " << what;
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find("ambient occlusion"), std::string::npos) << e.what();
+        }
+    }
+}
+
 TEST(Adaptive, ParamTable) {
     checkParamTable<deferred::AdaptiveParams>(deferred::kAdaptiveParams, "adaptive",
                                               [](const deferred::AdaptiveParams& p) { deferred::validate(p); });

@@ -215,6 +215,44 @@ TEST(GpuDeferred, RecordOnTheRenderersGBufferInGpuMemoryIsTheUploadedRun) {
     expectNoValidationMessages(ctx);
 }
 
+// GBuffer::ambientOcclusion on the GPU: the ambient term of each sample times its pixel's
+// value, as the CPU does (the same product of floats); the parity bounds of the test above.
+TEST(GpuDeferred, AmbientOcclusionScalesTheAmbientTermAsTheCpuDoes) {
+    REQUIRE_GRAPHICS();
+    auto ctx = test::graphicsContext();
+    render::Renderer renderer(ctx);
+    const scene::Scene scene = scene::atrium();
+    gpu::AdaptiveShading shading(ctx, scene);
+    const int w = 96, h = 72;
+    scene::GBuffer g = renderer.renderGBuffer(scene, scene.view("nave"), w, h, 2);
+    const deferred::AdaptiveParams p;
+    const auto plain = shading.adaptive(g, p);
+    g.ambientOcclusion = ImageF(w, h, 1.0f);
+    EXPECT_EQ(shading.adaptive(g, p).image, plain.image);  // 1: the same bits as without
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) g.ambientOcclusion(x, y) = 0.2f + 0.05f * float((7 * x + 13 * y) % 17);
+    const auto gpu = shading.adaptive(g, p, gpu::Schedule::SampleList);
+    const auto cpu = deferred::adaptiveSupersampling(scene, g, p);
+    EXPECT_NE(gpu.image, plain.image);
+    int kDiffer = 0;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            if (gpu.samples(x, y) != cpu.samples(x, y)) {
+                ++kDiffer;
+                EXPECT_TRUE(tie(cpu, gpu, x, y)) << x << "," << y;
+            }
+    EXPECT_LE(kDiffer, int(1e-4 * w * h));
+    const Diff d = diff(gpu.image, cpu.image);
+    EXPECT_LE(d.max, 1e-4);
+    EXPECT_LE(d.mean, 1e-6);
+    EXPECT_LE(
+        diff(shading.bruteForce(g, p.shading).image, deferred::bruteForceSupersampling(scene, g, p.shading).image).max,
+        1e-4);
+    g.ambientOcclusion(5, 5) = NAN;
+    EXPECT_THROW(shading.adaptive(g, p), Error);
+    expectNoValidationMessages(ctx);
+}
+
 TEST(GpuDeferred, AllSamplesAreBruteForceBitForBit) {
     REQUIRE_DEVICE();
     auto ctx = gpuContext();

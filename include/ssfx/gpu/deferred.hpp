@@ -50,6 +50,9 @@ struct DeviceGBuffer {
     int width = 0, height = 0, m = 1;  //!< the final image and the samples per pixel's side
     Camera camera;                     //!< of the (m width) x (m height) sample grid
     glm::dmat4 view{1.0};              //!< world -> camera (for the lights)
+    //! Optional (no view: none): R32_SFLOAT, width x height, values in [0, 1], multiplying the
+    //! ambient term of each of a pixel's samples (scene::GBuffer::ambientOcclusion).
+    ImageRef ambientOcclusion;
 };
 
 //! The renderer's G-buffer left on the device (render::Renderer::renderGBufferOnDevice) as

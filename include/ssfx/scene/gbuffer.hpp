@@ -25,6 +25,10 @@ struct GBuffer {
     std::vector<std::uint16_t> material;  //!< material index or kNoMaterial
     std::vector<std::int16_t> layer;      //!< texture layer or -1
     CameraSetup camera;                   //!< of the (m width) x (m height) sample grid
+    //! Optional ambient occlusion of the final pixels (width x height, values in [0, 1]): the
+    //! shading multiplies the ambient term of each of a pixel's samples by it (how a frame
+    //! applies SAO to ambient light); empty: no occlusion. Not part of the G-buffer file.
+    ImageF ambientOcclusion;
     double gpuMs = 0;
 
     int sampleWidth() const { return m * width; }

@@ -18,7 +18,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(set = 0, binding = 0, std430) readonly buffer Setup {
     int width, height, m, n;           // final image, m x m samples per pixel, n = m^2
     int sampleW, sampleH, lightCount, maxAnisotropy;
-    int stall, textureSize, levelCount, pad1;
+    int stall, textureSize, levelCount, useAo;  // useAo: gAo multiplies the ambient term
     float cDepth, cNormal, cShading, tMin;
     float tEdge, specular, shininess, p00;
     float p11, c0Hi, c0Lo, c1Hi;
@@ -43,6 +43,8 @@ layout(set = 0, binding = 6) uniform sampler2D gNormal;  // camera space (xyz)
 layout(set = 0, binding = 7) uniform sampler2D gUv;
 layout(set = 0, binding = 8) uniform sampler2D gUvGrad;   // du/dx, dv/dx, du/dy, dv/dy per final pixel
 layout(set = 0, binding = 9) uniform usampler2D gIds;     // material, texture layer (0xFFFF: none)
+// The final pixels' ambient occlusion (GBuffer::ambientOcclusion; a 1x1 stand-in when unused).
+layout(set = 0, binding = 19) uniform sampler2D gAo;
 
 // Passes' images and counters.
 layout(set = 0, binding = 10, rgba32f) uniform image2D firstImage;  // S: colour, luma in w
@@ -168,6 +170,7 @@ vec3 shadeSample(ivec2 s, float footprint) {
         const vec3 n = normalize(texelFetch(gNormal, s, 0).xyz);
         const vec3 toEye = normalize(-pos);
         vec3 diffuse = setup.ambient.rgb, specular = vec3(0.0);
+        if (setup.useAo != 0) diffuse *= texelFetch(gAo, s / setup.m, 0).r;
         for (int i = 0; i < setup.lightCount; ++i) {
             vec3 dir = lights[i].vector.xyz, irradiance = lights[i].color.rgb;
             if (lights[i].vector.w != 0.0) {
