@@ -183,12 +183,24 @@ TEST(GpuDeferred, RecordOnTheRenderersGBufferInGpuMemoryIsTheUploadedRun) {
     vkx::Buffer down = ctx->createBuffer(vk::DeviceSize(w) * h * 16, vk::BufferUsageFlagBits::eTransferDst, true);
     const scene::GBuffer frame = renderer.renderGBufferOnDevice(
         scene, view, w, h, m, [&](const vk::raii::CommandBuffer& cmd, const render::DeviceGBufferImages& images) {
+            // What record() refuses, before it records anything: an AO plane of the wrong format
+            // and size (the depth's), m = 5, an output of the wrong size.
+            const gpu::ImageRef output{*out.view,        F::eR32G32B32A32Sfloat, usage,
+                                       std::uint32_t(w), std::uint32_t(h),       L::eGeneral};
+            gpu::DeviceGBuffer bad = gpu::deviceGBuffer(images);
+            bad.ambientOcclusion = gpu::ImageRef{images.depth.view,  images.depth.format, images.depth.usage,
+                                                 images.depth.width, images.depth.height, images.depth.layout};
+            EXPECT_THROW(shading.record(cmd, bad, p, output), Error);
+            bad = gpu::deviceGBuffer(images);
+            bad.m = 5;
+            EXPECT_THROW(shading.record(cmd, bad, p, output), Error);
+            gpu::ImageRef narrow = output;
+            narrow.width -= 1;
+            EXPECT_THROW(shading.record(cmd, gpu::deviceGBuffer(images), p, narrow), Error);
             vkx::transition(cmd, out, L::eUndefined, L::eGeneral, S::eTopOfPipe, {}, S::eComputeShader,
                             A::eShaderWrite);
-            shading.record(cmd, gpu::deviceGBuffer(images), p,
-                           gpu::ImageRef{*out.view, F::eR32G32B32A32Sfloat, usage, std::uint32_t(w), std::uint32_t(h),
-                                         L::eGeneral},
-                           gpu::Schedule::SampleList);  // (its indirect dispatch in the caller's buffer)
+            // The sample list: its indirect dispatch in the caller's command buffer.
+            shading.record(cmd, gpu::deviceGBuffer(images), p, output, gpu::Schedule::SampleList);
             vkx::transition(cmd, out, L::eGeneral, L::eTransferSrcOptimal, S::eComputeShader, A::eShaderWrite,
                             S::eTransfer, A::eTransferRead);
             cmd.copyImageToBuffer(*out.image, L::eTransferSrcOptimal, *down.buffer,
