@@ -566,7 +566,7 @@ GpuDeferredResult AdaptiveShading::bruteForce(const scene::GBuffer& gbuffer, con
 }
 
 DeviceGBuffer deviceGBuffer(const render::DeviceGBufferImages& images) {
-    const auto ref = [](const render::DeviceDepth& d) {
+    const auto ref = [](const render::DeviceImage& d) {
         return ImageRef{d.view, d.format, d.usage, d.width, d.height, d.layout};
     };
     DeviceGBuffer g;

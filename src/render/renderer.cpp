@@ -177,7 +177,7 @@ struct Renderer::Impl {
 
     // Work recorded after a draw, on its attachments left on the device.
     using Recorder = std::function<void(const vk::raii::CommandBuffer&, const DeviceDepth& depth,
-                                        const std::vector<DeviceDepth>& colors)>;
+                                        const std::vector<DeviceImage>& colors)>;
 
     // One draw of `scene` from `cam` into width x height attachments; returns their contents.
     // `after`: the attachments stay on the device for work recorded after the draw (not read
@@ -300,12 +300,12 @@ struct Renderer::Impl {
                 vkx::transition(cmd, depthImage, vk::ImageLayout::eDepthAttachmentOptimal,
                                 vk::ImageLayout::eDepthReadOnlyOptimal, S::eEarlyFragmentTests | S::eLateFragmentTests,
                                 A::eDepthStencilAttachmentWrite, S::eComputeShader, A::eShaderRead);
-                std::vector<DeviceDepth> colors;
+                std::vector<DeviceImage> colors;
                 for (std::size_t i = 0; i < targets.size(); ++i) {
                     vkx::transition(cmd, colorImages[i], vk::ImageLayout::eColorAttachmentOptimal,
                                     vk::ImageLayout::eShaderReadOnlyOptimal, S::eColorAttachmentOutput,
                                     A::eColorAttachmentWrite, S::eComputeShader, A::eShaderRead);
-                    colors.push_back(DeviceDepth{*colors2d[i], targets[i].format,
+                    colors.push_back(DeviceImage{*colors2d[i], targets[i].format,
                                                  vk::ImageUsageFlagBits::eColorAttachment | usage | onDevice, w, h,
                                                  vk::ImageLayout::eShaderReadOnlyOptimal});
                 }
@@ -421,7 +421,7 @@ DepthRender Renderer::renderDepthOnDevice(const scene::Scene& scene, const scene
         out.camera = scene::cameraSetup(view, width, height, guard);
         const auto r = impl_->draw(scene, out.camera, Pass::Depth, vkDepthFormat(format), {}, 1.0f,
                                    [&](const vk::raii::CommandBuffer& cmd, const DeviceDepth& depth,
-                                       const std::vector<DeviceDepth>&) { after(cmd, depth); });
+                                       const std::vector<DeviceImage>&) { after(cmd, depth); });
         out.gpuMs = r.gpuMs;
         return out;
     });
@@ -461,7 +461,7 @@ scene::GBuffer Renderer::renderGBufferOnDevice(const scene::Scene& scene, const 
     return guarded("rendering the G-buffer", [&] {
         const auto r = impl_->draw(
             scene, g.camera, Pass::GBuffer, vk::Format::eD32Sfloat, gbufferTargets(), float(m),
-            [&](const vk::raii::CommandBuffer& cmd, const DeviceDepth& depth, const std::vector<DeviceDepth>& colors) {
+            [&](const vk::raii::CommandBuffer& cmd, const DeviceDepth& depth, const std::vector<DeviceImage>& colors) {
                 after(cmd, DeviceGBufferImages{depth, colors[0], colors[1], colors[2], colors[3], g.width, g.height,
                                                g.m, g.camera});
             });

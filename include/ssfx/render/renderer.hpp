@@ -46,14 +46,18 @@ struct ColorRender {
     double gpuMs = 0;
 };
 
-//! A depth image while it is on the device (Renderer::renderDepthOnDevice).
-struct DeviceDepth {
-    vk::ImageView view;  //!< a 2-D view of the depth aspect
+//! An attachment while it is on the device (Renderer::renderDepthOnDevice,
+//! renderGBufferOnDevice): a 2-D view (of the depth aspect for depth), its format, usage
+//! (includes SAMPLED), size and the layout it is in.
+struct DeviceImage {
+    vk::ImageView view;
     vk::Format format = vk::Format::eUndefined;
-    vk::ImageUsageFlags usage;  //!< includes SAMPLED
+    vk::ImageUsageFlags usage;
     std::uint32_t width = 0, height = 0;
     vk::ImageLayout layout = vk::ImageLayout::eDepthReadOnlyOptimal;
 };
+//! A depth image while it is on the device (Renderer::renderDepthOnDevice).
+using DeviceDepth = DeviceImage;
 //! Records GPU work after the draw, into the draw's command buffer.
 using DepthRecorder = std::function<void(const vk::raii::CommandBuffer&, const DeviceDepth&)>;
 
@@ -64,9 +68,9 @@ using DepthRecorder = std::function<void(const vk::raii::CommandBuffer&, const D
 //! uvGrad R32G32B32A32_SFLOAT (du/dx, dv/dx, du/dy, dv/dy per final pixel), ids R16G16_UINT
 //! (material, texture layer; 0xFFFF: background, none), in layout SHADER_READ_ONLY_OPTIMAL.
 struct DeviceGBufferImages {
-    DeviceDepth depth, normal, uv, uvGrad, ids;  //!< DeviceDepth: a view, format, usage, size and layout
-    int width = 0, height = 0, m = 1;            //!< the final image and the samples per pixel's side
-    scene::CameraSetup camera;                   //!< of the (m width) x (m height) sample grid
+    DeviceImage depth, normal, uv, uvGrad, ids;
+    int width = 0, height = 0, m = 1;  //!< the final image and the samples per pixel's side
+    scene::CameraSetup camera;         //!< of the (m width) x (m height) sample grid
 };
 using GBufferRecorder = std::function<void(const vk::raii::CommandBuffer&, const DeviceGBufferImages&)>;
 
