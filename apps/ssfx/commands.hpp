@@ -33,5 +33,6 @@ void addAoCommand(CLI::App& app);
 void addRenderCommand(CLI::App& app);
 void addDeferredCommand(CLI::App& app);
 void addDevicesCommand(CLI::App& app);
+void addFrameCommand(CLI::App& app);
 
 }  // namespace ssfx::cli

@@ -47,6 +47,7 @@ int main(int argc, char** argv) {
     ssfx::cli::addRenderCommand(app);
     ssfx::cli::addDeferredCommand(app);
     ssfx::cli::addDevicesCommand(app);
+    ssfx::cli::addFrameCommand(app);
 #endif
     ssfx::cli::addEvalCommand(app);
     int status = 0;

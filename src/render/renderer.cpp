@@ -183,7 +183,8 @@ struct Renderer::Impl {
     // `after`: the attachments stay on the device for work recorded after the draw (not read
     // back): the depth in DEPTH_READ_ONLY_OPTIMAL, the colours in SHADER_READ_ONLY_OPTIMAL.
     Result draw(const scene::Scene& scene, const scene::CameraSetup& cam, Pass pass, vk::Format depthFormat,
-                const std::vector<ColorTarget>& targets, float derivativeScale, const Recorder& after = {}) {
+                const std::vector<ColorTarget>& targets, float derivativeScale, const Recorder& after = {},
+                std::shared_ptr<const void>* keep = nullptr) {
         scene.validate();
         const auto w = std::uint32_t(cam.bufferWidth()), h = std::uint32_t(cam.bufferHeight());
         ctx.requireImageSize(w, h, "render size");
@@ -325,6 +326,16 @@ struct Renderer::Impl {
             cmd.pipelineBarrier(S::eTransfer, S::eHost, {}, toHost, {}, {});
         });
         result.gpuMs = timer.milliseconds()[0];
+        if (keep) {  // the attachments and their 2-D views outlive the call
+            struct Kept {
+                std::vector<vkx::Image> colors;
+                vkx::Image depth;
+                vk::raii::ImageView depth2d;
+                std::vector<vk::raii::ImageView> colors2d;
+            };
+            *keep = std::make_shared<const Kept>(
+                Kept{std::move(colorImages), std::move(depthImage), std::move(depth2d), std::move(colors2d)});
+        }
         return result;
     }
 
@@ -414,14 +425,18 @@ DepthRender Renderer::renderDepth(const scene::Scene& scene, const scene::View& 
 }
 
 DepthRender Renderer::renderDepthOnDevice(const scene::Scene& scene, const scene::View& view, int width, int height,
-                                          DepthFormat format, int guard, const DepthRecorder& after) {
+                                          DepthFormat format, int guard, const DepthRecorder& after,
+                                          std::shared_ptr<const void>* keep) {
     if (!after) throw Error("renderDepthOnDevice: no work to record after the draw");
     return guarded("rendering depth", [&] {
         DepthRender out;
         out.camera = scene::cameraSetup(view, width, height, guard);
-        const auto r = impl_->draw(scene, out.camera, Pass::Depth, vkDepthFormat(format), {}, 1.0f,
-                                   [&](const vk::raii::CommandBuffer& cmd, const DeviceDepth& depth,
-                                       const std::vector<DeviceImage>&) { after(cmd, depth); });
+        const auto r = impl_->draw(
+            scene, out.camera, Pass::Depth, vkDepthFormat(format), {}, 1.0f,
+            [&](const vk::raii::CommandBuffer& cmd, const DeviceDepth& depth, const std::vector<DeviceImage>&) {
+                after(cmd, depth);
+            },
+            keep);
         out.gpuMs = r.gpuMs;
         return out;
     });
@@ -455,7 +470,8 @@ std::vector<ColorTarget> gbufferTargets() {
 }  // namespace
 
 scene::GBuffer Renderer::renderGBufferOnDevice(const scene::Scene& scene, const scene::View& view, int width,
-                                               int height, int m, const GBufferRecorder& after) {
+                                               int height, int m, const GBufferRecorder& after,
+                                               std::shared_ptr<const void>* keep) {
     if (!after) throw Error("renderGBufferOnDevice: no work to record after the draw");
     scene::GBuffer g = gbufferFrame(view, width, height, m);
     return guarded("rendering the G-buffer", [&] {
@@ -464,7 +480,8 @@ scene::GBuffer Renderer::renderGBufferOnDevice(const scene::Scene& scene, const 
             [&](const vk::raii::CommandBuffer& cmd, const DeviceDepth& depth, const std::vector<DeviceImage>& colors) {
                 after(cmd, DeviceGBufferImages{depth, colors[0], colors[1], colors[2], colors[3], g.width, g.height,
                                                g.m, g.camera});
-            });
+            },
+            keep);
         g.gpuMs = r.gpuMs;
         return g;
     });

@@ -460,6 +460,64 @@ PY
   contains deferred_schedule_cpu "$OUT/deferred_schedule_cpu.err" "--backend vulkan"
   contains deferred_lookup_cpu "$OUT/deferred_lookup_cpu.err" "--backend vulkan"
   [ ! -e "$OUT/y" ] || { echo "FAIL deferred: a failed run left $OUT/y"; fail=1; }
+  # The whole frame on one device against the per-stage commands: ssfx ao (CPU) -> ssfx deferred
+  # --ao-image (CPU) is the frame without AA within one level (the GPU AO is within 4/255 of the
+  # CPU's, times an ambient term <= 0.15; tests/gpu/test_gpu_frame.cpp); ssfx aa of that frame
+  # is the frame with AA byte for byte (the GPU AA pass gives the CPU's bytes).
+  PNGDIFF="$SRC/tests/cli/png_diff.py"
+  check help_frame 0 $VK "$SSFX" frame --help
+  check frame_noaa 0 $VK "$SSFX" frame --scene atrium --view nave --size 64x36 --ss 2 --ao-param guardBand=8 \
+    --aa none -o "$OUT/frame_noaa.png"
+  check frame_stage_ao 0 $VK "$SSFX" ao --scene atrium --view nave --size 64x36 -p guardBand=8 -o "$OUT/fao.exr"
+  check frame_stage_shade 0 $VK "$SSFX" deferred --scene atrium --view nave --size 64x36 --ss 2 \
+    --ao-image "$OUT/fao.exr" --out "$OUT/fdef"
+  python3 "$PNGDIFF" "$OUT/frame_noaa.png" "$OUT/fdef/image.png" --max 1 --share 0 \
+    || { echo "FAIL frame: not the per-stage commands' image within one level"; fail=1; }
+  check frame_ddaa2 0 $VK "$SSFX" frame --scene atrium --view nave --size 64x36 --ss 2 --ao-param guardBand=8 \
+    -o "$OUT/frame_ddaa2.png"
+  check frame_stage_aa 0 "$SSFX" aa -m ddaa2 "$OUT/frame_noaa.png" -o "$OUT/frame_chain.png"
+  cmp -s "$OUT/frame_ddaa2.png" "$OUT/frame_chain.png" || python3 "$PNGDIFF" "$OUT/frame_ddaa2.png" \
+    "$OUT/frame_chain.png" || { echo "FAIL frame: --aa ddaa2 is not ssfx aa of the frame"; fail=1; }
+  # An orbit as an APNG, with the profile (JSON and the table).
+  check frame_orbit 0 $VK "$SSFX" frame --scene cornell --frames 3 --size 48x32 --ss 2 --ao gtao \
+    --aa fxaa3c -o "$OUT/orbit.apng" --profile "$OUT/profile.json"
+  contains frame_orbit "$OUT/frame_orbit.out" "share"
+  contains frame_orbit "$OUT/frame_orbit.out" "shading"
+  python3 - "$OUT/orbit.apng" "$OUT/profile.json" <<'PY' || { echo "FAIL frame_orbit: APNG or profile"; fail=1; }
+import json, struct, sys
+data = open(sys.argv[1], "rb").read()
+at = data.index(b"acTL")
+assert struct.unpack(">I", data[at + 4:at + 8])[0] == 3  # three frames
+j = json.load(open(sys.argv[2]))
+assert len(j["frames"]) == 3, j
+assert j["passes"] == ["depth draw", "gbuffer draw", "ao", "shading", "encode", "aa", "readback"], j["passes"]
+for f in j["frames"]:
+    assert all(f["ms"][p] >= 0 for p in j["passes"]), f
+    assert abs(f["total_ms"] - sum(f["ms"].values())) < 1e-6, f
+assert j["median_ms"]["frame"] > 0 and j["clock"] in ("timestamps", "host")
+PY
+  printf '{"keyframes": [{"position": [0, 1, 4], "target": [0, 1, 0], "fov": 50},\n  {"position": [1, 1, 4], "target": [0, 1, 0], "fov": 40}]}\n' >"$OUT/path.json"
+  check frame_path 0 $VK "$SSFX" frame --scene cornell --path "$OUT/path.json" --frames 2 --size 32x24 --ss 1 \
+    --ao none --aa none -o "$OUT/path.png"
+  # Bad input: exit 2, a message, no output file.
+  printf '{"keyframes": [{"position": [0, 1, 4], "target": [0, 1, 0], "fov": 50}]}\n' >"$OUT/path1.json"
+  printf '{"keyframes": [{"position": [0, 1, 4], "target": [0, 1, 0], "fov": 50},\n  {"position": [NaN, 1, 4], "target": [0, 1, 0], "fov": 40}]}\n' >"$OUT/pathnan.json"
+  check frame_noscene 2 $VK "$SSFX" frame --scene nosuch --view a -o "$OUT/bad.png"
+  check frame_noview 2 $VK "$SSFX" frame --scene atrium --view nosuch --size 32x24 -o "$OUT/bad.png"
+  contains frame_noview "$OUT/frame_noview.err" "nosuch"
+  check frame_path1 2 $VK "$SSFX" frame --scene cornell --path "$OUT/path1.json" --size 32x24 -o "$OUT/bad.png"
+  contains frame_path1 "$OUT/frame_path1.err" "at least two keyframes"
+  check frame_pathnan 2 $VK "$SSFX" frame --scene cornell --path "$OUT/pathnan.json" --size 32x24 -o "$OUT/bad.png"
+  contains frame_pathnan "$OUT/frame_pathnan.err" "pathnan.json"
+  check frame_huge 2 $VK "$SSFX" frame --scene cornell --view front --size 16000x16 --ss 4 -o "$OUT/bad.png"
+  contains frame_huge "$OUT/frame_huge.err" "limit"
+  check frame_aa_scale 2 $VK "$SSFX" frame --scene cornell --size 32x24 --aa ssaax2 -o "$OUT/bad.png"
+  contains frame_aa_scale "$OUT/frame_aa_scale.err" "ssaax2"
+  check frame_ao_cpu 2 $VK "$SSFX" frame --scene cornell --size 32x24 --ao raytraced -o "$OUT/bad.png"
+  check frame_ext 2 $VK "$SSFX" frame --scene cornell --size 32x24 -o "$OUT/bad.jpg"
+  check frame_view_frames 2 $VK "$SSFX" frame --scene atrium --view nave --frames 3 -o "$OUT/bad.png"
+  check frame_ss 2 $VK "$SSFX" frame --scene cornell --ss 5 -o "$OUT/bad.png"
+  [ ! -e "$OUT/bad.png" ] && [ ! -e "$OUT/bad.jpg" ] || { echo "FAIL frame: a refused run left an output"; fail=1; }
   # Table 1 on the CPU and the GPU passes: the GPU's rows are the CPU's within the parity
   # bounds of tests/gpu/test_gpu_deferred.cpp (image 1e-4; k the same but at float ties).
   check eval_deferred 0 $VK "$SSFX" eval deferred --quick --backend vulkan --out "$OUT/evaldef"

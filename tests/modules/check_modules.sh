@@ -41,7 +41,7 @@ declare -A forbidden=(
 )
 # The gpu folder's deferred family is its own target (ssfx_gpu_deferred, on gpu, deferred and
 # render) so that ssfx_gpu stays free of scenes: these files are module gpu_deferred.
-gpu_deferred_files=" $src/src/gpu/deferred_pass.cpp $src/include/ssfx/gpu/deferred.hpp "
+gpu_deferred_files=" $src/src/gpu/deferred_pass.cpp $src/include/ssfx/gpu/deferred.hpp $src/src/gpu/frame.cpp $src/include/ssfx/gpu/frame.hpp "
 checked=0
 for m in "${!allowed[@]}"; do
   for dir in "$src/src/$m" "$src/include/ssfx/$m"; do

@@ -99,17 +99,22 @@ public:
     //! command buffer, after it, with the depth image in DEPTH_READ_ONLY_OPTIMAL and the
     //! draw's writes made visible to compute-shader reads (how the GPU AO passes read the
     //! renderer's depth without a copy). Nothing is read back; returns when the submission
-    //! is done, with DepthRender::depth empty.
+    //! is done, with DepthRender::depth empty. With `keep`, the depth image and its view
+    //! outlive the call, in DEPTH_READ_ONLY_OPTIMAL, as long as *keep holds them (work in a
+    //! later submission reads them: ssfx frame's passes).
     DepthRender renderDepthOnDevice(const scene::Scene& scene, const scene::View& view, int width, int height,
-                                    DepthFormat format, int guard, const DepthRecorder& after);
+                                    DepthFormat format, int guard, const DepthRecorder& after,
+                                    std::shared_ptr<const void>* keep = nullptr);
     //! G-buffer at m x m supersampling (m = 1..4) of a width x height image.
     scene::GBuffer renderGBuffer(const scene::Scene& scene, const scene::View& view, int width, int height, int m);
     //! The same draw with the G-buffer left on the device: `after` records into the draw's
     //! command buffer, after it (how the GPU adaptive shading reads the renderer's G-buffer
     //! without a copy). Nothing is read back; returns when the submission is done, with the
-    //! G-buffer's size, m, camera and draw time and no planes.
+    //! G-buffer's size, m, camera and draw time and no planes. With `keep`, as for
+    //! renderDepthOnDevice: the attachments outlive the call while *keep holds them.
     scene::GBuffer renderGBufferOnDevice(const scene::Scene& scene, const scene::View& view, int width, int height,
-                                         int m, const GBufferRecorder& after);
+                                         int m, const GBufferRecorder& after,
+                                         std::shared_ptr<const void>* keep = nullptr);
     //! Forward-shaded colour at (scale width) x (scale height).
     ColorRender renderColor(const scene::Scene& scene, const scene::View& view, int width, int height, int scale = 1);
 
