@@ -3,8 +3,10 @@
 # the CPU's (ssfx eval deferred --backend vulkan: every rest-pass schedule, GPU timestamps
 # after a warm-up, medians), at two stalls, then one run per lookup on Sponza at 1920x1080,
 # m = 4, with a heavy stall (the issue's "at least 1.6x faster than brute force with the
-# stalled shader" on a real GPU), printing each schedule's rest-pass time and idle lanes.
-# Writes OUT/stall*/data/deferred.{md,json} and OUT/sponza_*/.
+# stalled shader" on a real GPU), printing each schedule's rest-pass time and idle lanes; then
+# the whole frame (ssfx frame) on Sponza at 1920x1080, m = 4, SAO and DDAA2 along a path through
+# its three views: the per-pass profile (the issue's "under 4 ms per frame").
+# Writes OUT/stall*/data/deferred.{md,json}, OUT/sponza_*/, OUT/frame_sponza.{apng,json}.
 # Usage: scripts/bench_gpu_deferred.sh [SSFX] [OUT] [SIZE] [extra ssfx options, e.g. --device 0]
 set -euo pipefail
 S=${1:-build/release/ssfx}
@@ -23,6 +25,18 @@ if [ -d "$ROOT/../shared/assets" ]; then
   for lookup in model hardware; do
     "$S" deferred --backend vulkan --lookup "$lookup" --scene "$SPONZA" --size 1920x1080 --ss 4 --stall 4000 \
       --brute-force --out "$OUT/sponza_$lookup" "$@"
+  done
+  # The frame: 16 frames through the views atrium -> arcade -> upper (scenes/sponza.json's).
+  cat >"$OUT/sponza_path.json" <<'JSON'
+{"keyframes": [
+  {"position": [-13.0, 1.8, 0.0], "target": [5.0, 4.0, 0.0], "fov": 60},
+  {"position": [-8.0, 1.6, -4.5], "target": [6.0, 3.0, -3.5], "fov": 60},
+  {"position": [10.0, 7.5, 4.0], "target": [-6.0, 3.0, -2.0], "fov": 60}]}
+JSON
+  for schedule in pixel list; do
+    "$S" frame --scene "$SPONZA" --path "$OUT/sponza_path.json" --frames 16 --size 1920x1080 --ss 4 --ao sao \
+      --ao-param guardBand=64 --aa ddaa2 --schedule "$schedule" --profile "$OUT/frame_sponza_$schedule.json" \
+      -o "$OUT/frame_sponza_$schedule.apng" "$@"
   done
 else
   echo "bench_gpu_deferred: ../shared/assets absent, the Sponza runs are left out" >&2

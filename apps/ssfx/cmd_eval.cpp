@@ -22,6 +22,9 @@
 #include "ssfx/render/renderer.hpp"
 #include "ssfx/scene/raytrace.hpp"
 #endif
+#ifdef SSFX_HAVE_GPU
+#include "ssfx/eval/frame_experiment.hpp"
+#endif
 
 namespace ssfx::cli {
 
@@ -318,7 +321,8 @@ void addReport(CLI::App& eval) {
     cmd->add_option("--threads", *threads, "Worker threads (0 = all)")->check(CLI::Range(0, 1024));
     auto noRender = std::make_shared<bool>(false);
     cmd->add_flag("--no-render", *noRender,
-                  "Leave out what needs the Vulkan renderer: the atrium in the quality table, adaptive supersampling");
+                  "Leave out what needs the Vulkan renderer: the atrium in the quality table, adaptive supersampling, "
+                  "the whole frame on one device");
     cmd->callback([o, threads, scenes, noRender, deferredBackend] {
         if (*deferredBackend == "vulkan" && *noRender)
             throw Error("--deferred-backend with --no-render: the experiment needs the renderer");
@@ -365,6 +369,17 @@ void addReport(CLI::App& eval) {
                 d.exec = Exec{threads};
                 d.progress = progressLine;
                 return eval::runDeferredExperiment(d);
+            };
+#endif
+#ifdef SSFX_HAVE_GPU
+        // The whole frame on one device: an orbit of the atrium, its per-pass profile (docs/frame.md).
+        if (!*noRender)
+            o->frameExperiment = [quick = o->quick](const std::string& dir) {
+                eval::FrameExperimentOptions f;
+                f.outDir = dir;
+                f.quick = quick;
+                f.progress = progressLine;
+                return eval::runFrameExperiment(f);
             };
 #endif
         o->exec = Exec{*threads};

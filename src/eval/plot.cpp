@@ -209,6 +209,47 @@ ImageRgba8 groupedBarChart(const std::vector<std::string>& categories, const std
     return ch.sf.image();
 }
 
+ImageRgba8 stackedBarChart(const std::vector<std::string>& categories, const std::vector<Series>& series,
+                           const ChartStyle& st) {
+    if (st.logY) throw Error(fmt::format("chart '{}': stacked bars need a linear axis", st.title));
+    // The value axis spans the stacks' totals, from 0.
+    Series totals{"total", std::vector<double>(categories.size(), 0.0)};
+    for (const auto& s : series) {
+        if (s.values.size() != categories.size())
+            throw Error(fmt::format("chart: series '{}' has {} values for {} categories", s.name, s.values.size(),
+                                    categories.size()));
+        for (std::size_t g = 0; g < categories.size(); ++g) {
+            if (s.values[g] < 0)
+                throw Error(
+                    fmt::format("chart '{}': stacked value {} of '{}' is negative", st.title, s.values[g], s.name));
+            if (std::isfinite(s.values[g])) totals.values[g] += s.values[g];
+        }
+    }
+    ChartStyle zero = st;
+    zero.zeroBased = true;
+    Chart ch(zero, {totals}, categories.size(), "categories");
+    cairo_t* cr = ch.sf.cr.get();
+    const double groupW = (ch.right - ch.left) / double(std::max<std::size_t>(1, categories.size()));
+    for (std::size_t g = 0; g < categories.size(); ++g) {
+        const double gx = ch.left + groupW * double(g) + groupW * 0.15;
+        double below = 0;  // the stack so far
+        for (std::size_t s = 0; s < series.size(); ++s) {
+            const double v = series[s].values[g];
+            if (!std::isfinite(v) || v == 0) continue;
+            const double y0 = ch.ax.map(std::min(below, ch.ax.hi)), y1 = ch.ax.map(std::min(below + v, ch.ax.hi));
+            below += v;
+            const auto* c = kPalette[s % std::size(kPalette)];
+            cairo_set_source_rgb(cr, c[0], c[1], c[2]);
+            cairo_rectangle(cr, gx, y1, groupW * 0.7, y0 - y1);
+            cairo_fill(cr);
+        }
+        cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+        text(cr, gx + groupW * 0.35, ch.bottom + 16, categories[g], 12, 0.5);
+    }
+    legend(cr, series, ch.right + 12, ch.top + 4);
+    return ch.sf.image();
+}
+
 ImageRgba8 lineChart(const std::vector<double>& x, const std::vector<Series>& series, const ChartStyle& st) {
     if (x.size() < 2) throw Error("chart: a line chart needs at least two x values");
     if (st.xLabel.find('(') == std::string::npos)

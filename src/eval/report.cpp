@@ -841,6 +841,11 @@ void writeReport(const ReportOptions& o) {
         prefixPaths(d, "deferred");
         sections.push_back(std::move(d));
     }
+    if (o.frameExperiment) {  // the caller runs it: it needs the GPU backend
+        Section f = o.frameExperiment((r.out / "frame").string());
+        prefixPaths(f, "frame");
+        sections.push_back(std::move(f));
+    }
 
     for (const auto& [id, text] : detail::methodDocs())
         io::writeTextAtomic(r.path("methods", std::string(id) + ".html"), html::docPage(id, text));

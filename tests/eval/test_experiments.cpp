@@ -102,6 +102,25 @@ TEST(Plot, ChartsDrawBarsAndLines) {
     EXPECT_THROW(eval::groupedBarChart({"a"}, {{"s", {1.0}}}, st), Error);
 }
 
+TEST(Plot, StackedBarsStackTheSeriesFromZero) {
+    const eval::ChartStyle st{300, 200, "profile", "frame", "time (ms)", false, false};
+    // Two frames; the second's stack (10) is twice the first's (5): its bar reaches twice as high.
+    const auto img = eval::stackedBarChart({"0", "1"}, {{"draw", {2.0, 4.0}}, {"shade", {3.0, 6.0}}}, st);
+    ASSERT_EQ(img.width(), 300);
+    const auto topOf = [&](int x0, int x1) {  // the highest row with a palette colour in columns [x0, x1)
+        for (int y = 0; y < img.height(); ++y)
+            for (int x = x0; x < x1; ++x)
+                if (std::abs(int(img(x, y).r) - int(img(x, y).b)) > 60) return y;
+        return img.height();
+    };
+    const int bottom = 200 - 48, left = 64, groupW = (300 - 110 - 64) / 2;
+    const int h0 = bottom - topOf(left, left + groupW), h1 = bottom - topOf(left + groupW, left + 2 * groupW);
+    EXPECT_GT(h0, 10);
+    EXPECT_NEAR(double(h1) / double(h0), 2.0, 0.1);
+    EXPECT_THROW(eval::stackedBarChart({"0"}, {{"s", {-1.0}}}, st), Error);
+    EXPECT_THROW(eval::stackedBarChart({"0", "1"}, {{"s", {1.0}}}, st), Error);
+}
+
 TEST(Plot, TickLabelsAreDistinctAndHaveTheStepsDigits) {
     // The report's SSIM chart spans about 0.78..0.99: ticks 0.80, 0.85, ... must not all read "0.8"/"0.9".
     const auto ticks = eval::axisTicks(0.78, 0.99, false);

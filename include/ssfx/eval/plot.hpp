@@ -1,6 +1,7 @@
 // Charts for the report, drawn with Cairo (antialiased, DejaVu Sans) into RGBA images that
 // the caller writes as PNG: grouped bars (one group per category, one bar per series, as
-// the DDAA paper's Figure 8 PSNR chart) and line charts (the kernel experiment).
+// the DDAA paper's Figure 8 PSNR chart), stacked bars (the frame profile) and line charts (the
+// kernel experiment).
 #pragma once
 
 #include <string>
@@ -26,6 +27,10 @@ struct ChartStyle {
 };
 
 ImageRgba8 groupedBarChart(const std::vector<std::string>& categories, const std::vector<Series>& series,
+                           const ChartStyle& style);
+//! One bar per category, the series stacked in order from the axis up (a frame profile: one
+//! bar per frame, one segment per pass); the axis starts at 0. Values must be >= 0 (NaN: none).
+ImageRgba8 stackedBarChart(const std::vector<std::string>& categories, const std::vector<Series>& series,
                            const ChartStyle& style);
 ImageRgba8 lineChart(const std::vector<double>& x, const std::vector<Series>& series, const ChartStyle& style);
 

@@ -44,6 +44,9 @@ struct ReportOptions {
     //! its section, paths relative to that folder (it needs the renderer; see
     //! ssfx/eval/deferred_experiment.hpp).
     std::function<Section(const std::string& dir)> deferredExperiment;
+    //! Optional: the whole frame on one device (ssfx/eval/frame_experiment.hpp, the GPU
+    //! backend's), run into the given folder; its section, paths relative to that folder.
+    std::function<Section(const std::string& dir)> frameExperiment;
     //! Optional: writes more render sets (NAME.png, NAMEx2/x4/x8.png; e.g. 3-D scenes from the
     //! Vulkan renderer) into the given folder before the quality table is computed, and
     //! returns their names with a one-line description each.
