@@ -57,11 +57,9 @@ GpuRun runOnGpu(const DeferredOptions& o, const scene::Scene& scene, const scene
     for (const gpu::Schedule s : kSchedules) shading.adaptive(g, warm, s);
     if (o.bruteForce) shading.bruteForce(g, warm.shading);
     // Every schedule (the same image); the one asked for (or -p tiled's) is the result.
-    const gpu::Schedule chosen = o.schedule == "pixel"   ? gpu::Schedule::PerPixel
-                                 : o.schedule == "tiled" ? gpu::Schedule::Tiled
-                                 : o.schedule == "list"  ? gpu::Schedule::SampleList
-                                 : p.tiled               ? gpu::Schedule::Tiled
-                                                         : gpu::Schedule::PerPixel;
+    const gpu::Schedule chosen = !o.schedule.empty() ? gpu::parseSchedule(o.schedule)
+                                 : p.tiled           ? gpu::Schedule::Tiled
+                                                     : gpu::Schedule::PerPixel;
     r.summary = "; rest pass:";
     const char* names[] = {"per pixel", "tiled", "sample list"};
     for (std::size_t i = 0; i < kSchedules.size(); ++i) {
@@ -80,6 +78,22 @@ GpuRun runOnGpu(const DeferredOptions& o, const scene::Scene& scene, const scene
 }
 #endif
 
+}  // namespace
+
+deferred::AdaptiveParams adaptiveParams(const std::vector<std::string>& params, int stall) {
+    const deferred::DeferredMethodInfo& method = deferred::deferredMethodById("adaptive");
+    deferred::DeferredParams all = method.defaults();
+    std::get<deferred::AdaptiveParams>(all).shading.stall = stall;
+    for (const auto& text : params) {
+        const auto [name, value] = parseParam(text, method.params, method.id);
+        deferred::setParam(method, all, name, value);
+    }
+    method.validate(all);
+    return std::get<deferred::AdaptiveParams>(all);
+}
+
+namespace {
+
 void run(const DeferredOptions& o) {
     if (o.scene.empty()) throw Error("no scene given (--scene atrium | cornell | FILE.json | MODEL)");
     if (o.out.empty()) throw Error("no output folder given (--out DIR)");
@@ -91,15 +105,7 @@ void run(const DeferredOptions& o) {
     if (vulkan) throw Error("--backend vulkan: this ssfx was built without the GPU backend");
 #endif
     const auto [w, h] = parseSize(o.size, "--size", 8192);
-    const deferred::DeferredMethodInfo& method = deferred::deferredMethodById("adaptive");
-    deferred::DeferredParams params = method.defaults();
-    std::get<deferred::AdaptiveParams>(params).shading.stall = o.stall;
-    for (const auto& text : o.params) {
-        const auto [name, value] = parseParam(text, method.params, method.id);
-        deferred::setParam(method, params, name, value);
-    }
-    method.validate(params);
-    const deferred::AdaptiveParams& p = std::get<deferred::AdaptiveParams>(params);
+    const deferred::AdaptiveParams p = adaptiveParams(o.params, o.stall);
     const scene::Scene scene = scene::loadScene(o.scene);
     const scene::View& view = o.view.empty() ? scene.views.at(0).second : scene.view(o.view);
     render::Renderer renderer({o.device, false});

@@ -11,7 +11,7 @@
 #include "apps/ssfx/console.hpp"
 #include "ssfx/aa/presets.hpp"
 #include "ssfx/core/error.hpp"
-#include "ssfx/deferred/registry.hpp"
+#include "ssfx/eval/timing.hpp"
 #include "ssfx/io/png.hpp"
 #include "ssfx/scene/camera_path.hpp"
 #include "ssfx/vk/context.hpp"
@@ -32,11 +32,7 @@ struct FrameOptions {
 };
 
 #ifdef SSFX_HAVE_GPU
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    const std::size_t n = v.size();
-    return n == 0 ? 0.0 : n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
+using eval::median;
 
 void run(const FrameOptions& o, const CLI::App& cmd) {
     // Every option is checked before the scene is loaded or a device is opened.
@@ -84,20 +80,9 @@ void run(const FrameOptions& o, const CLI::App& cmd) {
     } else if (!o.aaParams.empty() || !o.aaPreset.empty()) {
         throw Error("--aa-param and --aa-preset go with an AA method (--aa none)");
     }
-    const deferred::DeferredMethodInfo& method = deferred::deferredMethodById("adaptive");
-    deferred::DeferredParams params = method.defaults();
-    std::get<deferred::AdaptiveParams>(params).shading.stall = o.stall;
-    for (const auto& text : o.params) {
-        const auto [name, value] = parseParam(text, method.params, method.id);
-        deferred::setParam(method, params, name, value);
-    }
-    method.validate(params);
-    fs.shading = std::get<deferred::AdaptiveParams>(params);
+    fs.shading = adaptiveParams(o.params, o.stall);
     fs.lookup = gpu::parseSampling(o.lookup);
-    fs.schedule = o.schedule == "pixel"   ? gpu::Schedule::PerPixel
-                  : o.schedule == "tiled" ? gpu::Schedule::Tiled
-                  : o.schedule == "list"  ? gpu::Schedule::SampleList
-                                          : gpu::Schedule::FromParams;
+    fs.schedule = o.schedule.empty() ? gpu::Schedule::FromParams : gpu::parseSchedule(o.schedule);
 
     const scene::Scene scene = scene::loadScene(o.scene);
     std::vector<scene::View> views;

@@ -4,11 +4,15 @@
 #include <CLI/CLI.hpp>
 
 #include "ssfx/core/params.hpp"
+#ifdef SSFX_HAVE_RENDER
+#include "ssfx/deferred/adaptive.hpp"
+#endif
 
 #include <span>
 #include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 namespace ssfx::cli {
 
@@ -22,6 +26,11 @@ std::pair<std::string, double> parseParam(const std::string& text, std::span<con
 //! --max-pixels N: a whole number in [1, kMaxPixels], echoed as given when it is not.
 std::int64_t parseMaxPixels(const std::string& text);
 std::pair<int, int> parseSize(const std::string& text, const std::string& option = "--size", int maxSide = 16384);
+#ifdef SSFX_HAVE_RENDER
+//! The adaptive shading's params (deferred registry): the defaults, the stall, then the -p
+//! NAME=VALUE overrides, validated (ssfx deferred and ssfx frame). Throws ssfx::Error.
+deferred::AdaptiveParams adaptiveParams(const std::vector<std::string>& params, int stall);
+#endif
 
 void addAaCommand(CLI::App& app);
 void addMethodsCommand(CLI::App& app);

@@ -10,21 +10,12 @@
 #include "ssfx/ao/sao.hpp"
 #include "ssfx/core/error.hpp"
 #include "ssfx/eval/plot.hpp"
+#include "ssfx/eval/timing.hpp"
 #include "ssfx/gpu/frame.hpp"
 #include "ssfx/io/png.hpp"
 #include "ssfx/scene/camera_path.hpp"
 
 namespace ssfx::eval {
-
-namespace {
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    const std::size_t n = v.size();
-    return n == 0 ? 0.0 : n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
-}  // namespace
 
 Section runFrameExperiment(const FrameExperimentOptions& o) {
     namespace fs = std::filesystem;

@@ -127,6 +127,19 @@ void checkPlane(const ImageRef& r, const char* name, std::initializer_list<vk::F
 
 }  // namespace
 
+std::string_view scheduleName(Schedule s) {
+    return s == Schedule::PerPixel     ? "pixel"
+           : s == Schedule::Tiled      ? "tiled"
+           : s == Schedule::SampleList ? "list"
+                                       : "params";
+}
+
+Schedule parseSchedule(std::string_view name) {
+    for (const Schedule s : {Schedule::FromParams, Schedule::PerPixel, Schedule::Tiled, Schedule::SampleList})
+        if (name == scheduleName(s)) return s;
+    throw Error(fmt::format("schedule '{}': expected pixel, tiled, list or params", name));
+}
+
 struct AdaptiveShading::Impl {
     std::shared_ptr<vkx::Context> ctx;
     Sampling lookup;

@@ -76,6 +76,10 @@ struct GpuDeferredResult : deferred::DeferredResult {
 //! SampleList: the samples enqueued, shaded one per invocation by an indirect dispatch, and
 //! summed per pixel in dither order (no lane waits for another pixel's loop).
 enum class Schedule { FromParams, PerPixel, Tiled, SampleList };
+//! "params", "pixel", "tiled" or "list" (the CLI's --schedule); parseSchedule throws
+//! ssfx::Error for anything else.
+std::string_view scheduleName(Schedule s);
+Schedule parseSchedule(std::string_view name);
 
 class AdaptiveShading {
 public:
