@@ -517,6 +517,9 @@ PY
   check frame_ext 2 $VK "$SSFX" frame --scene cornell --size 32x24 -o "$OUT/bad.jpg"
   check frame_view_frames 2 $VK "$SSFX" frame --scene atrium --view nave --frames 3 -o "$OUT/bad.png"
   check frame_ss 2 $VK "$SSFX" frame --scene cornell --ss 5 -o "$OUT/bad.png"
+  check frame_nodriver 2 env VK_ICD_FILENAMES=/nonexistent/icd.json VK_DRIVER_FILES=/nonexistent/icd.json \
+    ASAN_OPTIONS=detect_leaks=0 "$SSFX" frame --scene cornell --size 32x24 -o "$OUT/bad.png"
+  contains frame_nodriver "$OUT/frame_nodriver.err" "Vulkan"
   [ ! -e "$OUT/bad.png" ] && [ ! -e "$OUT/bad.jpg" ] || { echo "FAIL frame: a refused run left an output"; fail=1; }
   # Table 1 on the CPU and the GPU passes: the GPU's rows are the CPU's within the parity
   # bounds of tests/gpu/test_gpu_deferred.cpp (image 1e-4; k the same but at float ties).
