@@ -113,6 +113,9 @@ HeaderFacts checkHeader(std::span<const std::uint8_t> b, const std::string& name
             if (attr == "dataWindow" && type == "box2i" && size == 16) {
                 facts.width = std::int64_t(le32(v + 8)) - le32(v) + 1;
                 facts.height = std::int64_t(le32(v + 12)) - le32(v + 4) + 1;
+                // Before OpenEXR sees it: opening the file allocates a scan-line block's buffer
+                // for the data window's width (a 140-byte file asked for 2 GiB).
+                checkInputDimensions(facts.width, facts.height, name + " (data window)");
             }
             if (attr == "channels" && type == "chlist") {
                 // name\0, int32 pixel type (UINT 4, HALF 2, FLOAT 4 bytes), 4 bytes, int32 x and y sampling.
@@ -189,13 +192,14 @@ void checkChunks(std::span<const std::uint8_t> b, const HeaderFacts& h, const st
 ImageF decodeExr(std::span<const std::uint8_t> bytes, const std::string& name, const std::string& channel,
                  std::string* channelUsed) {
     const HeaderFacts facts = checkHeader(bytes, name);
+    // The blocks too, before OpenEXR opens the file (it sizes its buffers by the header).
+    checkChunks(bytes, facts, name);
     try {
         MemoryIStream stream(bytes, name);
         Imf::InputFile file(stream);
         const Imath::Box2i dw = file.header().dataWindow();
         const std::int64_t w = std::int64_t(dw.max.x) - dw.min.x + 1, h = std::int64_t(dw.max.y) - dw.min.y + 1;
         checkInputDimensions(w, h, name);
-        checkChunks(bytes, facts, name);
         const Imf::ChannelList& channels = file.header().channels();
         std::string pick = channel;
         if (pick.empty()) {

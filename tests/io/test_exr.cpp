@@ -1,6 +1,8 @@
 // EXR and camera JSON files.
 #include <gtest/gtest.h>
 
+#include <cstring>
+
 #include <algorithm>
 
 #include <cmath>
@@ -70,6 +72,33 @@ TEST(Exr, AHeaderAttributeClaimingMoreThanTheFileIsRefusedBeforeOpenExrAllocates
         EXPECT_NE(m.find("2147483647 bytes"), std::string::npos) << m;
     }
     EXPECT_EQ(io::decodeExr(io::encodeExr(img.view(), "Z"), "ok.exr"), img);  // an intact file still reads
+}
+
+TEST(Exr, AHugeDataWindowIsRefusedBeforeOpenExrAllocates) {
+    // The fuzzer's find (make test's fuzz run, 2026-12-06): a 140-byte ZIP-compressed header
+    // whose data window is 33423368 x 16 pixels. Opening it, OpenEXR allocated a 2 GiB
+    // scan-line buffer; the header check now refuses the size first, naming the limit.
+    const char* base64 =
+        "di8xAQIAAABjaGFubmVscwBjaGxpc3QAEwAAAFoAAgAAAAAAAAABAAAAAQAAAABjbwBjb21wcmVzc2lvbgABAAAAA2RhdGFXaW5kb3cA"
+        "Ym94MmkAEAAAAAAAAAAAAAAABwD+AQ8AAAAFAAAAAAAAAAALAABkaXNwbGF5V2luZCqjwveCqBAAbQRgK8A=";
+    std::vector<std::uint8_t> bytes;
+    std::uint32_t acc = 0;
+    int bits = 0;
+    for (const char* c = base64; *c && *c != '='; ++c) {
+        const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+        acc = acc << 6 | std::uint32_t(std::strchr(table, *c) - table);
+        if ((bits += 6) >= 8) bytes.push_back(std::uint8_t(acc >> (bits -= 8)));
+    }
+    ASSERT_EQ(bytes.size(), 140u);
+    try {
+        io::decodeExr(bytes, "huge.exr");
+        ADD_FAILURE() << "no error";
+    } catch (const Error& e) {
+        const std::string m = e.what();
+        EXPECT_NE(m.find("huge.exr"), std::string::npos) << m;
+        // "(data window)": the header check's message, not the one after OpenEXR opened the file.
+        EXPECT_NE(m.find("huge.exr (data window): size 33423368x16 exceeds"), std::string::npos) << m;
+    }
 }
 
 TEST(Camera, JsonRoundTripAndErrors) {
