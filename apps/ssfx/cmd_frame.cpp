@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "apps/ssfx/commands.hpp"
 #include "apps/ssfx/console.hpp"
@@ -102,26 +103,27 @@ void run(const FrameOptions& o, const CLI::App& cmd) {
     gpu::FrameRenderer renderer(ctx, scene, fs);
     // lavapipe compiles each pipeline on its first dispatch: with --profile, one untimed frame first.
     if (!o.profile.empty()) renderer.render(views[0]);
-    io::Animation animation;
-    std::vector<gpu::FrameResult> results;
+    // Frames are written as they come (an APNG streamed through io::ApngWriter: one frame in
+    // memory, however many there are); the image and the profile appear together or not at all.
+    io::OutputSet outputs;
+    const bool animated = views.size() > 1 || ext == ".apng";
+    std::optional<io::ApngWriter> apng;
+    if (animated) apng.emplace(o.out, w, h, std::uint32_t(views.size()));
+    std::vector<gpu::FrameResult> results;  // the pass times (the images are written, then dropped)
     {
         ProgressLine line("frame");
         for (std::size_t f = 0; f < views.size(); ++f) {
             line.report({"frames", std::int64_t(f), std::int64_t(views.size()), "frames"});
             gpu::FrameResult r = renderer.render(views[f]);
-            io::Frame frame;
-            frame.image = std::move(r.image);
-            frame.delayNum = 1;
-            frame.delayDen = std::uint16_t(o.fps);
-            animation.frames.push_back(std::move(frame));
+            if (apng)
+                apng->add(r.image.view(), 1, std::uint16_t(o.fps));
+            else
+                io::writePng(o.out, r.image.view());
+            r.image = ImageRgba8();
             results.push_back(std::move(r));
         }
     }
-    io::OutputSet outputs;  // the image and the profile: all or none
-    if (animation.frames.size() > 1 || ext == ".apng")
-        io::writeApng(o.out, animation);
-    else
-        io::writePng(o.out, animation.frames[0].image.view());
+    if (apng) apng->commit();
 
     // The profile: each pass's median over the frames and its share of the frame's median.
     std::vector<std::string> names;
