@@ -46,6 +46,10 @@ GpuRun runOnGpu(const DeferredOptions& o, const scene::Scene& scene, const scene
     co.device = o.device;
     auto ctx = vkx::Context::create(co);
     gpu::AdaptiveShading shading(ctx, scene, gpu::parseSampling(o.lookup.empty() ? "model" : o.lookup));
+    if (shading.lookup() == gpu::Sampling::Hardware && p.shading.maxAnisotropy > 1 && ctx->info.type == "cpu")
+        printNote("deferred",
+                  "lavapipe's anisotropic filtering is very slow (docs/gpu.md, \"Adaptive shading\"); "
+                  "-p maxAnisotropy=1 keeps the hardware lookup trilinear");
     GpuRun r;
     r.device = ctx->info.name;
     // Untimed warm-up of each pipeline (without the stall): lavapipe compiles a shader's

@@ -100,6 +100,10 @@ void run(const FrameOptions& o, const CLI::App& cmd) {
     co.graphics = true;
     co.validation = o.validation;
     auto ctx = vkx::Context::create(co);
+    if (fs.lookup == gpu::Sampling::Hardware && fs.shading.shading.maxAnisotropy > 1 && ctx->info.type == "cpu")
+        printNote("frame",
+                  "lavapipe's anisotropic filtering is very slow (docs/gpu.md, \"Adaptive shading\"); "
+                  "-p maxAnisotropy=1 keeps the hardware lookup trilinear");
     gpu::FrameRenderer renderer(ctx, scene, fs);
     // lavapipe compiles each pipeline on its first dispatch: with --profile, one untimed frame first.
     if (!o.profile.empty()) renderer.render(views[0]);
