@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
 
@@ -12,11 +11,12 @@
 #include "apps/ssfx/console.hpp"
 #include "ssfx/aa/presets.hpp"
 #include "ssfx/core/error.hpp"
-#include "ssfx/eval/timing.hpp"
 #include "ssfx/io/png.hpp"
 #include "ssfx/scene/camera_path.hpp"
 #include "ssfx/vk/context.hpp"
 #ifdef SSFX_HAVE_GPU
+#include "ssfx/eval/frame_experiment.hpp"
+#include "ssfx/gpu/ao.hpp"
 #include "ssfx/gpu/frame.hpp"
 #endif
 
@@ -33,8 +33,6 @@ struct FrameOptions {
 };
 
 #ifdef SSFX_HAVE_GPU
-using eval::median;
-
 void run(const FrameOptions& o, const CLI::App& cmd) {
     // Every option is checked before the scene is loaded or a device is opened.
     if (o.scene.empty()) throw Error("no scene given (--scene atrium | cornell | FILE.json | MODEL)");
@@ -56,7 +54,7 @@ void run(const FrameOptions& o, const CLI::App& cmd) {
     fs.m = o.m;
     fs.ao = o.ao;
     fs.aa = o.aa;
-    if (o.ao == "gtao" || o.ao == "sao" || o.ao == "alchemy") {
+    if (gpu::hasGpuAo(o.ao)) {
         const ao::AoMethodInfo& method = ao::aoMethodById(o.ao);
         fs.aoParams = method.defaults("");
         for (const auto& text : o.aoParams) {
@@ -130,15 +128,8 @@ void run(const FrameOptions& o, const CLI::App& cmd) {
     if (apng) apng->commit();
 
     // The profile: each pass's median over the frames and its share of the frame's median.
-    std::vector<std::string> names;
-    for (const auto& p : results[0].passes) names.push_back(p.pass);
-    std::map<std::string, std::vector<double>> byPass;
-    std::vector<double> totals;
-    for (const auto& r : results) {
-        for (const auto& p : r.passes) byPass[p.pass].push_back(p.milliseconds);
-        totals.push_back(r.totalMs());
-    }
-    const double frameMedian = median(totals);
+    const eval::FrameProfile profile = eval::frameProfile(results);
+    const double frameMedian = profile.frameMedian;
     const std::string clock(gpu::frameClockName(renderer.clock()));
     const char* clockText = renderer.clock() == gpu::FrameClock::Timestamps ? "GPU timestamps" : "host clock";
     std::string summary = fmt::format(
@@ -157,23 +148,22 @@ void run(const FrameOptions& o, const CLI::App& cmd) {
         j["aa"] = o.aa;
         j["schedule"] = o.schedule.empty() ? "params" : o.schedule;
         j["lookup"] = o.lookup;
-        j["passes"] = names;
+        j["passes"] = profile.passes;
         auto& perFrame = j["frames"] = nlohmann::ordered_json::array();
         for (std::size_t f = 0; f < results.size(); ++f) {
             nlohmann::ordered_json fr;
             fr["frame"] = f;
-            for (const auto& p : results[f].passes) fr["ms"][p.pass] = p.milliseconds;
-            fr["total_ms"] = results[f].totalMs();
+            for (std::size_t p = 0; p < profile.passes.size(); ++p) fr["ms"][profile.passes[p]] = profile.ms[p][f];
+            fr["total_ms"] = profile.totals[f];
             perFrame.push_back(fr);
         }
-        for (const auto& n : names) j["median_ms"][n] = median(byPass[n]);
+        for (std::size_t p = 0; p < profile.passes.size(); ++p) j["median_ms"][profile.passes[p]] = profile.medians[p];
         j["median_ms"]["frame"] = frameMedian;
         writeOutput(o.profile, j.dump(2) + "\n");
         summary += fmt::format("{:<14} {:>10} {:>8}\n", "pass", "median ms", "share");
-        for (const auto& n : names) {
-            const double ms = median(byPass[n]);
-            summary += fmt::format("{:<14} {:>10.3f} {:>7.1f}%\n", n, ms, frameMedian > 0 ? 100 * ms / frameMedian : 0);
-        }
+        for (std::size_t p = 0; p < profile.passes.size(); ++p)
+            summary += fmt::format("{:<14} {:>10.3f} {:>7.1f}%\n", profile.passes[p], profile.medians[p],
+                                   100 * profile.share(p));
         summary += fmt::format("{:<14} {:>10.3f} {:>7.1f}%\n", "frame", frameMedian, 100.0);
     }
     outputs.commit();

@@ -17,6 +17,28 @@
 
 namespace ssfx::eval {
 
+FrameProfile frameProfile(const std::vector<gpu::FrameResult>& frames) {
+    if (frames.empty()) throw Error("frame profile: no frames");
+    FrameProfile p;
+    for (const auto& pass : frames[0].passes) p.passes.push_back(pass.pass);
+    p.ms.assign(p.passes.size(), {});
+    for (std::size_t f = 0; f < frames.size(); ++f) {
+        if (frames[f].passes.size() != p.passes.size())
+            throw Error(fmt::format("frame profile: frame {} has {} passes, frame 0 {}", f, frames[f].passes.size(),
+                                    p.passes.size()));
+        for (std::size_t i = 0; i < p.passes.size(); ++i) {
+            if (frames[f].passes[i].pass != p.passes[i])
+                throw Error(fmt::format("frame profile: frame {}'s pass {} is {}, frame 0's {}", f, i,
+                                        frames[f].passes[i].pass, p.passes[i]));
+            p.ms[i].push_back(frames[f].passes[i].milliseconds);
+        }
+        p.totals.push_back(frames[f].totalMs());
+    }
+    for (const auto& m : p.ms) p.medians.push_back(median(m));
+    p.frameMedian = median(p.totals);
+    return p;
+}
+
 Section runFrameExperiment(const FrameExperimentOptions& o) {
     namespace fs = std::filesystem;
     const fs::path out(o.outDir);
@@ -60,13 +82,8 @@ Section runFrameExperiment(const FrameExperimentOptions& o) {
         animation.frames.push_back({std::move(r.image), 1, 12});
         results.push_back(std::move(r));
     }
-    std::vector<std::string> passes;
-    for (const auto& p : results[0].passes) passes.push_back(p.pass);
-
     // The profile: each pass's median, its share of the median frame; a bar per frame.
-    std::vector<double> totals;
-    for (const auto& r : results) totals.push_back(r.totalMs());
-    const double frameMedian = median(totals);
+    const FrameProfile profile = frameProfile(results);
     Table table;
     table.header = {"pass", "median (ms)", "share of the frame"};
     std::vector<Series> series;
@@ -80,17 +97,15 @@ Section runFrameExperiment(const FrameExperimentOptions& o) {
     j["ss"] = o.m;
     j["ao"] = o.ao;
     j["aa"] = o.aa;
-    j["passes"] = passes;
-    for (std::size_t p = 0; p < passes.size(); ++p) {
-        Series s{passes[p], {}};
-        for (const auto& r : results) s.values.push_back(r.passes[p].milliseconds);
-        const double med = median(s.values);
-        table.addRow({passes[p], fmt::format("{:.3f}", med),
-                      fmt::format("{:.1f} %", frameMedian > 0 ? 100.0 * med / frameMedian : 0.0)});
-        j["median_ms"][passes[p]] = med;
-        j["per_frame_ms"][passes[p]] = s.values;
-        series.push_back(std::move(s));
+    j["passes"] = profile.passes;
+    for (std::size_t p = 0; p < profile.passes.size(); ++p) {
+        table.addRow({profile.passes[p], fmt::format("{:.3f}", profile.medians[p]),
+                      fmt::format("{:.1f} %", 100.0 * profile.share(p))});
+        j["median_ms"][profile.passes[p]] = profile.medians[p];
+        j["per_frame_ms"][profile.passes[p]] = profile.ms[p];
+        series.push_back({profile.passes[p], profile.ms[p]});
     }
+    const double frameMedian = profile.frameMedian;
     table.addRow({"frame (sum of the passes)", fmt::format("{:.3f}", frameMedian), "100 %"});
     j["median_ms"]["frame"] = frameMedian;
 
@@ -119,12 +134,12 @@ Section runFrameExperiment(const FrameExperimentOptions& o) {
         o.aoGuardBand, o.aa,
         renderer.clock() == gpu::FrameClock::Timestamps ? "GPU timestamps around each pass" : "the host's clock",
         gpu::frameClockName(renderer.clock()), frames);
-    Block profile;
-    profile.heading = "Frame profile";
-    profile.table = std::move(table);
-    profile.figures.push_back({"plots/frame_profile.png", "per-pass time of every frame (stacked)", Figure::Kind::Plot,
-                               style.width, style.height});
-    s.blocks.push_back(std::move(profile));
+    Block profileBlock;
+    profileBlock.heading = "Frame profile";
+    profileBlock.table = std::move(table);
+    profileBlock.figures.push_back({"plots/frame_profile.png", "per-pass time of every frame (stacked)",
+                                    Figure::Kind::Plot, style.width, style.height});
+    s.blocks.push_back(std::move(profileBlock));
     Block anim;
     std::string through;
     for (const auto& name : o.tour) through += (through.empty() ? "" : ", ") + name;

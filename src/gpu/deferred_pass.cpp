@@ -578,13 +578,14 @@ GpuDeferredResult AdaptiveShading::bruteForce(const scene::GBuffer& gbuffer, con
     return impl_->run(gbuffer, params, nullptr, Schedule::FromParams);
 }
 
+ImageRef imageRef(const render::DeviceImage& d) {
+    return ImageRef{d.view, d.format, d.usage, d.width, d.height, d.layout};
+}
+
 DeviceGBuffer deviceGBuffer(const render::DeviceGBufferImages& images) {
-    const auto ref = [](const render::DeviceImage& d) {
-        return ImageRef{d.view, d.format, d.usage, d.width, d.height, d.layout};
-    };
     DeviceGBuffer g;
-    g.depth = ref(images.depth), g.normal = ref(images.normal), g.uv = ref(images.uv);
-    g.uvGrad = ref(images.uvGrad), g.ids = ref(images.ids);
+    g.depth = imageRef(images.depth), g.normal = imageRef(images.normal), g.uv = imageRef(images.uv);
+    g.uvGrad = imageRef(images.uvGrad), g.ids = imageRef(images.ids);
     g.width = images.width, g.height = images.height, g.m = images.m;
     g.camera = images.camera.camera, g.view = images.camera.view;
     return g;

@@ -54,10 +54,6 @@ void toGeneral(const vk::raii::CommandBuffer& cmd, const FrameImage& f) {
                     A::eShaderWrite | A::eShaderRead);
 }
 
-ImageRef refOf(const render::DeviceImage& d) {
-    return ImageRef{d.view, d.format, d.usage, d.width, d.height, d.layout};
-}
-
 }  // namespace
 
 double FrameResult::totalMs() const {
@@ -155,9 +151,7 @@ struct FrameRenderer::Impl {
         r.passes.push_back({"gbuffer draw", g.gpuMs});
 
         DeviceGBuffer dg = deviceGBuffer(*gimages);
-        if (ao)
-            dg.ambientOcclusion = ImageRef{*occlusion.view,       F::eR32Sfloat,          occlusion.usage,
-                                           occlusion.image.width, occlusion.image.height, L::eGeneral};
+        if (ao) dg.ambientOcclusion = occlusion.ref();
         const FrameImage& final = aa ? antialiased : encoded;
         const auto w = std::uint32_t(fs.width), h = std::uint32_t(fs.height);
 
@@ -167,7 +161,7 @@ struct FrameRenderer::Impl {
         if (ao)
             passes.emplace_back("ao", [&](const vk::raii::CommandBuffer& cmd) {
                 toGeneral(cmd, occlusion);
-                ao->record(cmd, refOf(*depth), depthCamera, occlusion.ref());
+                ao->record(cmd, imageRef(*depth), depthCamera, occlusion.ref());
                 vkx::computeBarrier(cmd, S::eComputeShader, A::eShaderRead);
             });
         passes.emplace_back("shading", [&](const vk::raii::CommandBuffer& cmd) {

@@ -9,6 +9,7 @@
 
 #include "ssfx/core/progress.hpp"
 #include "ssfx/eval/section.hpp"
+#include "ssfx/gpu/frame.hpp"
 
 namespace ssfx::eval {
 
@@ -28,6 +29,20 @@ struct FrameExperimentOptions {
     bool quick = false;  //!< 160x90, 4 frames (tests)
     ProgressFn progress;
 };
+
+//! The pass times of several frames (ssfx frame --profile, the report's section): per pass
+//! its time in each frame and its median, per frame the sum of its passes.
+struct FrameProfile {
+    std::vector<std::string> passes;      //!< in the frame's order
+    std::vector<std::vector<double>> ms;  //!< [pass][frame]
+    std::vector<double> medians;          //!< per pass
+    std::vector<double> totals;           //!< per frame
+    double frameMedian = 0;
+    //! A pass's median as a share (0..1) of the median frame.
+    double share(std::size_t pass) const { return frameMedian > 0 ? medians[pass] / frameMedian : 0.0; }
+};
+//! Throws ssfx::Error for no frames or frames whose passes differ.
+FrameProfile frameProfile(const std::vector<gpu::FrameResult>& frames);
 
 //! Renders the orbit (after one untimed warm-up frame), writes the outputs and returns the
 //! section (paths relative to outDir). Throws ssfx::Error where there is no Vulkan device.

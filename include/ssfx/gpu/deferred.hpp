@@ -58,6 +58,8 @@ struct DeviceGBuffer {
 //! The renderer's G-buffer left on the device (render::Renderer::renderGBufferOnDevice) as
 //! the passes' input: the attachments' views, formats and layouts, the size, m, the camera.
 DeviceGBuffer deviceGBuffer(const render::DeviceGBufferImages& images);
+//! One of the renderer's images on the device as the passes take it (ImageRef).
+ImageRef imageRef(const render::DeviceImage& image);
 
 //! What one run gives: the CPU's DeferredResult (firstMs, evaluateMs and restMs are the
 //! passes' GPU times from timestamps, 0 where the queue has none) and the lane counts.
