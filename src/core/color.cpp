@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "src/core/exact_div-inl.h"
+#include "src/core/srgb_encode-inl.h"
 #include "ssfx/core/color.hpp"
 #include "ssfx/core/parallel.hpp"
 
@@ -85,6 +86,23 @@ std::int64_t DivExactMismatches(float divisor, int kMax) {
     return mismatches;
 }
 
+std::int64_t EncodeSrgb8Mismatches(const float* values, std::int64_t count) {
+    const hn::ScalableTag<float> df;
+    const hn::RebindToSigned<decltype(df)> di;
+    const auto n = std::int64_t(hn::Lanes(df));
+    std::vector<float> in(static_cast<std::size_t>(n));
+    std::vector<std::int32_t> got(static_cast<std::size_t>(n));
+    std::int64_t mismatches = 0;
+    for (std::int64_t i0 = 0; i0 < count; i0 += n) {
+        const std::int64_t m = std::min(n, count - i0);
+        std::fill(in.begin(), in.end(), 0.0f);
+        std::copy(values + i0, values + i0 + m, in.begin());
+        hn::StoreU(EncodeSrgb8(df, hn::LoadU(df, in.data())), di, got.data());
+        for (std::int64_t i = 0; i < m; ++i) mismatches += got[std::size_t(i)] != encodeSrgb8(in[std::size_t(i)]);
+    }
+    return mismatches;
+}
+
 }  // namespace HWY_NAMESPACE
 }  // namespace ssfx
 HWY_AFTER_NAMESPACE();
@@ -98,10 +116,14 @@ static_assert(std::endian::native == std::endian::little, "LumaRow assumes littl
 HWY_EXPORT(LumaRow);
 HWY_EXPORT(LumaRowSrgb);
 HWY_EXPORT(DivExactMismatches);
+HWY_EXPORT(EncodeSrgb8Mismatches);
 
 namespace detail {
 std::int64_t divExactMismatches(float divisor, int kMax) {
     return HWY_DYNAMIC_DISPATCH(DivExactMismatches)(divisor, kMax);
+}
+std::int64_t encodeSrgb8Mismatches(const float* values, std::int64_t count) {
+    return HWY_DYNAMIC_DISPATCH(EncodeSrgb8Mismatches)(values, count);
 }
 }  // namespace detail
 
@@ -154,6 +176,10 @@ const SrgbEncodeTable& srgbEncodeTable() {
             built.first[j] = level(std::bit_cast<float>(lowest));
             // At most one threshold in the bucket (see the header).
             SSFX_ASSERT(level(std::bit_cast<float>(highest)) <= built.first[j] + 1);
+            const std::uint32_t above = std::bit_cast<std::uint32_t>(t[std::size_t(std::min(built.first[j], 254))]);
+            const std::uint32_t offset =
+                built.first[j] < 255 && above <= highest ? above - lowest : std::uint32_t(T::kNoThreshold);
+            built.packed[j] = std::int32_t((std::uint32_t(built.first[j]) << 16) | offset);
         }
         SSFX_ASSERT(level(std::bit_cast<float>(T::kLowBits - 1)) == 0);
         std::copy(t.begin(), t.end(), built.next.begin());

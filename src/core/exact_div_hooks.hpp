@@ -1,4 +1,4 @@
-// Test hook for exact_div-inl.h (defined in color.cpp).
+// Test hooks for exact_div-inl.h and srgb_encode-inl.h (defined in color.cpp).
 #pragma once
 
 #include <cstdint>
@@ -8,5 +8,9 @@ namespace ssfx::detail {
 //! How many integers k in [0, kMax] get a DivExact(k, divisor) other than the IEEE
 //! quotient float(k) / divisor, on the SIMD target this machine dispatches to.
 std::int64_t divExactMismatches(float divisor, int kMax);
+
+//! How many of the given floats get an EncodeSrgb8 (the vector encode) other than
+//! encodeSrgb8 (the scalar one), on the SIMD target this machine dispatches to.
+std::int64_t encodeSrgb8Mismatches(const float* values, std::int64_t count);
 
 }  // namespace ssfx::detail

@@ -20,7 +20,8 @@ namespace ssfx::HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
 // encodeSrgb8 per lane, by its table (color.hpp): the bucket's level, plus one at or above
-// the next threshold; 0 for v <= 0, NaN and v < 2^-14, 255 for v >= 1.
+// the bucket's threshold (one gather of the packed word); 0 for v <= 0, NaN and v < 2^-14,
+// 255 for v >= 1.
 template <class DF>
 HWY_INLINE hn::Vec<hn::RebindToSigned<DF>> EncodeSrgb8(DF df, hn::Vec<DF> v) {
     using T = ssfx::detail::SrgbEncodeTable;
@@ -28,16 +29,15 @@ HWY_INLINE hn::Vec<hn::RebindToSigned<DF>> EncodeSrgb8(DF df, hn::Vec<DF> v) {
     const hn::RebindToUnsigned<DF> du;
     // (Held here: srgbEncodeTable() is an out-of-line call, once per vector otherwise.)
     static const T& t = ssfx::detail::srgbEncodeTable();
-    const auto bits = hn::BitCast(du, v);
     // (v >= 2^-14 implies v > 0; NaN fails both comparisons.)
     const auto inRange =
         hn::And(hn::Ge(v, hn::Set(df, std::bit_cast<float>(T::kLowBits))), hn::Lt(v, hn::Set(df, 1.0f)));
-    const auto index =
-        hn::IfThenElseZero(hn::RebindMask(di, inRange),
-                           hn::BitCast(di, hn::ShiftRight<T::kShift>(hn::Sub(bits, hn::Set(du, T::kLowBits)))));
-    const auto k = hn::GatherIndex(di, t.first.data(), index);
-    const auto up = hn::RebindMask(di, hn::Ge(v, hn::GatherIndex(df, t.next.data(), k)));
-    const auto level = hn::Add(k, hn::IfThenElseZero(up, hn::Set(di, 1)));
+    const auto offset = hn::BitCast(di, hn::Sub(hn::BitCast(du, v), hn::Set(du, T::kLowBits)));
+    const auto index = hn::IfThenElseZero(hn::RebindMask(di, inRange), hn::ShiftRight<T::kShift>(offset));
+    const auto e = hn::GatherIndex(di, t.packed.data(), index);
+    const auto up =  // offset in the bucket >= the threshold's (no signed Ge in Highway 1.0)
+        hn::Not(hn::Lt(hn::And(offset, hn::Set(di, std::int32_t(T::kOffsetMask))), hn::And(e, hn::Set(di, 0xFFFF))));
+    const auto level = hn::Add(hn::ShiftRight<16>(e), hn::IfThenElseZero(up, hn::Set(di, 1)));
     const auto outside = hn::IfThenElseZero(hn::RebindMask(di, hn::Ge(v, hn::Set(df, 1.0f))), hn::Set(di, 255));
     return hn::IfThenElse(hn::RebindMask(di, inRange), level, outside);
 }

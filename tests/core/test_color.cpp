@@ -1,6 +1,10 @@
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <limits>
+#include <vector>
 
 #include <hwy/targets.h>
 
@@ -59,6 +63,33 @@ TEST(Color, ExactDivisionIsIeeeDivisionForEveryInteger) {
         for (const Range& r : ranges)
             EXPECT_EQ(detail::divExactMismatches(r.divisor, r.kMax), 0)
                 << hwy::TargetName(target) << ": k / " << r.divisor << " for k <= " << r.kMax;
+    }
+    hwy::SetSupportedTargetsForTest(0);
+}
+
+// The vector kernels' sRGB encode (src/core/srgb_encode-inl.h: one gather of the packed
+// bucket word) against encodeSrgb8 (whose table SrgbTransfer.EncodeTableFollowsTheThresholdRule
+// holds to the defining rule): every 61st float in [0, 1], the 4 floats either side of each
+// threshold and of each bucket boundary, and the out-of-range inputs, on every SIMD target.
+TEST(Color, VectorSrgbEncodeGivesTheScalarLevels) {
+    using T = detail::SrgbEncodeTable;
+    std::vector<float> v;
+    const std::uint32_t one = std::bit_cast<std::uint32_t>(1.0f);
+    for (std::uint32_t b = 0; b <= one + 64; b += 61) v.push_back(std::bit_cast<float>(b));
+    auto around = [&](std::uint32_t centre) {
+        for (std::uint32_t b = centre - 4; b <= centre + 4; ++b) v.push_back(std::bit_cast<float>(b));
+    };
+    for (const float f : srgbEncodeThresholds()) around(std::bit_cast<std::uint32_t>(f));
+    for (std::uint32_t j = 0; j <= T::kBuckets; ++j) around(T::kLowBits + (j << T::kShift));
+    for (const float f :
+         {-1.0f, -0.0f, 2.0f, std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity(),
+          std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::denorm_min()})
+        v.push_back(f);
+    const auto targets = hwy::SupportedAndGeneratedTargets();
+    ASSERT_FALSE(targets.empty());
+    for (const std::int64_t target : targets) {
+        hwy::SetSupportedTargetsForTest(target);
+        EXPECT_EQ(detail::encodeSrgb8Mismatches(v.data(), std::int64_t(v.size())), 0) << hwy::TargetName(target);
     }
     hwy::SetSupportedTargetsForTest(0);
 }

@@ -58,12 +58,19 @@ namespace detail {
 //! holds at most one threshold: the level is its smallest float's level, plus one where v is
 //! at or above the next threshold. Below 2^-14 the level is 0 (the first threshold is
 //! 1.5e-4). The table checks the one-threshold property for every bucket when it is built.
+//! `packed` holds both facts of a bucket in one word, so the CPU's encode is one load (one
+//! gather a vector): a positive float is at or above a threshold in its bucket exactly when
+//! its bits' offset in the bucket is at or above the threshold's.
 struct SrgbEncodeTable {
     static constexpr std::uint32_t kShift = 15;            // 23 - 8 mantissa bits
     static constexpr std::uint32_t kLowBits = 113u << 23;  // 2^-14
     static constexpr std::uint32_t kBuckets = (127u - 113u) << 8;
-    std::array<std::int32_t, kBuckets> first;  //!< each bucket's smallest float's level
-    std::array<float, 256> next;               //!< the threshold above level k (255: +infinity)
+    static constexpr std::uint32_t kOffsetMask = (1u << kShift) - 1;  //!< a float's offset in its bucket
+    static constexpr std::uint32_t kNoThreshold = 1u << kShift;       //!< above every offset
+    std::array<std::int32_t, kBuckets> first;                         //!< each bucket's smallest float's level
+    std::array<float, 256> next;                                      //!< the threshold above level k (255: +infinity)
+    //! first << 16 | the offset of the bucket's threshold (kNoThreshold where it holds none)
+    std::array<std::int32_t, kBuckets> packed;
 };
 const SrgbEncodeTable& srgbEncodeTable();
 }  // namespace detail
@@ -79,8 +86,9 @@ inline std::uint8_t encodeSrgb8(float v) {
     const std::uint32_t bits = std::bit_cast<std::uint32_t>(v);
     if (bits < T::kLowBits) return 0;
     const T& t = detail::srgbEncodeTable();
-    const std::int32_t k = t.first[(bits - T::kLowBits) >> T::kShift];
-    return static_cast<std::uint8_t>(k + (v >= t.next[std::size_t(k)] ? 1 : 0));
+    const std::uint32_t offset = bits - T::kLowBits;
+    const auto e = static_cast<std::uint32_t>(t.packed[offset >> T::kShift]);
+    return static_cast<std::uint8_t>((e >> 16) + ((offset & T::kOffsetMask) >= (e & 0xFFFFu) ? 1u : 0u));
 }
 
 //! A filtered channel back to its texture's 8-bit encoding (toUnorm8 or encodeSrgb8).
