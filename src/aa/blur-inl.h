@@ -1,7 +1,7 @@
 // Highway body of blur (compiled once per SIMD target; see blur.cpp).
 //
-// Rows are converted once to float (v / 255, the IEEE quotient by DivExact; an sRGB
-// texture's decoded values, kSrgb8) with one pixel of clamped
+// Rows are converted once to float (v / 255, the IEEE quotient by DivExact, as RGBA rows;
+// an sRGB texture's decoded values, kSrgb8, as R, G and B rows) with one pixel of clamped
 // padding at both ends, so the vector loop also covers the borders. Each lane is one
 // channel of one pixel; the sums run in blurChannel()'s order (no FMA), so every lane
 // equals the scalar reference; each vector is quantised as soon as it is computed.
@@ -25,8 +25,8 @@ namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
 // out[0..4] = pixel 0 (left padding), out[4 + 4x + c] = channel c of pixel x, then pixel w-1.
-// Each byte's texel value: v / 255, or with `srgb` its decoded level (a gather from kSrgb8).
-inline void ToFloatRow(const Rgba8* HWY_RESTRICT in, int w, float* HWY_RESTRICT out, bool srgb) {
+// Each byte's texel value: v / 255 (the IEEE quotient by DivExact).
+inline void ToFloatRow(const Rgba8* HWY_RESTRICT in, int w, float* HWY_RESTRICT out) {
     const hn::ScalableTag<float> df;
     const hn::RebindToSigned<decltype(df)> di;
     const hn::Rebind<std::uint8_t, decltype(df)> d8;
@@ -34,56 +34,72 @@ inline void ToFloatRow(const Rgba8* HWY_RESTRICT in, int w, float* HWY_RESTRICT 
     const auto* bytes = reinterpret_cast<const std::uint8_t*>(in);
     const int count = 4 * w;
     const ssfx::HWY_NAMESPACE::ExactDivisor<decltype(df)> k255(df, 255.0f);
-    const float* table = srgb ? kSrgb8.data() : kUnorm8.data();
     int i = 0;
     for (; i + n <= count; i += n) {
         const auto v = hn::PromoteTo(di, hn::LoadU(d8, bytes + i));
-        hn::StoreU(srgb ? hn::GatherIndex(df, table, v) : ssfx::HWY_NAMESPACE::DivExact(hn::ConvertTo(df, v), k255), df,
-                   out + 4 + i);
+        hn::StoreU(ssfx::HWY_NAMESPACE::DivExact(hn::ConvertTo(df, v), k255), df, out + 4 + i);
     }
-    for (; i < count; ++i) out[4 + i] = table[bytes[i]];
+    for (; i < count; ++i) out[4 + i] = kUnorm8[bytes[i]];
     for (int c = 0; c < 4; ++c) out[c] = out[4 + c], out[4 + count + c] = out[count + c];
 }
 
 // blurChannel() per lane for the channels at a, c, b (above, centre, below; the neighbours
-// 4 floats, one pixel, either side), in its order.
-template <class DF>
+// `step` floats, one pixel, either side: 4 in RGBA rows, 1 in channel rows), in its order.
+template <int step, class DF>
 HWY_INLINE hn::Vec<DF> BlurSum(DF df, const float* a, const float* c, const float* b, hn::Vec<DF> w1, hn::Vec<DF> w2,
                                hn::Vec<DF> norm) {
-    const auto horizontal = hn::Add(hn::LoadU(df, c - 4), hn::LoadU(df, c + 4));    // w + e
-    const auto vertical = hn::Add(hn::LoadU(df, a), hn::LoadU(df, b));              // s + n
-    const auto cornersAbove = hn::Add(hn::LoadU(df, a - 4), hn::LoadU(df, a + 4));  // sw + se
-    const auto cornersBelow = hn::Add(hn::LoadU(df, b - 4), hn::LoadU(df, b + 4));  // nw + ne
+    const auto horizontal = hn::Add(hn::LoadU(df, c - step), hn::LoadU(df, c + step));    // w + e
+    const auto vertical = hn::Add(hn::LoadU(df, a), hn::LoadU(df, b));                    // s + n
+    const auto cornersAbove = hn::Add(hn::LoadU(df, a - step), hn::LoadU(df, a + step));  // sw + se
+    const auto cornersBelow = hn::Add(hn::LoadU(df, b - step), hn::LoadU(df, b + step));  // nw + ne
     const auto direct = hn::Mul(hn::Add(horizontal, vertical), w1);
     const auto corner = hn::Mul(hn::Add(cornersAbove, cornersBelow), w2);
     return hn::Mul(hn::Add(hn::Add(hn::LoadU(df, c), direct), corner), norm);
 }
 
-// BlurRowQuantized for an sRGB texture: rows decoded by ToFloatRow, the same sums, each
-// vector encoded by EncodeSrgb8 (exact, so no ties to take lane by lane).
-inline void BlurRowSrgb(const float* HWY_RESTRICT fa, const float* HWY_RESTRICT fc, const float* HWY_RESTRICT fb, int w,
-                        const BlurWeights& k, const Rgba8* HWY_RESTRICT src, Rgba8* HWY_RESTRICT dst) {
+// An sRGB row decoded into three channel rows (kSrgb8's values; alpha is never filtered),
+// each with one pixel of clamped padding at both ends: channel c's pixel x at c * stride + 1 + x.
+inline void DecodeSrgbPadded(const Rgba8* HWY_RESTRICT in, int w, std::size_t stride, float* HWY_RESTRICT out) {
+    float* r = out + 1;
+    float* g = out + stride + 1;
+    float* b = out + 2 * stride + 1;
+    ssfx::HWY_NAMESPACE::DecodeSrgbRowPlanar(in, w, r, g, b);
+    for (float* c : {r, g, b}) c[-1] = c[0], c[w] = c[w - 1];
+}
+
+// BlurRowQuantized for an sRGB texture, on channel rows (DecodeSrgbPadded): the same sums,
+// lane by lane, one lane per pixel, each channel's vector encoded by EncodeSrgb8 (exact, so no
+// ties to take lane by lane), the three with the source's alpha stored as RGBA. Channel rows
+// decode and encode three values a pixel, not four.
+inline void BlurRowSrgb(const float* HWY_RESTRICT fa, const float* HWY_RESTRICT fc, const float* HWY_RESTRICT fb,
+                        std::size_t stride, int w, const BlurWeights& k, const Rgba8* HWY_RESTRICT src,
+                        Rgba8* HWY_RESTRICT dst) {
     const hn::ScalableTag<float> df;
     const hn::Rebind<std::uint8_t, decltype(df)> d8;
     const int n = int(hn::Lanes(df));
-    const int count = 4 * w;
     const auto w1 = hn::Set(df, k.w1), w2 = hn::Set(df, k.w2), norm = hn::Set(df, k.norm);
-    const auto three = hn::Set(d8, std::uint8_t{3});
-    auto* bytes = reinterpret_cast<std::uint8_t*>(dst);
-    const auto* srcBytes = reinterpret_cast<const std::uint8_t*>(src);
-    int i = 0;
-    for (; i + n <= count; i += n) {
-        const auto v = BlurSum(df, fa + 4 + i, fc + 4 + i, fb + 4 + i, w1, w2, norm);
-        const auto q = hn::DemoteTo(d8, ssfx::HWY_NAMESPACE::EncodeSrgb8(df, v));
-        const auto isAlpha = hn::Eq(hn::And(hn::Iota(d8, std::uint8_t(i & 3)), three), three);
-        hn::StoreU(hn::IfThenElse(isAlpha, hn::LoadU(d8, srcBytes + i), q), d8, bytes + i);
+    auto channel = [&](int c, int x) {
+        const std::size_t at = std::size_t(c) * stride + 1 + std::size_t(x);
+        return hn::DemoteTo(d8, ssfx::HWY_NAMESPACE::EncodeSrgb8(df, BlurSum<1>(df, fa + at, fc + at, fb + at, w1, w2,
+                                                                                 norm)));
+    };
+    int x = 0;
+    for (; x + n <= w; x += n) {
+        decltype(hn::Zero(d8)) sr, sg, sb, sa;  // the source's alpha, deinterleaved with the rest
+        hn::LoadInterleaved4(d8, reinterpret_cast<const std::uint8_t*>(src + x), sr, sg, sb, sa);
+        hn::StoreInterleaved4(channel(0, x), channel(1, x), channel(2, x), sa, d8,
+                              reinterpret_cast<std::uint8_t*>(dst + x));
     }
-    for (; i < count; ++i) {
-        const float* a = fa + 4 + i;
-        const float* c = fc + 4 + i;
-        const float* b = fb + 4 + i;
-        bytes[i] = i % 4 == 3 ? srcBytes[i]
-                              : encodeSrgb8(blurChannel(c[0], c[-4], c[4], a[0], b[0], a[-4], a[4], b[-4], b[4], k));
+    for (; x < w; ++x) {
+        std::uint8_t q[3];
+        for (int c = 0; c < 3; ++c) {
+            const std::size_t at = std::size_t(c) * stride + 1 + std::size_t(x);
+            const float* a = fa + at;
+            const float* m = fc + at;
+            const float* b = fb + at;
+            q[c] = encodeSrgb8(blurChannel(m[0], m[-1], m[1], a[0], b[0], a[-1], a[1], b[-1], b[1], k));
+        }
+        dst[x] = {q[0], q[1], q[2], src[x].a};
     }
 }
 
@@ -112,7 +128,7 @@ inline void BlurRowQuantized(const float* HWY_RESTRICT fa, const float* HWY_REST
     };
     int i = 0;
     for (; i + n <= count; i += n) {
-        const auto v = BlurSum(df, fa + 4 + i, fc + 4 + i, fb + 4 + i, w1, w2, norm);
+        const auto v = BlurSum<4>(df, fa + 4 + i, fc + 4 + i, fb + 4 + i, w1, w2, norm);
         const auto t = hn::Add(hn::Mul(hn::Min(hn::Max(v, zero), one), k255), half);
         const auto fl = hn::Floor(t);
         if (!hn::AllFalse(df, hn::Lt(hn::Sub(t, fl), tieBand))) {
@@ -130,18 +146,25 @@ inline void BlurRows(ImageView<const Rgba8> in, ImageView<Rgba8> out, int y0, in
                      TextureFormat format) {
     const int w = in.width(), h = in.height();
     const bool srgb = format == TextureFormat::Srgb;
-    const auto toFloat = [srgb](const Rgba8* row, int width, float* rowOut) { ToFloatRow(row, width, rowOut, srgb); };
-    const std::size_t stride = std::size_t(4 * w + 8);
+    // sRGB: three channel rows of w + 2 floats; unorm: one RGBA row of 4 w + 8.
+    const std::size_t channelStride = std::size_t(w + 2);
+    const std::size_t stride = srgb ? 3 * channelStride : std::size_t(4 * w + 8);
+    const auto toFloat = [&](const Rgba8* row, float* rowOut) {
+        if (srgb)
+            DecodeSrgbPadded(row, w, channelStride, rowOut);
+        else
+            ToFloatRow(row, w, rowOut);
+    };
     // Rolling window of three converted rows.
     const auto buf = hwy::AllocateAligned<float>(3 * stride);
     float* rows[3] = {buf.get(), buf.get() + stride, buf.get() + 2 * stride};
     auto clampY = [h](int y) { return y < 0 ? 0 : (y >= h ? h - 1 : y); };
-    toFloat(in.row(clampY(y0 - 1)), w, rows[0]);
-    toFloat(in.row(y0), w, rows[1]);
+    toFloat(in.row(clampY(y0 - 1)), rows[0]);
+    toFloat(in.row(y0), rows[1]);
     for (int y = y0; y < y1; ++y) {
-        toFloat(in.row(clampY(y + 1)), w, rows[2]);
+        toFloat(in.row(clampY(y + 1)), rows[2]);
         if (srgb)
-            BlurRowSrgb(rows[0], rows[1], rows[2], w, k, in.row(y), out.row(y));
+            BlurRowSrgb(rows[0], rows[1], rows[2], channelStride, w, k, in.row(y), out.row(y));
         else
             BlurRowQuantized(rows[0], rows[1], rows[2], w, k, in.row(y), out.row(y));
         float* t = rows[0];
