@@ -80,8 +80,8 @@ inline void BlurRowSrgb(const float* HWY_RESTRICT fa, const float* HWY_RESTRICT 
     const auto w1 = hn::Set(df, k.w1), w2 = hn::Set(df, k.w2), norm = hn::Set(df, k.norm);
     auto channel = [&](int c, int x) {
         const std::size_t at = std::size_t(c) * stride + 1 + std::size_t(x);
-        return hn::DemoteTo(d8, ssfx::HWY_NAMESPACE::EncodeSrgb8(df, BlurSum<1>(df, fa + at, fc + at, fb + at, w1, w2,
-                                                                                 norm)));
+        return hn::DemoteTo(
+            d8, ssfx::HWY_NAMESPACE::EncodeSrgb8(df, BlurSum<1>(df, fa + at, fc + at, fb + at, w1, w2, norm)));
     };
     int x = 0;
     for (; x + n <= w; x += n) {

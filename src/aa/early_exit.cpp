@@ -43,19 +43,22 @@ void ExitRow(const float* HWY_RESTRICT above, const float* HWY_RESTRICT row, con
 }
 
 // An sRGB texture's rows for the fast path: each texel decoded once into the channel rows of
-// `decoded` (three rows of w floats per image row), the luma rows from those values (the same
-// float operations as the luma plane's, so the same bits).
+// `decoded` (three rows of w + 2 floats per image row, LumaRows' layout: the padding floats
+// repeat the edge texels), the luma rows from those values (the same float operations as the
+// luma plane's, so the same bits).
 void DecodedLumaRows(const Rgba8* HWY_RESTRICT in, std::size_t stride, int w, int rows, float* HWY_RESTRICT decoded,
                      float* HWY_RESTRICT lumas) {
     const hn::ScalableTag<float> df;
     const int n = int(hn::Lanes(df));
     const auto wr = hn::Set(df, 0.299f), wg = hn::Set(df, 0.587f), wb = hn::Set(df, 0.114f);
+    const std::size_t padded = std::size_t(w) + 2;
     for (int y = 0; y < rows; ++y) {
-        float* r = decoded + std::size_t(3 * y) * std::size_t(w);
-        float* g = r + w;
-        float* b = g + w;
+        float* r = decoded + std::size_t(3 * y) * padded + 1;
+        float* g = r + padded;
+        float* b = g + padded;
         float* out = lumas + std::size_t(y) * std::size_t(w);
         ssfx::HWY_NAMESPACE::DecodeSrgbRowPlanar(in + std::size_t(y) * stride, w, r, g, b);
+        for (float* c : {r, g, b}) c[-1] = c[0], c[w] = c[w - 1];
         int x = 0;
         for (; x + n <= w; x += n) {
             const auto sum = hn::Add(hn::Add(hn::Mul(wr, hn::LoadU(df, r + x)), hn::Mul(wg, hn::LoadU(df, g + x))),
@@ -84,14 +87,14 @@ LumaRows bandLumaRows(ImageView<const Rgba8> in, int y0, int y1, TextureFormat f
     const int first = std::max(0, y0 - 1), last = std::min(in.height(), y1 + 1);
     buffer.resize(std::size_t(last - first) * std::size_t(in.width()));
     if (format == TextureFormat::Srgb) {
-        decoded.resize(3 * buffer.size());
+        decoded.resize(3 * std::size_t(last - first) * (std::size_t(in.width()) + 2));
         HWY_DYNAMIC_DISPATCH(DecodedLumaRows)
         (in.row(first), std::size_t(in.stride()), in.width(), last - first, decoded.data(), buffer.data());
-        return {buffer.data(), in.width(), in.height(), first, decoded.data()};
+        return {buffer.data(), in.width(), in.height(), first, decoded.data(), last - first};
     }
     const ImageView<const Rgba8> rows(in.row(first), in.width(), last - first, in.stride());
     lumaPlane(rows, ImageView<float>(buffer.data(), in.width(), last - first), Exec{1}, format);
-    return {buffer.data(), in.width(), in.height(), first};
+    return {buffer.data(), in.width(), in.height(), first, nullptr, last - first};
 }
 
 void earlyExitRow(const LumaRows& L, int y, float thresholdMin, float threshold, std::uint8_t* exitMask) {

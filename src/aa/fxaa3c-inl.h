@@ -80,19 +80,25 @@ HWY_INLINE void Fxaa3cPixels(const Texture& tex, const LumaRows& L, VI xv, int y
     const VF invW = hn::Set(df, tex.invW()), invH = hn::Set(df, tex.invH());
     const VF half = hn::Set(df, 0.5f), two = hn::Set(df, 2.0f), quarter = hn::Set(df, 0.25f);
     const VF s1x = hn::Mul(hn::Mul(d1x, half), invW), s1y = hn::Mul(hn::Mul(d1y, half), invH);
-    const RgbV n1 = SampleGpu(tex, hn::Sub(u, s1x), hn::Sub(v, s1y));
-    const RgbV p1 = SampleGpu(tex, hn::Add(u, s1x), hn::Add(v, s1y));
+    // An sRGB texture's reads come from the band's decoded rows where they lie in the band.
+    const bool srgb = tex.format() == TextureFormat::Srgb;
+    auto read = [&](VF ru, VF rv) {
+        RgbV c;
+        if (!srgb || !SampleDecodedRows(tex, L, ru, rv, &c)) c = SampleGpu(tex, ru, rv);
+        return c;
+    };
+    const RgbV n1 = read(hn::Sub(u, s1x), hn::Sub(v, s1y));
+    const RgbV p1 = read(hn::Add(u, s1x), hn::Add(v, s1y));
     const VF minAbs = hn::Mul(hn::Min(hn::Abs(d1x), hn::Abs(d1y)), hn::Set(df, p.edgeSharpness));
     const VF d2x = ClampTwo(hn::Div(d1x, minAbs)), d2y = ClampTwo(hn::Div(d1y, minAbs));
     const VF s2x = hn::Mul(hn::Mul(d2x, two), invW), s2y = hn::Mul(hn::Mul(d2y, two), invH);
-    const RgbV n2 = SampleGpu(tex, hn::Sub(u, s2x), hn::Sub(v, s2y));
-    const RgbV p2 = SampleGpu(tex, hn::Add(u, s2x), hn::Add(v, s2y));
+    const RgbV n2 = read(hn::Sub(u, s2x), hn::Sub(v, s2y));
+    const RgbV p2 = read(hn::Add(u, s2x), hn::Add(v, s2y));
 
     const RgbV A{hn::Add(n1.r, p1.r), hn::Add(n1.g, p1.g), hn::Add(n1.b, p1.b)};
     const RgbV B{hn::Add(hn::Mul(hn::Add(n2.r, p2.r), quarter), hn::Mul(A.r, quarter)),
                  hn::Add(hn::Mul(hn::Add(n2.g, p2.g), quarter), hn::Mul(A.g, quarter)),
                  hn::Add(hn::Mul(hn::Add(n2.b, p2.b), quarter), hn::Mul(A.b, quarter))};
-    const bool srgb = tex.format() == TextureFormat::Srgb;
     const VF lumaB = hn::Sqrt(hn::Add(hn::Add(hn::Mul(hn::Set(df, 0.299f), B.r), hn::Mul(hn::Set(df, 0.587f), B.g)),
                                       hn::Mul(hn::Set(df, 0.114f), B.b)));
     const auto twoTap = hn::Or(hn::Lt(lumaB, lumaMin), hn::Gt(lumaB, lumaMax));

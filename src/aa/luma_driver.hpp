@@ -27,13 +27,16 @@ struct LumaRows {
     const float* data = nullptr;
     int width = 0, height = 0, first = 0;
     //! Fast path, sRGB texture: the same rows' texels decoded (kSrgb8), three channel rows
-    //! (r, g, b) of `width` floats per image row; null otherwise.
+    //! (r, g, b) per image row, each `width` floats with one float of clamped padding either
+    //! side (decodedStride() apart); null otherwise.
     const float* decoded = nullptr;
+    int count = 0;  //!< the rows held: first .. first + count - 1
     int clampRow(int y) const { return y < 0 ? 0 : (y >= height ? height - 1 : y); }
     const float* row(int y) const { return data + std::size_t(clampRow(y) - first) * std::size_t(width); }
-    //! Channel c (0 r, 1 g, 2 b) of image row y, clamped.
+    std::size_t decodedStride() const { return std::size_t(width) + 2; }
+    //! Channel c (0 r, 1 g, 2 b) of image row y, clamped; [-1] and [width] are the padding.
     const float* decodedRow(int y, int c) const {
-        return decoded + (std::size_t(clampRow(y) - first) * 3 + std::size_t(c)) * std::size_t(width);
+        return decoded + (std::size_t(clampRow(y) - first) * 3 + std::size_t(c)) * decodedStride() + 1;
     }
 };
 

@@ -251,6 +251,59 @@ HWY_INLINE bool NearDecoded(const Texture& tex, const LumaRows& L, VF u, VF v, i
     return true;
 }
 
+// An sRGB texture's read at (u, v) per lane (Texture::sampleGpuDecoded), from the band's
+// decoded channel rows instead of texel gathers and a decode gather per texel and channel:
+// each row's two texels are one 64-bit gather from a padded channel row, starting at column
+// clamp(floor, -1, W - 1), which holds exactly the clamped pair (x0, x1) SplitAxis gives (the
+// padding repeats the edge texels). Same weights and sums, so the same result. False, with
+// nothing written, where a lane's rows are not among the band's (the caller gathers).
+HWY_INLINE bool SampleDecodedRows(const Texture& tex, const LumaRows& L, VF u, VF v, RgbV* c) {
+    const DF df;
+    const DI di;
+    const int w = tex.width();
+    const AxisV ax = SplitAxis(u, float(w), w), ay = SplitAxis(v, float(tex.height()), tex.height());
+    const VI first = hn::Set(di, L.first);
+    if (!hn::AllTrue(di, hn::And(hn::Not(hn::Lt(ay.i0, first)), hn::Lt(ay.i1, hn::Add(first, hn::Set(di, L.count))))))
+        return false;
+    // ax.i0 == ax.i1 only where both are clamped to an edge: then the pair starts on the
+    // padding before column 0, or on column W - 1 (whose next float is the padding after it).
+    const VI one = hn::Set(di, 1);
+    const VI pair = hn::IfThenElse(hn::And(hn::Eq(ax.i0, ax.i1), hn::Eq(ax.i0, hn::Zero(di))), hn::Set(di, -1), ax.i0);
+    const VI stride = hn::Set(di, int(L.decodedStride()));
+    // Float index of channel 0 of each row's pair: (row - first) * 3 * stride + 1 + pair.
+    const VI col = hn::Add(pair, one);
+    const VI at0 = hn::Add(hn::Mul(hn::Sub(ay.i0, first), hn::Mul(stride, hn::Set(di, 3))), col);
+    const VI at1 = hn::Add(hn::Mul(hn::Sub(ay.i1, first), hn::Mul(stride, hn::Set(di, 3))), col);
+    const DecodedWeights wt = WeightsOf(ax.w, ay.w);
+    auto pairs = [&](VI at, VF* a, VF* b) {
+#if HWY_TARGET == HWY_SCALAR
+        *a = hn::GatherIndex(df, L.decoded, at);
+        *b = hn::GatherIndex(df, L.decoded, hn::Add(at, one));
+#else
+        // Two gathers of 64-bit pairs (byte offsets: a pair may start at an odd float).
+        const hn::Half<DI> dh;
+        const hn::Rebind<std::int64_t, decltype(dh)> d64;
+        const auto* base = reinterpret_cast<const std::int64_t*>(L.decoded);
+        const VI bytes = hn::ShiftLeft<2>(at);
+        const auto lo = hn::GatherOffset(d64, base, hn::PromoteTo(d64, hn::LowerHalf(dh, bytes)));
+        const auto hi = hn::GatherOffset(d64, base, hn::PromoteTo(d64, hn::UpperHalf(dh, bytes)));
+        const VF flo = hn::BitCast(df, lo), fhi = hn::BitCast(df, hi);
+        *a = hn::ConcatEven(df, fhi, flo);
+        *b = hn::ConcatOdd(df, fhi, flo);
+#endif
+    };
+    VF ch[3];
+    for (int k = 0; k < 3; ++k) {
+        const VI offset = hn::Mul(stride, hn::Set(di, k));
+        VF t00, t10, t01, t11;
+        pairs(hn::Add(at0, offset), &t00, &t10);
+        pairs(hn::Add(at1, offset), &t01, &t11);
+        ch[k] = WeightedSum(wt, t00, t10, t01, t11);
+    }
+    *c = {ch[0], ch[1], ch[2]};
+    return true;
+}
+
 // toUnorm8 per lane: floor(v * 255 + 0.5) of the *exact* product, in float32 only.
 // v * 255 = v * 256 - v with v * 256 exact; Fast2Sum and TwoSum recover the rounding
 // errors of the subtraction and of the + 0.5, and their sum E decides the two cases where
