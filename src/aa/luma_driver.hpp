@@ -38,6 +38,8 @@ struct LumaRows {
     const float* decodedRow(int y, int c) const {
         return decoded + (std::size_t(clampRow(y) - first) * 3 + std::size_t(c)) * decodedStride() + 1;
     }
+    //! The decoded rows, for the luma planes (empty unless sRGB).
+    DecodedBand decodedBand() const { return {decoded, first, decoded != nullptr ? count : 0}; }
 };
 
 //! Luma rows [y0 - 1, y1 + 1) of `in` (clamped; SIMD, same bits as the reference plane)
@@ -133,7 +135,8 @@ void runLumaMethod(ImageView<const Rgba8> in, ImageView<Rgba8> out, bool scalar,
             std::vector<std::uint8_t> mask(static_cast<std::size_t>(w));
             for (int y = y0; y < y1; ++y) {
                 const LumaPlanes planes =
-                    needs.planes ? planeRowsFor(in, call, y, needs.reach, needs.quad, format) : LumaPlanes{};
+                    needs.planes ? planeRowsFor(in, call, y, needs.reach, needs.quad, format, L.decodedBand())
+                                 : LumaPlanes{};
                 const Rgba8* src = in.row(y);
                 Rgba8* dst = out.row(y);
                 std::uint8_t* m = mask.data();

@@ -32,7 +32,7 @@ std::uint64_t newPlaneCall() {
 }
 
 LumaPlanes planeRowsFor(ImageView<const Rgba8> in, std::uint64_t call, int y, int reach, bool withQuad,
-                        TextureFormat format) {
+                        TextureFormat format, const DecodedBand& band) {
     // Rows of this thread's ring; tag[slot] = the plane row it holds, -1 for none.
     thread_local struct {
         std::vector<float> buffer;
@@ -58,7 +58,7 @@ LumaPlanes planeRowsFor(ImageView<const Rgba8> in, std::uint64_t call, int y, in
         }
         int end = r + 1;  // a run of missing rows, computed in one call
         while (end <= hi && ring.tag[planes.slot(end)] != end) ++end;
-        HWY_DYNAMIC_DISPATCH(LumaPlaneRows)(in, planes, r, end);
+        HWY_DYNAMIC_DISPATCH(LumaPlaneRows)(in, planes, r, end, band);
         for (int k = r; k < end; ++k) ring.tag[planes.slot(k)] = k;
         r = end;
     }

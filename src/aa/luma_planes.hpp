@@ -46,6 +46,19 @@ struct LumaPlanes {
     bool hasQuad() const { return quad; }
 };
 
+//! Image rows first .. first + count - 1 of an sRGB texture, decoded (kSrgb8) as three channel
+//! rows (r, g, b) per image row, each `width` floats with one float of padding either side:
+//! channel c of row y at data + ((y - first) * 3 + c) * (width + 2) + 1.
+struct DecodedBand {
+    const float* data = nullptr;
+    int first = 0, count = 0;
+    bool holds(int y) const { return data != nullptr && y >= first && y < first + count; }
+    //! Channel 0 of row y (held); channel c is c * (width + 2) floats on.
+    const float* row(int y, int width) const {
+        return data + std::size_t(y - first) * 3 * (std::size_t(width) + 2) + 1;
+    }
+};
+
 //! Largest ring (rows per plane): searches may reach up to (kMaxPlaneRing - 2) / 2 rows.
 inline constexpr int kMaxPlaneRing = 64;
 
@@ -133,7 +146,9 @@ std::uint64_t newPlaneCall();
 //! rows already there from the same call (the row above, typically) are kept, the others
 //! computed (SIMD). Valid until the next call on the same thread; reach <= 31. `format`:
 //! the texture's encoding (LumaPlanes::format).
+//! `band`: an sRGB texture's image rows that the caller already decoded (its band's
+//! LumaRows::decoded), read instead of decoded again.
 LumaPlanes planeRowsFor(ImageView<const Rgba8> in, std::uint64_t call, int y, int reach, bool withQuad,
-                        TextureFormat format);
+                        TextureFormat format, const DecodedBand& band = {});
 
 }  // namespace ssfx::aa::detail

@@ -479,11 +479,13 @@ HWY_INLINE void RowChunks(int w, std::uint8_t* mask, const Chunk& chunk) {
 }
 
 // LumaPlaneRows for an sRGB texture: the image rows the plane rows span (r0 - 1 .. r1 - 1,
-// clamped) decoded once each, then per plane element the decoded texels weighted 1/2 (pairs)
-// or 1/4 (quads) in Texture::sampleGpuDecoded's order (its zero terms add nothing): loads
-// instead of 6 or 12 gathers an element. A thread walking down the image asks for one plane
-// row at a time; the last image row it decoded for the same call is its next first row, kept.
-inline void LumaPlaneRowsSrgb(ImageView<const Rgba8> in, const LumaPlanes& planes, int r0, int r1) {
+// clamped), decoded once each or read from the caller's `band` where it holds them, then
+// per plane element the decoded texels weighted 1/2 (pairs) or 1/4 (quads) in
+// Texture::sampleGpuDecoded's order (its zero terms add nothing): loads instead of 6 or 12
+// gathers an element. A thread walking down the image asks for one plane row at a time; the
+// last image row it decoded itself for the same call is its next first row, kept.
+inline void LumaPlaneRowsSrgb(ImageView<const Rgba8> in, const LumaPlanes& planes, int r0, int r1,
+                              const DecodedBand& band) {
     const DF df;
     const int w = in.width(), h = in.height(), n = int(hn::Lanes(df));
     float* data = const_cast<float*>(planes.data);
@@ -491,35 +493,41 @@ inline void LumaPlaneRowsSrgb(ImageView<const Rgba8> in, const LumaPlanes& plane
     const VF half = hn::Set(df, 0.5f), quarter = hn::Set(df, 0.25f);
     auto clampRow = [h](int y) { return y < 0 ? 0 : (y >= h ? h - 1 : y); };
     const int first = clampRow(r0 - 1), last = clampRow(r1 - 1);
-    // Decoded rows first .. last, three channel rows each.
+    // Decoded rows first .. last not in the band, in DecodedBand's layout (channel c of a
+    // row at c * cw), with no padding filled in (the planes read columns 0 .. w - 1).
     thread_local std::vector<float> decoded;
     thread_local struct {
         std::uint64_t call = 0;
-        int row = -1;        // the last row decoded for that call
+        int row = -1;        // the last row decoded here for that call
         std::size_t at = 0;  // its offset in `decoded`
     } kept;
-    const std::size_t rowFloats = 3 * std::size_t(w);
-    const bool reuse = kept.call == planes.call && kept.row == first && decoded.size() >= kept.at + rowFloats;
+    const std::size_t cw = std::size_t(w) + 2, rowFloats = 3 * cw;
+    const bool reuse =
+        !band.holds(first) && kept.call == planes.call && kept.row == first && decoded.size() >= kept.at + rowFloats;
     if (reuse && kept.at != 0) std::memmove(decoded.data(), decoded.data() + kept.at, rowFloats * sizeof(float));
     decoded.resize(std::max(decoded.size(), std::size_t(last - first + 1) * rowFloats));
     for (int y = reuse ? first + 1 : first; y <= last; ++y) {
-        float* d = decoded.data() + std::size_t(y - first) * rowFloats;
-        ssfx::HWY_NAMESPACE::DecodeSrgbRowPlanar(in.row(y), w, d, d + w, d + 2 * w);
+        if (band.holds(y)) continue;
+        float* d = decoded.data() + std::size_t(y - first) * rowFloats + 1;
+        ssfx::HWY_NAMESPACE::DecodeSrgbRowPlanar(in.row(y), w, d, d + cw, d + 2 * cw);
     }
-    kept = {planes.call, last, std::size_t(last - first) * rowFloats};
-    auto channels = [&](int y) { return decoded.data() + std::size_t(clampRow(y) - first) * rowFloats; };
+    kept = {planes.call, band.holds(last) ? -1 : last, std::size_t(last - first) * rowFloats};
+    auto channels = [&](int y) {
+        const int row = clampRow(y);
+        return band.holds(row) ? band.row(row, w) : decoded.data() + std::size_t(row - first) * rowFloats + 1;
+    };
     auto luma3 = [&](VF r, VF g, VF b) {
         return hn::Sqrt(hn::Add(hn::Add(hn::Mul(wr, r), hn::Mul(wg, g)), hn::Mul(wb, b)));
     };
-    // Pairs: texels at offsets a and b of two channel rows (channel c at c * w).
+    // Pairs: texels at offsets a and b of two channel rows (channel c at c * cw).
     auto pairV = [&](const float* a, const float* b) {
         auto mean = [&](int c) {
-            return hn::Add(hn::Mul(half, hn::LoadU(df, a + c * w)), hn::Mul(half, hn::LoadU(df, b + c * w)));
+            return hn::Add(hn::Mul(half, hn::LoadU(df, a + c * cw)), hn::Mul(half, hn::LoadU(df, b + c * cw)));
         };
         return luma3(mean(0), mean(1), mean(2));
     };
     auto pairS = [&](const float* a, const float* b) {
-        auto mean = [&](int c) { return 0.5f * a[c * w] + 0.5f * b[c * w]; };
+        auto mean = [&](int c) { return 0.5f * a[c * cw] + 0.5f * b[c * cw]; };
         return luma(mean(0), mean(1), mean(2));
     };
     // Quads: (x0, y0) = a[0], (x1, y0) = a[1], (x0, y1) = b[0], (x1, y1) = b[1] (quadS: the
@@ -527,15 +535,15 @@ inline void LumaPlaneRowsSrgb(ImageView<const Rgba8> in, const LumaPlanes& plane
     auto quadV = [&](const float* a, const float* b) {
         auto mean = [&](int c) {
             const VF t =
-                hn::Add(hn::Mul(quarter, hn::LoadU(df, a + c * w)), hn::Mul(quarter, hn::LoadU(df, a + c * w + 1)));
-            return hn::Add(hn::Add(t, hn::Mul(quarter, hn::LoadU(df, b + c * w))),
-                           hn::Mul(quarter, hn::LoadU(df, b + c * w + 1)));
+                hn::Add(hn::Mul(quarter, hn::LoadU(df, a + c * cw)), hn::Mul(quarter, hn::LoadU(df, a + c * cw + 1)));
+            return hn::Add(hn::Add(t, hn::Mul(quarter, hn::LoadU(df, b + c * cw))),
+                           hn::Mul(quarter, hn::LoadU(df, b + c * cw + 1)));
         };
         return luma3(mean(0), mean(1), mean(2));
     };
     auto quadS = [&](const float* a0, const float* a1, const float* b0, const float* b1) {
         auto mean = [&](int c) {
-            return ((0.25f * a0[c * w] + 0.25f * a1[c * w]) + 0.25f * b0[c * w]) + 0.25f * b1[c * w];
+            return ((0.25f * a0[c * cw] + 0.25f * a1[c * cw]) + 0.25f * b0[c * cw]) + 0.25f * b1[c * cw];
         };
         return luma(mean(0), mean(1), mean(2));
     };
@@ -568,8 +576,9 @@ inline void LumaPlaneRowsSrgb(ImageView<const Rgba8> in, const LumaPlanes& plane
 // reads between two texels are 8 (a + b) / 4080 = (a + b) / 510 per channel, between four
 // texels 4 (a + b + c + d) / 4080 = (a + b + c + d) / 1020, both exactly (same real number).
 // An sRGB texture's are the decoded texels' float sums (LumaPlaneRowsSrgb).
-inline void LumaPlaneRows(ImageView<const Rgba8> in, const LumaPlanes& planes, int r0, int r1) {
-    if (planes.format == TextureFormat::Srgb) return LumaPlaneRowsSrgb(in, planes, r0, r1);
+inline void LumaPlaneRows(ImageView<const Rgba8> in, const LumaPlanes& planes, int r0, int r1,
+                          const DecodedBand& band) {
+    if (planes.format == TextureFormat::Srgb) return LumaPlaneRowsSrgb(in, planes, r0, r1, band);
     const DF df;
     const DU du;
     const int w = in.width(), h = in.height(), n = int(hn::Lanes(df));
