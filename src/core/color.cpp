@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cstdint>
 #include <cstring>
 #include <limits>
@@ -103,6 +104,23 @@ std::int64_t EncodeSrgb8Mismatches(const float* values, std::int64_t count) {
     return mismatches;
 }
 
+std::int64_t DecodeSrgbRowMismatches(int w) {
+    std::vector<Rgba8> row(static_cast<std::size_t>(w));
+    for (int x = 0; x < w; ++x) {
+        const auto i = unsigned(x);
+        row[std::size_t(x)] = {std::uint8_t(i), std::uint8_t(255u - i * 3u), std::uint8_t(i * 7u + i / 256u), 0};
+    }
+    std::vector<float> r(row.size()), g(row.size()), b(row.size());
+    DecodeSrgbRowPlanar(row.data(), w, r.data(), g.data(), b.data());
+    std::int64_t mismatches = 0;
+    for (std::size_t x = 0; x < row.size(); ++x) {
+        mismatches += std::bit_cast<std::uint32_t>(r[x]) != std::bit_cast<std::uint32_t>(kSrgb8[row[x].r]);
+        mismatches += std::bit_cast<std::uint32_t>(g[x]) != std::bit_cast<std::uint32_t>(kSrgb8[row[x].g]);
+        mismatches += std::bit_cast<std::uint32_t>(b[x]) != std::bit_cast<std::uint32_t>(kSrgb8[row[x].b]);
+    }
+    return mismatches;
+}
+
 }  // namespace HWY_NAMESPACE
 }  // namespace ssfx
 HWY_AFTER_NAMESPACE();
@@ -117,6 +135,7 @@ HWY_EXPORT(LumaRow);
 HWY_EXPORT(LumaRowSrgb);
 HWY_EXPORT(DivExactMismatches);
 HWY_EXPORT(EncodeSrgb8Mismatches);
+HWY_EXPORT(DecodeSrgbRowMismatches);
 
 namespace detail {
 std::int64_t divExactMismatches(float divisor, int kMax) {
@@ -125,6 +144,7 @@ std::int64_t divExactMismatches(float divisor, int kMax) {
 std::int64_t encodeSrgb8Mismatches(const float* values, std::int64_t count) {
     return HWY_DYNAMIC_DISPATCH(EncodeSrgb8Mismatches)(values, count);
 }
+std::int64_t decodeSrgbRowMismatches(int w) { return HWY_DYNAMIC_DISPATCH(DecodeSrgbRowMismatches)(w); }
 }  // namespace detail
 
 void lumaPlane(ImageView<const Rgba8> in, ImageView<float> out, const Exec& exec, TextureFormat format) {
@@ -187,6 +207,19 @@ const SrgbEncodeTable& srgbEncodeTable() {
         return built;
     }();
     return table;
+}
+
+const SrgbDecodeHalves& srgbDecodeHalves() {
+    static const SrgbDecodeHalves halves = [] {
+        SrgbDecodeHalves h{};
+        for (std::size_t i = 0; i < 256; ++i) {
+            const auto bits = std::bit_cast<std::uint32_t>(kSrgb8[i]);
+            h.low[i] = std::uint16_t(bits & 0xFFFFu);
+            h.high[i] = std::uint16_t(bits >> 16);
+        }
+        return h;
+    }();
+    return halves;
 }
 }  // namespace detail
 

@@ -13,4 +13,9 @@ std::int64_t divExactMismatches(float divisor, int kMax);
 //! encodeSrgb8 (the scalar one), on the SIMD target this machine dispatches to.
 std::int64_t encodeSrgb8Mismatches(const float* values, std::int64_t count);
 
+//! How many channel values of a row of w texels (every byte value in every channel, at
+//! every position mod 32) get a DecodeSrgbRowPlanar other than kSrgb8 of the byte, on the
+//! SIMD target this machine dispatches to.
+std::int64_t decodeSrgbRowMismatches(int w);
+
 }  // namespace ssfx::detail

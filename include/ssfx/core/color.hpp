@@ -73,6 +73,14 @@ struct SrgbEncodeTable {
     std::array<std::int32_t, kBuckets> packed;
 };
 const SrgbEncodeTable& srgbEncodeTable();
+//! kSrgb8's floats split into their low and high 16 bits: two 256-entry tables of 16-bit
+//! words, which AVX-512 holds in registers and looks up 32 texels at a time (a table
+//! lookup, so the same floats; src/core/srgb_encode-inl.h).
+struct SrgbDecodeHalves {
+    alignas(64) std::array<std::uint16_t, 256> low;
+    alignas(64) std::array<std::uint16_t, 256> high;
+};
+const SrgbDecodeHalves& srgbDecodeHalves();
 }  // namespace detail
 
 //! Linear light in [0, 1] (clamped; NaN gives 0) to the nearest sRGB-encoded 8-bit level:
