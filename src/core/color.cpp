@@ -104,6 +104,22 @@ std::int64_t EncodeSrgb8Mismatches(const float* values, std::int64_t count) {
     return mismatches;
 }
 
+std::int64_t EncodeSrgb8RangeMismatches(std::uint32_t lowBits, std::uint32_t highBits) {
+    const hn::ScalableTag<float> df;
+    const hn::RebindToSigned<decltype(df)> di;
+    const hn::RebindToUnsigned<decltype(df)> du;
+    const auto n = std::uint32_t(hn::Lanes(df));
+    std::vector<std::int32_t> got(n);
+    std::int64_t mismatches = 0;
+    for (std::uint32_t b0 = lowBits; b0 < highBits; b0 += n) {
+        const auto bits = hn::Iota(du, b0);
+        hn::StoreU(EncodeSrgb8(df, hn::BitCast(df, bits)), di, got.data());
+        for (std::uint32_t i = 0; i < n && b0 + i < highBits; ++i)
+            mismatches += got[i] != encodeSrgb8(std::bit_cast<float>(b0 + i));
+    }
+    return mismatches;
+}
+
 std::int64_t DecodeSrgbRowMismatches(int w) {
     std::vector<Rgba8> row(static_cast<std::size_t>(w));
     for (int x = 0; x < w; ++x) {
@@ -136,6 +152,7 @@ HWY_EXPORT(LumaRowSrgb);
 HWY_EXPORT(DivExactMismatches);
 HWY_EXPORT(EncodeSrgb8Mismatches);
 HWY_EXPORT(DecodeSrgbRowMismatches);
+HWY_EXPORT(EncodeSrgb8RangeMismatches);
 
 namespace detail {
 std::int64_t divExactMismatches(float divisor, int kMax) {
@@ -143,6 +160,9 @@ std::int64_t divExactMismatches(float divisor, int kMax) {
 }
 std::int64_t encodeSrgb8Mismatches(const float* values, std::int64_t count) {
     return HWY_DYNAMIC_DISPATCH(EncodeSrgb8Mismatches)(values, count);
+}
+std::int64_t encodeSrgb8RangeMismatches(std::uint32_t lowBits, std::uint32_t highBits) {
+    return HWY_DYNAMIC_DISPATCH(EncodeSrgb8RangeMismatches)(lowBits, highBits);
 }
 std::int64_t decodeSrgbRowMismatches(int w) { return HWY_DYNAMIC_DISPATCH(DecodeSrgbRowMismatches)(w); }
 }  // namespace detail

@@ -82,10 +82,13 @@ TEST(Color, SrgbRowDecodeGivesTheTablesFloats) {
     hwy::SetSupportedTargetsForTest(0);
 }
 
-// The vector kernels' sRGB encode (src/core/srgb_encode-inl.h: one gather of the packed
-// bucket word) against encodeSrgb8 (whose table SrgbTransfer.EncodeTableFollowsTheThresholdRule
-// holds to the defining rule): every 61st float in [0, 1], the 4 floats either side of each
-// threshold and of each bucket boundary, and the out-of-range inputs, on every SIMD target.
+// The vector kernels' sRGB encode (src/core/srgb_encode-inl.h: on AVX-512 a polynomial whose
+// ambiguous lanes take the table, elsewhere one gather of the packed bucket word) against
+// encodeSrgb8 (whose table SrgbTransfer.EncodeTableFollowsTheThresholdRule holds to the
+// defining rule): every float in [2^-14, 1] and 1024 either side (117 million: where the
+// polynomial is used, so this is its proof), every 61st float in [0, 1], the 4 floats either
+// side of each threshold and of each bucket boundary, and the out-of-range inputs, on every
+// SIMD target.
 TEST(Color, VectorSrgbEncodeGivesTheScalarLevels) {
     using T = detail::SrgbEncodeTable;
     std::vector<float> v;
@@ -105,6 +108,7 @@ TEST(Color, VectorSrgbEncodeGivesTheScalarLevels) {
     for (const std::int64_t target : targets) {
         hwy::SetSupportedTargetsForTest(target);
         EXPECT_EQ(detail::encodeSrgb8Mismatches(v.data(), std::int64_t(v.size())), 0) << hwy::TargetName(target);
+        EXPECT_EQ(detail::encodeSrgb8RangeMismatches(T::kLowBits - 1024, one + 1024), 0) << hwy::TargetName(target);
     }
     hwy::SetSupportedTargetsForTest(0);
 }
