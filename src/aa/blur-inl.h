@@ -69,26 +69,28 @@ inline void DecodeSrgbPadded(const Rgba8* HWY_RESTRICT in, int w, std::size_t st
 
 // BlurRowQuantized for an sRGB texture, on channel rows (DecodeSrgbPadded): the same sums,
 // lane by lane, one lane per pixel, each channel's vector encoded by EncodeSrgb8 (exact, so no
-// ties to take lane by lane), the three with the source's alpha stored as RGBA. Channel rows
-// decode and encode three values a pixel, not four.
+// ties to take lane by lane), the three levels and the source's alpha packed into the lane's
+// RGBA word. Channel rows decode and encode three values a pixel, not four.
 inline void BlurRowSrgb(const float* HWY_RESTRICT fa, const float* HWY_RESTRICT fc, const float* HWY_RESTRICT fb,
                         std::size_t stride, int w, const BlurWeights& k, const Rgba8* HWY_RESTRICT src,
                         Rgba8* HWY_RESTRICT dst) {
     const hn::ScalableTag<float> df;
-    const hn::Rebind<std::uint8_t, decltype(df)> d8;
+    const hn::RebindToUnsigned<decltype(df)> du;
     const int n = int(hn::Lanes(df));
     const auto w1 = hn::Set(df, k.w1), w2 = hn::Set(df, k.w2), norm = hn::Set(df, k.norm);
     auto channel = [&](int c, int x) {
         const std::size_t at = std::size_t(c) * stride + 1 + std::size_t(x);
-        return hn::DemoteTo(
-            d8, ssfx::HWY_NAMESPACE::EncodeSrgb8(df, BlurSum<1>(df, fa + at, fc + at, fb + at, w1, w2, norm)));
+        return hn::BitCast(
+            du, ssfx::HWY_NAMESPACE::EncodeSrgb8(df, BlurSum<1>(df, fa + at, fc + at, fb + at, w1, w2, norm)));
     };
+    const auto* src32 = reinterpret_cast<const std::uint32_t*>(src);
+    auto* dst32 = reinterpret_cast<std::uint32_t*>(dst);
     int x = 0;
     for (; x + n <= w; x += n) {
-        decltype(hn::Zero(d8)) sr, sg, sb, sa;  // the source's alpha, deinterleaved with the rest
-        hn::LoadInterleaved4(d8, reinterpret_cast<const std::uint8_t*>(src + x), sr, sg, sb, sa);
-        hn::StoreInterleaved4(channel(0, x), channel(1, x), channel(2, x), sa, d8,
-                              reinterpret_cast<std::uint8_t*>(dst + x));
+        const auto alpha = hn::And(hn::LoadU(du, src32 + x), hn::Set(du, 0xFF000000u));
+        const auto rgb =
+            hn::Or(hn::Or(channel(0, x), hn::ShiftLeft<8>(channel(1, x))), hn::ShiftLeft<16>(channel(2, x)));
+        hn::StoreU(hn::Or(rgb, alpha), du, dst32 + x);
     }
     for (; x < w; ++x) {
         std::uint8_t q[3];
