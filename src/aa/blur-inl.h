@@ -128,6 +128,9 @@ inline void BlurRowQuantized(const float* HWY_RESTRICT fa, const float* HWY_REST
         const float* b = fb + 4 + i;
         return blurChannel(c[0], c[-4], c[4], a[0], b[0], a[-4], a[4], b[-4], b[4], k);
     };
+    // Lane j of a vector at i is channel (i + j) mod 4: with n a multiple of 4 (every
+    // target but scalar) the alpha lanes are the same in every vector.
+    const auto alphaAt0 = hn::Eq(hn::And(hn::Iota(d8, 0), three), three);
     int i = 0;
     for (; i + n <= count; i += n) {
         const auto v = BlurSum<4>(df, fa + 4 + i, fc + 4 + i, fb + 4 + i, w1, w2, norm);
@@ -138,7 +141,7 @@ inline void BlurRowQuantized(const float* HWY_RESTRICT fa, const float* HWY_REST
             continue;
         }
         const auto q = hn::DemoteTo(d8, hn::ConvertTo(di, fl));
-        const auto isAlpha = hn::Eq(hn::And(hn::Iota(d8, std::uint8_t(i & 3)), three), three);
+        const auto isAlpha = n % 4 == 0 ? alphaAt0 : hn::Eq(hn::And(hn::Iota(d8, std::uint8_t(i & 3)), three), three);
         hn::StoreU(hn::IfThenElse(isAlpha, hn::LoadU(d8, srcBytes + i), q), d8, bytes + i);
     }
     for (; i < count; ++i) bytes[i] = i % 4 == 3 ? srcBytes[i] : toUnorm8(scalar(i));

@@ -116,7 +116,7 @@ HWY_INLINE void SearchBothSides(const LumaPlanes& planes, const hn::Mask<DF>& ho
     const DF df;
     const DI di;
     const int h = planes.height;
-    const VI xv = hn::Iota(di, x);
+    const VI xv = IotaFrom(di, x);
     const VI steepI = hn::IfThenElseZero(hn::RebindMask(di, steep2), hn::Set(di, 1));
     // Horizontal edges: plane H row y + steep2, column clamp(x + sign k).
     const VI rowH = hn::IfThenElse(hn::RebindMask(di, steep2), hn::Set(di, int(planes.rowH(y + 1))),

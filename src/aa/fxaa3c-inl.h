@@ -131,9 +131,12 @@ inline int Fxaa3cRowSimd(const Texture& tex, const LumaRows& L, int y, const Fxa
     if (listed.size() < std::size_t(w + n)) listed.resize(std::size_t(w + n));
     std::int32_t* xs = listed.data();
     std::size_t count = 0;
+    // Compress in registers, then a whole-vector store (the list has n spare entries):
+    // CompressStore's masked compress to memory is microcoded and slow on Zen 4.
     for (int x = 1; x < end; x += n) {
         const auto edge = hn::RebindMask(di, hn::Not(Fxaa3cExit(L, x, y, p)));
-        count += hn::CompressStore(hn::Iota(di, x), edge, di, xs + count);
+        hn::StoreU(hn::Compress(IotaFrom(di, x), edge), di, xs + count);
+        count += hn::CountTrue(di, edge);
     }
     for (std::size_t i = 0; i < count; i += std::size_t(n)) {
         // The last group repeats its last pixel (the same value written again).

@@ -73,7 +73,7 @@ HWY_INLINE bool AcrossBytes(const Texture& tex, const LumaRows& L, const hn::Mas
     const DI di;
     const DU du;
     const VF size = hn::IfThenElse(horizontal, hn::Set(df, float(tex.height())), hn::Set(df, float(tex.width())));
-    const VF own = hn::IfThenElse(horizontal, hn::Set(df, float(y)), hn::ConvertTo(df, hn::Iota(di, x)));
+    const VF own = hn::IfThenElse(horizontal, hn::Set(df, float(y)), hn::ConvertTo(df, IotaFrom(di, x)));
     const NearSplit s = SplitNear(across, size, own);
     if (!hn::AllTrue(df, hn::Or(s.near, skip))) return false;
     // The pair (a, b) from `load(dy, dx)` (the texel or value at (x + dx, y + dy), rows clamped).
@@ -154,7 +154,7 @@ HWY_INLINE void Fxaa3dChunk(const Texture& tex, const LumaRows& L, const LumaPla
     int hsN = -kHalfSteps[0], hsP = kHalfSteps[0];  // position of the lanes still walking
 
     const auto hor = hn::RebindMask(di, s.horizontal);
-    const VI xv = hn::Iota(di, x);
+    const VI xv = IotaFrom(di, x);
     const VI steep2 = hn::IfThenElseZero(hn::RebindMask(di, hn::Not(pair1)), hn::Set(di, 1));
     const VI acrossH = hn::Add(hn::Set(di, y), steep2);  // plane row between y - 1 | y and y | y + 1
     const VI acrossV = hn::Add(xv, steep2);              // plane column likewise

@@ -23,6 +23,7 @@
 #include "src/aa/luma_planes.hpp"
 #include "src/aa/ppaa_common.hpp"
 #include "src/core/exact_div-inl.h"
+#include "src/core/iota-inl.h"
 #include "src/core/srgb_encode-inl.h"
 
 HWY_BEFORE_NAMESPACE();
@@ -38,6 +39,7 @@ using VI = hn::Vec<DI>;
 using VU = hn::Vec<DU>;
 using ssfx::HWY_NAMESPACE::DivExact;
 using ssfx::HWY_NAMESPACE::ExactDivisor;
+using ssfx::HWY_NAMESPACE::IotaFrom;
 
 struct RgbV {
     VF r, g, b;
@@ -202,7 +204,7 @@ struct NearSplitXY {
 HWY_INLINE bool SplitNearXY(const Texture& tex, VF u, VF v, int x, int y, const hn::Mask<DF>& skip, NearSplitXY* s) {
     const DF df;
     const DI di;
-    s->x = SplitNear(u, hn::Set(df, float(tex.width())), hn::ConvertTo(df, hn::Iota(di, x)));
+    s->x = SplitNear(u, hn::Set(df, float(tex.width())), hn::ConvertTo(df, IotaFrom(di, x)));
     s->y = SplitNear(v, hn::Set(df, float(tex.height())), hn::Set(df, float(y)));
     return hn::AllTrue(df, hn::Or(hn::And(s->x.near, s->y.near), skip));
 }
@@ -390,7 +392,7 @@ HWY_INLINE hn::Mask<DF> ExitLanes(const std::uint8_t* exitMask, int x) {
 HWY_INLINE VF CentreU(const Texture& tex, int x) {
     const DF df;
     const DI di;
-    return hn::Div(hn::Add(hn::ConvertTo(df, hn::Iota(di, x)), hn::Set(df, 0.5f)), hn::Set(df, float(tex.width())));
+    return hn::Div(hn::Add(hn::ConvertTo(df, IotaFrom(di, x)), hn::Set(df, 0.5f)), hn::Set(df, float(tex.width())));
 }
 
 // The output byte toUnorm8(k / 4080) of a read of level k (the float k / 4080, rounded to

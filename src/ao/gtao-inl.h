@@ -21,6 +21,7 @@
 #include <cmath>
 
 #include "src/ao/gtao_simd.hpp"
+#include "src/core/iota-inl.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace ssfx::ao::detail {
@@ -241,7 +242,8 @@ HWY_INLINE void EdgesNormalsChunk(DF df, const GtaoSimdInput& in, int x, int y, 
     hn::StoreU(hn::DemoteTo(d8, packed), d8, edges);
 
     // The normal: positions z (ax + bx x), z (ay + by y), z with z = -t.
-    const V fxC = hn::Add(hn::Set(df, in.ax), hn::Mul(hn::Set(df, in.bx), hn::ConvertTo(df, hn::Iota(di, x))));
+    const V fxC = hn::Add(hn::Set(df, in.ax),
+                          hn::Mul(hn::Set(df, in.bx), hn::ConvertTo(df, ssfx::HWY_NAMESPACE::IotaFrom(di, x))));
     const V fyC = hn::Set(df, in.ay + in.by * float(y));
     const V zC = hn::Neg(tc);
     const V cx = hn::Mul(zC, fxC), cy = hn::Mul(zC, fyC);
@@ -253,8 +255,10 @@ HWY_INLINE void EdgesNormalsChunk(DF df, const GtaoSimdInput& in, int x, int y, 
         nz = hn::IfThenElseZero(ok, hn::Div(nz, len));
     };
     // Neighbours L, R, T, B: their own positions (x -+ 1 or y -+ 1) with their t.
-    const V fxL = hn::Add(hn::Set(df, in.ax), hn::Mul(hn::Set(df, in.bx), hn::ConvertTo(df, hn::Iota(di, x - 1))));
-    const V fxR = hn::Add(hn::Set(df, in.ax), hn::Mul(hn::Set(df, in.bx), hn::ConvertTo(df, hn::Iota(di, x + 1))));
+    const V fxL = hn::Add(hn::Set(df, in.ax),
+                          hn::Mul(hn::Set(df, in.bx), hn::ConvertTo(df, ssfx::HWY_NAMESPACE::IotaFrom(di, x - 1))));
+    const V fxR = hn::Add(hn::Set(df, in.ax),
+                          hn::Mul(hn::Set(df, in.bx), hn::ConvertTo(df, ssfx::HWY_NAMESPACE::IotaFrom(di, x + 1))));
     const V fyT = hn::Set(df, in.ay + in.by * float(y - 1)), fyB = hn::Set(df, in.ay + in.by * float(y + 1));
     const V fxs[4] = {fxL, fxR, fxC, fxC}, fys[4] = {fyC, fyC, fyT, fyB};
     V ux[4], uy[4], uz[4];
