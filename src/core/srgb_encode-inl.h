@@ -46,15 +46,17 @@ HWY_INLINE hn::Vec<hn::RebindToSigned<DF>> EncodeSrgb8ByTable(DF df, hn::Vec<DF>
 // The real-valued encode e(v) = 255 (1.055 v^(1/2.4) - 0.055), or 255 * 12.92 v below the
 // curve's knee, is the exact inverse of the decode whose half-levels are encodeSrgb8's
 // thresholds, so encodeSrgb8(v) = floor(e(v) + 0.5) (e(v) + 0.5 is never an integer for a
-// float v: the thresholds are never floats). This computes e(v) to within 6e-4 levels:
-// v = 2^E m with m in [1, 2), v^(5/12) = 2^(5E/12) m^(5/12), the first factor a table of
-// the 14 exponents in range (one register), the second a degree-5 polynomial in m - 1.5
-// (Chebyshev interpolation at 6 nodes; relative error at most 1.9e-6 evaluated in float).
-// Lanes whose e(v) + 0.5 lies within 1/500 of an integer are ambiguous; a vector holding
-// one takes the table (about 6 % of vectors). Test Color.VectorSrgbEncodeGivesTheScalarLevels
-// checks every float in [2^-14, 1] against encodeSrgb8, so a lane that is not flagged but
-// wrong would fail it. Used where a vector is 16 floats (AVX-512): a gather of 16 lanes
-// costs about 26 cycles on Zen 4, this about a third of that.
+// float v: the thresholds are never floats). This computes e(v) to within 7.7e-5 levels
+// (measured over every float in range): v = 2^E m with m in [1, 2), v^(5/12) = 2^(5E/12)
+// m^(5/12), the first factor a table of the 14 exponents in range (one register), the second
+// a degree-6 polynomial in m - 1.5 (Chebyshev interpolation at 7 nodes; relative error at most
+// 3.4e-7 evaluated in float). Lanes whose e(v) + 0.5 lies within 4e-4 of an integer are
+// ambiguous (0.08 % of floats); a vector holding one takes the table. Test
+// Color.VectorSrgbEncodeGivesTheScalarLevels checks every float in [2^-14, 1] against
+// encodeSrgb8, so a lane that is not flagged but wrong would fail it. Used where a vector is
+// 16 floats (AVX-512): a gather of 16 lanes costs about 26 cycles on Zen 4, this a fraction
+// of that. (With a degree-5 polynomial and a band of 1/500, 9 % of blur's vectors took the
+// table and the branch cost blur:srgb a third of its time.)
 template <class DF>
 HWY_INLINE hn::Vec<hn::RebindToSigned<DF>> EncodeSrgb8(DF df, hn::Vec<DF> v) {
 #if HWY_ARCH_X86 && (HWY_TARGET == HWY_AVX3 || HWY_TARGET == HWY_AVX3_DL)
@@ -74,12 +76,13 @@ HWY_INLINE hn::Vec<hn::RebindToSigned<DF>> EncodeSrgb8(DF df, hn::Vec<DF> v) {
                     hn::Set(di, 15));
         const auto m = hn::BitCast(df, hn::Or(hn::And(bits, hn::Set(du, 0x7FFFFFu)), hn::Set(du, 0x3F800000u)));
         const auto t = hn::Sub(m, hn::Set(df, 1.5f));
-        auto p = hn::Set(df, 0.00514348829f);
-        p = hn::MulAdd(p, t, hn::Set(df, -0.0106514301f));
-        p = hn::MulAdd(p, t, hn::Set(df, 0.0224526934f));
-        p = hn::MulAdd(p, t, hn::Set(df, -0.0638610572f));
-        p = hn::MulAdd(p, t, hn::Set(df, 0.32890445f));
-        p = hn::MulAdd(p, t, hn::Set(df, 1.18405235f));
+        auto p = hn::Set(df, -0.00269152573f);
+        p = hn::MulAdd(p, t, hn::Set(df, 0.0052354401f));
+        p = hn::MulAdd(p, t, hn::Set(df, -0.00964535028f));
+        p = hn::MulAdd(p, t, hn::Set(df, 0.0224240758f));
+        p = hn::MulAdd(p, t, hn::Set(df, -0.0639548749f));
+        p = hn::MulAdd(p, t, hn::Set(df, 0.328906238f));
+        p = hn::MulAdd(p, t, hn::Set(df, 1.18405354f));
         const auto scale = hn::TableLookupLanes(hn::Load(df, kScale), hn::IndicesFromVec(df, exponent));
         const auto power = hn::MulAdd(scale, p, hn::Set(df, -255.0f * 0.055f));
         const auto linear = hn::Mul(v, hn::Set(df, 255.0f * 12.92f));
@@ -87,7 +90,7 @@ HWY_INLINE hn::Vec<hn::RebindToSigned<DF>> EncodeSrgb8(DF df, hn::Vec<DF> v) {
         const auto f = hn::Add(e, hn::Set(df, 0.5f));
         const auto fl = hn::Floor(f);
         const auto d = hn::Sub(f, fl);
-        const auto near = hn::Or(hn::Lt(d, hn::Set(df, 0.002f)), hn::Gt(d, hn::Set(df, 0.998f)));
+        const auto near = hn::Or(hn::Lt(d, hn::Set(df, 0.0004f)), hn::Gt(d, hn::Set(df, 0.9996f)));
         if (hn::AllFalse(df, hn::And(inRange, near))) {
             const auto outside = hn::IfThenElseZero(hn::RebindMask(di, hn::Ge(v, hn::Set(df, 1.0f))), hn::Set(di, 255));
             return hn::IfThenElse(hn::RebindMask(di, inRange), hn::ConvertTo(di, fl), outside);
