@@ -49,6 +49,43 @@ struct GtaoLanes {
         return hn::IfThenElse(hn::Ge(x, hn::Zero(df)), r, hn::Sub(hn::Set(df, 2.0f * halfPi), r));
     }
 
+    //! Each level's start, width and height per lane of a level index (LevelsOf).
+    template <class VI>
+    struct LevelVectors {
+        VI start, width, height;
+    };
+    //! The levels' start, width and height of level m per lane: a register table lookup where
+    //! a vector holds all five levels, else selects.
+    template <class VI>
+    LevelVectors<VI> LevelsOf(VI m) const {
+        if (hn::Lanes(di) >= 8) {
+            const auto idx = hn::IndicesFromVec(di, m);
+            return {hn::TableLookupLanes(hn::LoadU(di, in.levelStart16), idx),
+                    hn::TableLookupLanes(hn::LoadU(di, in.levelWidth16), idx),
+                    hn::TableLookupLanes(hn::LoadU(di, in.levelHeight16), idx)};
+        }
+        VI start = hn::Set(di, in.levelStart16[0]), w = hn::Set(di, in.levelWidth16[0]),
+           h = hn::Set(di, in.levelHeight16[0]);
+        for (int l = 1; l < 5; ++l) {
+            const auto is = hn::Eq(m, hn::Set(di, l));
+            start = hn::IfThenElse(is, hn::Set(di, in.levelStart16[l]), start);
+            w = hn::IfThenElse(is, hn::Set(di, in.levelWidth16[l]), w);
+            h = hn::IfThenElse(is, hn::Set(di, in.levelHeight16[l]), h);
+        }
+        return {start, w, h};
+    }
+    //! GtaoSetup's texel table entry computed: floor((2 p + 1) wm / 2 n) for p in [0, n),
+    //! exactly (a float estimate within one of it, then one integer correction).
+    template <class VI>
+    VI TexelOf(VI p, VI wm, int n) const {
+        const VI one = hn::Set(di, 1), den = hn::Set(di, 2 * n);
+        const VI num = hn::Mul(hn::Add(hn::Add(p, p), one), wm);
+        VI q = hn::ConvertTo(di, hn::Floor(hn::Mul(hn::ConvertTo(df, num), hn::Set(df, 1.0f / float(2 * n)))));
+        const VI r = hn::Sub(num, hn::Mul(q, den));
+        q = hn::Sub(q, hn::IfThenElseZero(hn::Lt(r, hn::Zero(di)), one));
+        return hn::Add(q, hn::IfThenElseZero(hn::Not(hn::Lt(r, den)), one));
+    }
+
     //! One step's sample on one side at buffer pixel (px, py) of chain level m: the horizon
     //! cosine h moves up to the sample's (GtaoMain::sample).
     template <class VI>
@@ -60,15 +97,16 @@ struct GtaoLanes {
         // A pixel beyond the buffer reads the edge texel's column or row (texel tables, clamped).
         const VI cpx = hn::Min(hn::Max(px, zero), hn::Set(di, in.width - 1));
         const VI cpy = hn::Min(hn::Max(py, zero), hn::Set(di, in.height - 1));
-        const VI tx = hn::GatherIndex(di, in.texelX, hn::Add(hn::Mul(m, hn::Set(di, in.width)), cpx));
-        const VI ty = hn::GatherIndex(di, in.texelY, hn::Add(hn::Mul(m, hn::Set(di, in.height)), cpy));
-        // The level's start and width: five values, selected (cheaper than two gathers).
-        VI off = hn::Set(di, in.levelOffset[0]), lw = hn::Set(di, in.levelWidth[0]);
-        for (int l = 1; l < 5; ++l) {
-            const auto is = hn::Eq(m, hn::Set(di, l));
-            off = hn::IfThenElse(is, hn::Set(di, in.levelOffset[l]), off);
-            lw = hn::IfThenElse(is, hn::Set(di, in.levelWidth[l]), lw);
+        const LevelVectors<VI> level = LevelsOf(m);
+        VI tx, ty;
+        if (in.arithmeticTexels) {  // two gathers cost more than the arithmetic
+            tx = TexelOf(cpx, level.width, in.width);
+            ty = TexelOf(cpy, level.height, in.height);
+        } else {
+            tx = hn::GatherIndex(di, in.texelX, hn::Add(hn::Mul(m, hn::Set(di, in.width)), cpx));
+            ty = hn::GatherIndex(di, in.texelY, hn::Add(hn::Mul(m, hn::Set(di, in.height)), cpy));
         }
+        const VI off = level.start, lw = level.width;
         const V ts = hn::GatherIndex(df, in.chain, hn::Add(off, hn::Add(hn::Mul(ty, lw), tx)));
         auto valid = hn::Not(hn::IsInf(ts));  // sky: weight 0
         if (in.discard) valid = hn::And(valid, hn::RebindMask(df, inside));
@@ -169,13 +207,13 @@ struct GtaoLanes {
                 const V s = hn::Div(hn::Add(hn::Set(df, float(j)), xj), steps);
                 const V u = hn::Add(hn::Mul(s, s), smin);  // sampleDistributionPower 2
                 const V sx = hn::Mul(u, ox), sy = hn::Mul(u, oy);
-                // log2 |s| as half of log2 |s|^2 (no square root)
-                const V lod = hn::Min(
-                    hn::Max(hn::Sub(hn::Mul(hn::Set(df, 0.5f), hn::Log2(df, hn::Add(hn::Mul(sx, sx), hn::Mul(sy, sy)))),
-                                    hn::Set(df, in.mipOffset)),
-                            zero),
-                    hn::Set(df, 5.0f));
-                const auto m = hn::Min(hn::Set(di, 4), hn::ConvertTo(di, hn::Floor(hn::Add(lod, hn::Set(df, 0.5f)))));
+                // The level round(log2 |s| - mipOffset) clamped to [0, 4], as |s|^2 against
+                // the four squared thresholds (no logarithm; NaN counts none).
+                const V q = hn::Add(hn::Mul(sx, sx), hn::Mul(sy, sy));
+                auto m = hn::Zero(di);
+                for (int level = 0; level < 4; ++level)
+                    m = hn::Add(m, hn::IfThenElseZero(hn::RebindMask(di, hn::Ge(q, hn::Set(df, in.lodSquared[level]))),
+                                                      hn::Set(di, 1)));
                 const auto qx = hn::NearestInt(sx), qy = hn::NearestInt(sy);
                 const auto yi = hn::Set(di, y);
                 hp = Sample(hn::Add(xi, qx), hn::Add(yi, qy), m, cx, cy, cz, vx, vy, vz, startPos, hp);

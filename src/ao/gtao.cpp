@@ -233,6 +233,16 @@ ImageF gtaoImpl(ImageView<const float> depth, const Camera& camera, const GtaoPa
               s.fastAcos,
               s.discard,
               s.minusOne};
+        for (int l = 0; l < 16; ++l) {
+            const int m = std::min(l, ws.chain.levels() - 1);
+            in.levelStart16[l] = ws.chain.offset[std::size_t(m)];
+            in.levelWidth16[l] = ws.chain.width[std::size_t(m)];
+            in.levelHeight16[l] = ws.chain.height[std::size_t(m)];
+        }
+        const std::int64_t side = std::max(W, H);
+        in.arithmeticTexels = (2 * side + 2) * side < (std::int64_t(1) << 30);
+        for (int k = 1; k <= 4; ++k)
+            in.lodSquared[k - 1] = float(std::exp2(double(2 * k - 1) + 2.0 * double(s.mipOffset)));
     }
     parallelRows(work.height, exec, [&](int r0, int r1) {
         for (int j = r0; j < r1; ++j) {

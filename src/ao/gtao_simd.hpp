@@ -21,6 +21,16 @@ struct GtaoSimdInput {
     float rNum, re, fRe, mipOffset, toc1, thickness, finalPower;
     int slices, steps;
     bool lift, nearFade, fastAcos, discard, minusOne;
+    // Set after the fields above (gtao.cpp):
+    //! Each level's start in `chain`, width and height, padded to 16 entries: a register
+    //! table where a vector holds 8 or more lanes.
+    std::int32_t levelStart16[16] = {}, levelWidth16[16] = {}, levelHeight16[16] = {};
+    //! The texel of column / row p is computed, floor((2 p + 1) W_m / 2 W), rather than read
+    //! from texelX / texelY: (2 W + 1) W and (2 H + 1) H fit an int32 with room (gtao.cpp).
+    bool arithmeticTexels = false;
+    //! Level m is the number of k = 1 .. 4 with |s|^2 >= lodSquared[k - 1] = 2^(2 k - 1 + 2
+    //! mipOffset): round(log2 |s| - mipOffset) clamped to [0, 4] without the logarithm.
+    float lodSquared[4] = {};
 };
 
 //! A before the denoiser of pixels [x0, x1) of buffer row y into out[0 ..) (sampleDistribution
