@@ -1,11 +1,12 @@
 // Highway body of GTAO's main pass (spec gtao.md section 5; the scalar oracle is
 // GtaoMain::pixel in gtao_pixel.hpp, whose operations the lanes follow one for one): one lane
 // per pixel along a row, every sample gathered from the depth chain stored in one buffer.
-// What differs from the oracle: the cosines, sines, arc cosines, the base-2 logarithm and the
-// final power come from Highway's float approximations (a few ulps) instead of libm, and with
+// What differs from the oracle: the cosines, sines, arc cosines and the final power come from
+// Highway's float approximations (a few ulps) instead of libm, and with
 // the exact arc cosine sin(gamma), cos(gamma +- pi/2) and the integral's cos(2 h - gamma) come
 // from the cosines they are functions of (sqrt(1 - c^2), angle-sum identities); the falloff
-// multiplies by 1 / (f Re), the level takes log2 |s| as log2 |s|^2 / 2, and slice k's
+// multiplies by 1 / (f Re), the level compares |s|^2 with the squared thresholds of
+// round(log2 |s| - mipOffset) instead of taking a logarithm, and slice k's
 // direction is slice 0's turned by k pi / slices (angle sums). That
 // moves A by ulps and, in rare pixels, a rounded sample offset or its chain level by one;
 // the tests hold this path to the oracle within a stated bound (tests/ao/test_gtao.cpp).
