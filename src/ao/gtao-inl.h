@@ -20,6 +20,8 @@
 #include <hwy/contrib/math/math-inl.h>
 #include <hwy/highway.h>
 #include <cmath>
+#include <cstdint>
+#include <vector>
 
 #include "src/ao/gtao_simd.hpp"
 #include "src/core/iota-inl.h"
@@ -75,6 +77,15 @@ struct GtaoLanes {
         }
         return {start, w, h};
     }
+    //! Entry m of a 16-entry float table per lane (levels 0 .. 4 repeat in it).
+    template <class VI>
+    V LevelScale(const float* table16, VI m) const {
+        if (hn::Lanes(df) >= 8) return hn::TableLookupLanes(hn::LoadU(df, table16), hn::IndicesFromVec(df, m));
+        V r = hn::Set(df, table16[0]);
+        for (int l = 1; l < 5; ++l)
+            r = hn::IfThenElse(hn::RebindMask(df, hn::Eq(m, hn::Set(di, l))), hn::Set(df, table16[l]), r);
+        return r;
+    }
     //! GtaoSetup's texel table entry computed: floor((2 p + 1) wm / 2 n) for p in [0, n),
     //! exactly (a float estimate within one of it, then one integer correction).
     template <class VI>
@@ -100,7 +111,12 @@ struct GtaoLanes {
         const VI cpy = hn::Min(hn::Max(py, zero), hn::Set(di, in.height - 1));
         const LevelVectors<VI> level = LevelsOf(m);
         VI tx, ty;
-        if (in.arithmeticTexels) {  // two gathers cost more than the arithmetic
+        if (in.floatTexels) {  // one product each (exact here: checked by the setup)
+            const VI one = hn::Set(di, 1);
+            const V scaleX = LevelScale(in.texelScaleX16, m), scaleY = LevelScale(in.texelScaleY16, m);
+            tx = hn::ConvertTo(di, hn::Mul(hn::ConvertTo(df, hn::Add(hn::Add(cpx, cpx), one)), scaleX));
+            ty = hn::ConvertTo(di, hn::Mul(hn::ConvertTo(df, hn::Add(hn::Add(cpy, cpy), one)), scaleY));
+        } else if (in.arithmeticTexels) {  // two gathers cost more than the arithmetic
             tx = TexelOf(cpx, level.width, in.width);
             ty = TexelOf(cpy, level.height, in.height);
         } else {
@@ -399,6 +415,26 @@ inline int GtaoDenoiseRow(const GtaoDenoiseInput& in, int y, int x0, int x1, flo
     int x = x0;
     for (; x + n <= x1; x += n) hn::StoreU(DenoiseChunk(df, in, x, y), df, out + (x - x0));
     return x;
+}
+
+// Test hook (gtao_simd.hpp): how many p in [0, n) get a GtaoLanes::TexelOf(p, wm, n) other
+// than floor((2 p + 1) wm / 2 n).
+inline std::int64_t GtaoTexelMismatches(int n, int wm) {
+    const hn::ScalableTag<float> df;
+    const hn::RebindToSigned<decltype(df)> di;
+    GtaoSimdInput in{};
+    const GtaoLanes<decltype(df)> lanes{in, df, di};
+    const int lanesN = int(hn::Lanes(di));
+    std::vector<std::int32_t> got(static_cast<std::size_t>(lanesN));
+    std::int64_t mismatches = 0;
+    for (int p0 = 0; p0 < n; p0 += lanesN) {
+        const auto p = hn::Min(ssfx::HWY_NAMESPACE::IotaFrom(di, p0), hn::Set(di, n - 1));
+        hn::StoreU(lanes.TexelOf(p, hn::Set(di, wm), n), di, got.data());
+        for (int i = 0; i < lanesN && p0 + i < n; ++i)
+            mismatches +=
+                got[std::size_t(i)] != std::int32_t((2 * std::int64_t(p0 + i) + 1) * wm / (2 * std::int64_t(n)));
+    }
+    return mismatches;
 }
 
 inline int GtaoRowSimd(const GtaoSimdInput& in, int y, int x0, int x1, float* HWY_RESTRICT out) {

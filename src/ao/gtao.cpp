@@ -17,6 +17,13 @@
 
 namespace ssfx::ao {
 
+namespace detail {
+GtaoTexelPath& gtaoTexelPathForTest() {
+    static GtaoTexelPath path = GtaoTexelPath::Auto;
+    return path;
+}
+}  // namespace detail
+
 GtaoParams gtaoPreset(const std::string& name) {
     GtaoParams p;
     // XeGTAO's quality presets (vaGTAO.hlsl): slices x steps per side.
@@ -241,6 +248,27 @@ ImageF gtaoImpl(ImageView<const float> depth, const Camera& camera, const GtaoPa
         }
         const std::int64_t side = std::max(W, H);
         in.arithmeticTexels = (2 * side + 2) * side < (std::int64_t(1) << 30);
+        // The one-product texel where it gives the table's entry for every p and level
+        // (checked here, W + H entries a level: the vector pass then skips the correction).
+        in.floatTexels = true;
+        for (int m = 0; m < detail::kGtaoChainLevels; ++m) {
+            const float sx = float(double(ws.chain.width[std::size_t(m)]) / (2.0 * W));
+            const float sy = float(double(ws.chain.height[std::size_t(m)]) / (2.0 * H));
+            for (int l = m; l < 16; l += detail::kGtaoChainLevels) in.texelScaleX16[l] = sx, in.texelScaleY16[l] = sy;
+            for (int x = 0; x < W && in.floatTexels; ++x)
+                in.floatTexels = int(float(2 * x + 1) * sx) == s.texelX[std::size_t(m * W + x)];
+            for (int y = 0; y < H && in.floatTexels; ++y)
+                in.floatTexels = int(float(2 * y + 1) * sy) == s.texelY[std::size_t(m * H + y)];
+        }
+        switch (detail::gtaoTexelPathForTest()) {
+            case detail::GtaoTexelPath::Auto: break;
+            case detail::GtaoTexelPath::Product: SSFX_ASSERT(in.floatTexels); break;
+            case detail::GtaoTexelPath::Arithmetic:
+                SSFX_ASSERT(in.arithmeticTexels);
+                in.floatTexels = false;
+                break;
+            case detail::GtaoTexelPath::Tables: in.floatTexels = in.arithmeticTexels = false; break;
+        }
         for (int k = 1; k <= 4; ++k)
             in.lodSquared[k - 1] = float(std::exp2(double(2 * k - 1) + 2.0 * double(s.mipOffset)));
     }

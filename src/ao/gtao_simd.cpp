@@ -11,6 +11,8 @@ namespace ssfx::ao::detail {
 HWY_EXPORT(GtaoRowSimd);
 HWY_EXPORT(GtaoEdgesNormalsRow);
 HWY_EXPORT(GtaoDenoiseRow);
+HWY_EXPORT(GtaoTexelMismatches);
+std::int64_t gtaoTexelMismatches(int n, int wm) { return HWY_DYNAMIC_DISPATCH(GtaoTexelMismatches)(n, wm); }
 int gtaoDenoiseRowSimd(const GtaoDenoiseInput& in, int y, int x0, int x1, float* out) {
     return HWY_DYNAMIC_DISPATCH(GtaoDenoiseRow)(in, y, x0, x1, out);
 }

@@ -28,10 +28,24 @@ struct GtaoSimdInput {
     //! The texel of column / row p is computed, floor((2 p + 1) W_m / 2 W), rather than read
     //! from texelX / texelY: (2 W + 1) W and (2 H + 1) H fit an int32 with room (gtao.cpp).
     bool arithmeticTexels = false;
+    //! Cheaper still where the setup found it exact for every column, row and level (it
+    //! checks them all against texelX / texelY): the texel is trunc((2 p + 1) * scale_m)
+    //! with scale_m = float(W_m / 2W) (resp. H), one product.
+    bool floatTexels = false;
+    float texelScaleX16[16] = {}, texelScaleY16[16] = {};
     //! Level m is the number of k = 1 .. 4 with |s|^2 >= lodSquared[k - 1] = 2^(2 k - 1 + 2
     //! mipOffset): round(log2 |s| - mipOffset) clamped to [0, 4] without the logarithm.
     float lodSquared[4] = {};
 };
+
+//! How the vector pass finds each sample's texel (GtaoSimdInput): the one product where the
+//! setup found it exact, else the corrected arithmetic where it fits an int32, else the
+//! setup's tables. Tests force each path (all give the same texels, so the same bytes).
+enum class GtaoTexelPath { Auto, Product, Arithmetic, Tables };
+GtaoTexelPath& gtaoTexelPathForTest();
+//! Test hook: how many p in [0, n) get a computed texel (the arithmetic path) other than
+//! floor((2 p + 1) wm / 2 n), on the SIMD target this machine dispatches to.
+std::int64_t gtaoTexelMismatches(int n, int wm);
 
 //! A before the denoiser of pixels [x0, x1) of buffer row y into out[0 ..) (sampleDistribution
 //! power 2 only), whole vectors; returns the first x it left to the scalar loop.

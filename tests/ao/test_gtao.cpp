@@ -12,6 +12,7 @@
 #include <set>
 #include <vector>
 
+#include "src/ao/gtao_simd.hpp"
 #include "ssfx/ao/gtao.hpp"
 #include "ssfx/ao/raytraced.hpp"
 #include "ssfx/core/error.hpp"
@@ -298,6 +299,65 @@ TEST(Gtao, SameBytesForAnyThreadCountAndFiniteEverywhere) {
         EXPECT_GE(lo, 0.0f);
         EXPECT_LE(hi, 1.0f);
         EXPECT_LT(lo, 0.8f) << preset << ": the room's corners occlude";
+    }
+}
+
+// The arithmetic texel (a float estimate, then one integer correction) against the integer
+// formula for every column of every level of every buffer width from 1 to 600 and of 4224
+// (a 4K image with its guard band), on every SIMD target: the estimate falls one short for
+// some (e.g. width 141, level 4, column 70), so the correction is exercised.
+TEST(Gtao, ComputedTexelsAreTheIntegerFormula) {
+    struct Reset {
+        ~Reset() { hwy::SetSupportedTargetsForTest(0); }
+    } reset;
+    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+        hwy::SetSupportedTargetsForTest(target);
+        std::int64_t wrong = 0;
+        auto widths = [&](int n) {
+            for (int wm = n, m = 0; m < 5; ++m, wm = std::max(1, wm / 2))
+                wrong += ao::detail::gtaoTexelMismatches(n, wm);
+        };
+        for (int n = 1; n <= 600; ++n) widths(n);
+        widths(4224);
+        EXPECT_EQ(wrong, 0) << hwy::TargetName(target);
+    }
+}
+
+// The vector pass finds each sample's chain texel one of three ways (src/ao/gtao_simd.hpp):
+// one float product (where the setup checked it exact for every column, row and level), the
+// corrected arithmetic, or the setup's tables. They must give the same texels, so the same
+// bytes: three presets' outputs compared across the paths at two buffer sizes whose levels do
+// not halve evenly. At 205 x 129 the product is exact; at 141 x 109 it is not (the setup
+// falls back to the arithmetic), and there the arithmetic's float estimate falls one short
+// for a texel (level 4, column 70; found by search), so its correction step is needed.
+TEST(Gtao, EveryTexelPathGivesTheSameBytes) {
+    using ao::detail::GtaoTexelPath;
+    struct Reset {
+        ~Reset() { ao::detail::gtaoTexelPathForTest() = GtaoTexelPath::Auto; }
+    } reset;
+    struct Case {
+        int w, h;
+        std::vector<GtaoTexelPath> paths;
+    };
+    const Case cases[] = {
+        {173, 97, {GtaoTexelPath::Product, GtaoTexelPath::Arithmetic, GtaoTexelPath::Tables}},
+        {109, 77, {GtaoTexelPath::Auto, GtaoTexelPath::Arithmetic, GtaoTexelPath::Tables}},
+    };
+    Camera cam;
+    const auto room = scene::analyticSceneByName("room");
+    for (const Case& c : cases) {
+        const ImageF d = scene::castGeometry(room, cam, c.w + 32, c.h + 32, Exec{1}).depth;
+        for (const char* preset : {"low", "high", "ultra"}) {
+            GtaoParams p = gtaoPreset(preset);
+            p.guardBand = 16;
+            std::vector<ImageF> out;
+            for (const GtaoTexelPath path : c.paths) {
+                ao::detail::gtaoTexelPathForTest() = path;
+                out.push_back(gtao(d.view(), cam, p, Exec{2}));
+            }
+            for (std::size_t i = 1; i < out.size(); ++i)
+                EXPECT_EQ(out[0], out[i]) << c.w << "x" << c.h << " " << preset << ": path " << i << " against 0";
+        }
     }
 }
 
