@@ -57,17 +57,7 @@ HWY_INLINE hn::Vec<DF> BlurSum(DF df, const float* a, const float* c, const floa
     return hn::Mul(hn::Add(hn::Add(hn::LoadU(df, c), direct), corner), norm);
 }
 
-// An sRGB row decoded into three channel rows (kSrgb8's values; alpha is never filtered),
-// each with one pixel of clamped padding at both ends: channel c's pixel x at c * stride + 1 + x.
-inline void DecodeSrgbPadded(const Rgba8* HWY_RESTRICT in, int w, std::size_t stride, float* HWY_RESTRICT out) {
-    float* r = out + 1;
-    float* g = out + stride + 1;
-    float* b = out + 2 * stride + 1;
-    ssfx::HWY_NAMESPACE::DecodeSrgbRowPlanar(in, w, r, g, b);
-    for (float* c : {r, g, b}) c[-1] = c[0], c[w] = c[w - 1];
-}
-
-// BlurRowQuantized for an sRGB texture, on channel rows (DecodeSrgbPadded): the same sums,
+// BlurRowQuantized for an sRGB texture, on channel rows (DecodeSrgbRowPadded): the same sums,
 // lane by lane, one lane per pixel, each channel's vector encoded by EncodeSrgb8 (exact, so no
 // ties to take lane by lane), the three levels and the source's alpha packed into the lane's
 // RGBA word. Channel rows decode and encode three values a pixel, not four.
@@ -156,7 +146,7 @@ inline void BlurRows(ImageView<const Rgba8> in, ImageView<Rgba8> out, int y0, in
     const std::size_t stride = srgb ? 3 * channelStride : std::size_t(4 * w + 8);
     const auto toFloat = [&](const Rgba8* row, float* rowOut) {
         if (srgb)
-            DecodeSrgbPadded(row, w, channelStride, rowOut);
+            ssfx::HWY_NAMESPACE::DecodeSrgbRowPadded(row, w, rowOut);
         else
             ToFloatRow(row, w, rowOut);
     };

@@ -53,12 +53,12 @@ void DecodedLumaRows(const Rgba8* HWY_RESTRICT in, std::size_t stride, int w, in
     const auto wr = hn::Set(df, 0.299f), wg = hn::Set(df, 0.587f), wb = hn::Set(df, 0.114f);
     const std::size_t padded = std::size_t(w) + 2;
     for (int y = 0; y < rows; ++y) {
-        float* r = decoded + std::size_t(3 * y) * padded + 1;
-        float* g = r + padded;
-        float* b = g + padded;
+        float* row = decoded + std::size_t(y) * DecodedBand::rowFloats(w);
+        ssfx::HWY_NAMESPACE::DecodeSrgbRowPadded(in + std::size_t(y) * stride, w, row);
+        const float* r = row + 1;
+        const float* g = r + padded;
+        const float* b = g + padded;
         float* out = lumas + std::size_t(y) * std::size_t(w);
-        ssfx::HWY_NAMESPACE::DecodeSrgbRowPlanar(in + std::size_t(y) * stride, w, r, g, b);
-        for (float* c : {r, g, b}) c[-1] = c[0], c[w] = c[w - 1];
         int x = 0;
         for (; x + n <= w; x += n) {
             const auto sum = hn::Add(hn::Add(hn::Mul(wr, hn::LoadU(df, r + x)), hn::Mul(wg, hn::LoadU(df, g + x))),
@@ -87,7 +87,7 @@ LumaRows bandLumaRows(ImageView<const Rgba8> in, int y0, int y1, TextureFormat f
     const int first = std::max(0, y0 - 1), last = std::min(in.height(), y1 + 1);
     buffer.resize(std::size_t(last - first) * std::size_t(in.width()));
     if (format == TextureFormat::Srgb) {
-        decoded.resize(3 * std::size_t(last - first) * (std::size_t(in.width()) + 2));
+        decoded.resize(std::size_t(last - first) * DecodedBand::rowFloats(in.width()));
         HWY_DYNAMIC_DISPATCH(DecodedLumaRows)
         (in.row(first), std::size_t(in.stride()), in.width(), last - first, decoded.data(), buffer.data());
         return {buffer.data(), in.width(), in.height(), first, decoded.data(), last - first};

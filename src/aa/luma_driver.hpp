@@ -34,12 +34,12 @@ struct LumaRows {
     int clampRow(int y) const { return y < 0 ? 0 : (y >= height ? height - 1 : y); }
     const float* row(int y) const { return data + std::size_t(clampRow(y) - first) * std::size_t(width); }
     std::size_t decodedStride() const { return std::size_t(width) + 2; }
+    //! The decoded rows (DecodedBand's layout; empty unless sRGB), also for the luma planes.
+    DecodedBand decodedBand() const { return {decoded, first, decoded != nullptr ? count : 0}; }
     //! Channel c (0 r, 1 g, 2 b) of image row y, clamped; [-1] and [width] are the padding.
     const float* decodedRow(int y, int c) const {
-        return decoded + (std::size_t(clampRow(y) - first) * 3 + std::size_t(c)) * decodedStride() + 1;
+        return decodedBand().row(clampRow(y), width) + std::size_t(c) * decodedStride();
     }
-    //! The decoded rows, for the luma planes (empty unless sRGB).
-    DecodedBand decodedBand() const { return {decoded, first, decoded != nullptr ? count : 0}; }
 };
 
 //! Luma rows [y0 - 1, y1 + 1) of `in` (clamped; SIMD, same bits as the reference plane)

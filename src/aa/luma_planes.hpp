@@ -49,14 +49,15 @@ struct LumaPlanes {
 //! Image rows first .. first + count - 1 of an sRGB texture, decoded (kSrgb8) as three channel
 //! rows (r, g, b) per image row, each `width` floats with one float of padding either side:
 //! channel c of row y at data + ((y - first) * 3 + c) * (width + 2) + 1.
+//! (The layout DecodeSrgbRowPadded writes, src/core/srgb_encode-inl.h.)
 struct DecodedBand {
     const float* data = nullptr;
     int first = 0, count = 0;
+    //! Floats per image row: three channel rows of width + 2.
+    static std::size_t rowFloats(int width) { return 3 * (std::size_t(width) + 2); }
     bool holds(int y) const { return data != nullptr && y >= first && y < first + count; }
     //! Channel 0 of row y (held); channel c is c * (width + 2) floats on.
-    const float* row(int y, int width) const {
-        return data + std::size_t(y - first) * 3 * (std::size_t(width) + 2) + 1;
-    }
+    const float* row(int y, int width) const { return data + std::size_t(y - first) * rowFloats(width) + 1; }
 };
 
 //! Largest ring (rows per plane): searches may reach up to (kMaxPlaneRing - 2) / 2 rows.

@@ -496,22 +496,21 @@ inline void LumaPlaneRowsSrgb(ImageView<const Rgba8> in, const LumaPlanes& plane
     auto clampRow = [h](int y) { return y < 0 ? 0 : (y >= h ? h - 1 : y); };
     const int first = clampRow(r0 - 1), last = clampRow(r1 - 1);
     // Decoded rows first .. last not in the band, in DecodedBand's layout (channel c of a
-    // row at c * cw), with no padding filled in (the planes read columns 0 .. w - 1).
+    // row at c * cw).
     thread_local std::vector<float> decoded;
     thread_local struct {
         std::uint64_t call = 0;
         int row = -1;        // the last row decoded here for that call
         std::size_t at = 0;  // its offset in `decoded`
     } kept;
-    const std::size_t cw = std::size_t(w) + 2, rowFloats = 3 * cw;
+    const std::size_t cw = std::size_t(w) + 2, rowFloats = DecodedBand::rowFloats(w);
     const bool reuse =
         !band.holds(first) && kept.call == planes.call && kept.row == first && decoded.size() >= kept.at + rowFloats;
     if (reuse && kept.at != 0) std::memmove(decoded.data(), decoded.data() + kept.at, rowFloats * sizeof(float));
     decoded.resize(std::max(decoded.size(), std::size_t(last - first + 1) * rowFloats));
     for (int y = reuse ? first + 1 : first; y <= last; ++y) {
         if (band.holds(y)) continue;
-        float* d = decoded.data() + std::size_t(y - first) * rowFloats + 1;
-        ssfx::HWY_NAMESPACE::DecodeSrgbRowPlanar(in.row(y), w, d, d + cw, d + 2 * cw);
+        ssfx::HWY_NAMESPACE::DecodeSrgbRowPadded(in.row(y), w, decoded.data() + std::size_t(y - first) * rowFloats);
     }
     kept = {planes.call, band.holds(last) ? -1 : last, std::size_t(last - first) * rowFloats};
     auto channels = [&](int y) {

@@ -52,38 +52,14 @@ struct GtaoLanes {
         return hn::IfThenElse(hn::Ge(x, hn::Zero(df)), r, hn::Sub(hn::Set(df, 2.0f * halfPi), r));
     }
 
-    //! Each level's start, width and height per lane of a level index (LevelsOf).
-    template <class VI>
-    struct LevelVectors {
-        VI start, width, height;
-    };
-    //! The levels' start, width and height of level m per lane: a register table lookup where
-    //! a vector holds all five levels, else selects.
-    template <class VI>
-    LevelVectors<VI> LevelsOf(VI m) const {
-        if (hn::Lanes(di) >= 8) {
-            const auto idx = hn::IndicesFromVec(di, m);
-            return {hn::TableLookupLanes(hn::LoadU(di, in.levelStart16), idx),
-                    hn::TableLookupLanes(hn::LoadU(di, in.levelWidth16), idx),
-                    hn::TableLookupLanes(hn::LoadU(di, in.levelHeight16), idx)};
-        }
-        VI start = hn::Set(di, in.levelStart16[0]), w = hn::Set(di, in.levelWidth16[0]),
-           h = hn::Set(di, in.levelHeight16[0]);
-        for (int l = 1; l < 5; ++l) {
-            const auto is = hn::Eq(m, hn::Set(di, l));
-            start = hn::IfThenElse(is, hn::Set(di, in.levelStart16[l]), start);
-            w = hn::IfThenElse(is, hn::Set(di, in.levelWidth16[l]), w);
-            h = hn::IfThenElse(is, hn::Set(di, in.levelHeight16[l]), h);
-        }
-        return {start, w, h};
-    }
-    //! Entry m of a 16-entry float table per lane (levels 0 .. 4 repeat in it).
-    template <class VI>
-    V LevelScale(const float* table16, VI m) const {
-        if (hn::Lanes(df) >= 8) return hn::TableLookupLanes(hn::LoadU(df, table16), hn::IndicesFromVec(df, m));
-        V r = hn::Set(df, table16[0]);
+    //! Entry m (a chain level, 0 .. 4) of a 16-entry table per lane: a register table lookup
+    //! where a vector holds all five levels, else selects.
+    template <class D, class VI>
+    hn::Vec<D> Pick(D d, const hn::TFromD<D>* table16, VI m) const {
+        if (hn::Lanes(d) >= 8) return hn::TableLookupLanes(hn::LoadU(d, table16), hn::IndicesFromVec(d, m));
+        hn::Vec<D> r = hn::Set(d, table16[0]);
         for (int l = 1; l < 5; ++l)
-            r = hn::IfThenElse(hn::RebindMask(df, hn::Eq(m, hn::Set(di, l))), hn::Set(df, table16[l]), r);
+            r = hn::IfThenElse(hn::RebindMask(d, hn::Eq(m, hn::Set(di, l))), hn::Set(d, table16[l]), r);
         return r;
     }
     //! GtaoSetup's texel table entry computed: floor((2 p + 1) wm / 2 n) for p in [0, n),
@@ -109,21 +85,20 @@ struct GtaoLanes {
         // A pixel beyond the buffer reads the edge texel's column or row (texel tables, clamped).
         const VI cpx = hn::Min(hn::Max(px, zero), hn::Set(di, in.width - 1));
         const VI cpy = hn::Min(hn::Max(py, zero), hn::Set(di, in.height - 1));
-        const LevelVectors<VI> level = LevelsOf(m);
+        const VI off = Pick(di, in.levelStart16, m), lw = Pick(di, in.levelWidth16, m);
         VI tx, ty;
         if (in.floatTexels) {  // one product each (exact here: checked by the setup)
             const VI one = hn::Set(di, 1);
-            const V scaleX = LevelScale(in.texelScaleX16, m), scaleY = LevelScale(in.texelScaleY16, m);
+            const V scaleX = Pick(df, in.texelScaleX16, m), scaleY = Pick(df, in.texelScaleY16, m);
             tx = hn::ConvertTo(di, hn::Mul(hn::ConvertTo(df, hn::Add(hn::Add(cpx, cpx), one)), scaleX));
             ty = hn::ConvertTo(di, hn::Mul(hn::ConvertTo(df, hn::Add(hn::Add(cpy, cpy), one)), scaleY));
         } else if (in.arithmeticTexels) {  // two gathers cost more than the arithmetic
-            tx = TexelOf(cpx, level.width, in.width);
-            ty = TexelOf(cpy, level.height, in.height);
+            tx = TexelOf(cpx, lw, in.width);
+            ty = TexelOf(cpy, Pick(di, in.levelHeight16, m), in.height);
         } else {
             tx = hn::GatherIndex(di, in.texelX, hn::Add(hn::Mul(m, hn::Set(di, in.width)), cpx));
             ty = hn::GatherIndex(di, in.texelY, hn::Add(hn::Mul(m, hn::Set(di, in.height)), cpy));
         }
-        const VI off = level.start, lw = level.width;
         const V ts = hn::GatherIndex(df, in.chain, hn::Add(off, hn::Add(hn::Mul(ty, lw), tx)));
         auto valid = hn::Not(hn::IsInf(ts));  // sky: weight 0
         if (in.discard) valid = hn::And(valid, hn::RebindMask(df, inside));

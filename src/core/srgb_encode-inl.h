@@ -11,6 +11,7 @@
 #include <hwy/highway.h>
 
 #include <bit>
+#include <cstddef>
 #include <type_traits>
 
 #include "ssfx/core/color.hpp"
@@ -161,6 +162,18 @@ inline void DecodeSrgbRowPlanar(const Rgba8* HWY_RESTRICT in, int w, float* HWY_
         hn::StoreU(decode(t, 16), df, b + x);
     }
     for (; x < w; ++x) r[x] = table[in[x].r], g[x] = table[in[x].g], b[x] = table[in[x].b];
+}
+
+// A row of w sRGB texels decoded into the padded channel-row layout the kernels share: three
+// rows (r, g, b) of w + 2 floats, pixel x of channel c at out[c (w + 2) + 1 + x], and the
+// padding floats repeating the edge texels (clamp to edge).
+inline void DecodeSrgbRowPadded(const Rgba8* HWY_RESTRICT in, int w, float* HWY_RESTRICT out) {
+    const std::size_t stride = std::size_t(w) + 2;
+    float* r = out + 1;
+    float* g = r + stride;
+    float* b = g + stride;
+    DecodeSrgbRowPlanar(in, w, r, g, b);
+    for (float* c : {r, g, b}) c[-1] = c[0], c[w] = c[w - 1];
 }
 
 }  // namespace ssfx::HWY_NAMESPACE
