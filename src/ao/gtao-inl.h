@@ -19,6 +19,7 @@
 
 #include <hwy/contrib/math/math-inl.h>
 #include <hwy/highway.h>
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -74,15 +75,12 @@ struct GtaoLanes {
         return hn::Add(q, hn::IfThenElseZero(hn::Not(hn::Lt(r, den)), one));
     }
 
-    //! One step's sample on one side at buffer pixel (px, py) of chain level m: the horizon
-    //! cosine h moves up to the sample's (GtaoMain::sample).
+    //! The chain value (t, +infinity for sky) of one step's sample on one side: buffer pixel
+    //! (px, py) at chain level m, a pixel beyond the buffer reading the edge texel's column or
+    //! row (texel tables, clamped).
     template <class VI>
-    V Sample(VI px, VI py, VI m, V cx, V cy, V cz, V vx, V vy, V vz, V start, V h) const {
+    V Fetch(VI px, VI py, VI m) const {
         const VI zero = hn::Zero(di);
-        const VI minus1 = hn::Set(di, -1);
-        const auto inside = hn::And(hn::And(hn::Gt(px, minus1), hn::Gt(py, minus1)),
-                                    hn::And(hn::Lt(px, hn::Set(di, in.width)), hn::Lt(py, hn::Set(di, in.height))));
-        // A pixel beyond the buffer reads the edge texel's column or row (texel tables, clamped).
         const VI cpx = hn::Min(hn::Max(px, zero), hn::Set(di, in.width - 1));
         const VI cpy = hn::Min(hn::Max(py, zero), hn::Set(di, in.height - 1));
         const VI off = Pick(di, in.levelStart16, m), lw = Pick(di, in.levelWidth16, m);
@@ -99,9 +97,20 @@ struct GtaoLanes {
             tx = hn::GatherIndex(di, in.texelX, hn::Add(hn::Mul(m, hn::Set(di, in.width)), cpx));
             ty = hn::GatherIndex(di, in.texelY, hn::Add(hn::Mul(m, hn::Set(di, in.height)), cpy));
         }
-        const V ts = hn::GatherIndex(df, in.chain, hn::Add(off, hn::Add(hn::Mul(ty, lw), tx)));
+        return hn::GatherIndex(df, in.chain, hn::Add(off, hn::Add(hn::Mul(ty, lw), tx)));
+    }
+
+    //! One step's sample on one side at buffer pixel (px, py), its chain value ts (Fetch):
+    //! the horizon cosine h moves up to the sample's (GtaoMain::sample).
+    template <class VI>
+    V Sample(VI px, VI py, V ts, V cx, V cy, V cz, V vx, V vy, V vz, V start, V h) const {
         auto valid = hn::Not(hn::IsInf(ts));  // sky: weight 0
-        if (in.discard) valid = hn::And(valid, hn::RebindMask(df, inside));
+        if (in.discard) {
+            const VI minus1 = hn::Set(di, -1);
+            const auto inside = hn::And(hn::And(hn::Gt(px, minus1), hn::Gt(py, minus1)),
+                                        hn::And(hn::Lt(px, hn::Set(di, in.width)), hn::Lt(py, hn::Set(di, in.height))));
+            valid = hn::And(valid, hn::RebindMask(df, inside));
+        }
         const V z = hn::Neg(ts);
         const V fx = hn::Add(hn::Set(df, in.ax), hn::Mul(hn::Set(df, in.bx), hn::ConvertTo(df, px)));
         const V fy = hn::Add(hn::Set(df, in.ay), hn::Mul(hn::Set(df, in.by), hn::ConvertTo(df, py)));
@@ -192,24 +201,40 @@ struct GtaoLanes {
             const V startPos = in.minusOne ? hn::Set(df, -1.0f) : lowPos;
             const V startNeg = in.minusOne ? hn::Set(df, -1.0f) : lowNeg;
             V hp = startPos, hneg = startNeg;
-            for (int j = 0; j < in.steps; ++j) {
-                const float base = float(k + j * in.steps) * 0.6180339887498948f;
-                const V xjRaw = hn::Add(nt, hn::Set(df, base));
-                const V xj = hn::Sub(xjRaw, hn::Floor(xjRaw));
-                const V s = hn::Div(hn::Add(hn::Set(df, float(j)), xj), steps);
-                const V u = hn::Add(hn::Mul(s, s), smin);  // sampleDistributionPower 2
-                const V sx = hn::Mul(u, ox), sy = hn::Mul(u, oy);
-                // The level round(log2 |s| - mipOffset) clamped to [0, 4], as |s|^2 against
-                // the four squared thresholds (no logarithm; NaN counts none).
-                const V q = hn::Add(hn::Mul(sx, sx), hn::Mul(sy, sy));
-                auto m = hn::Zero(di);
-                for (int level = 0; level < 4; ++level)
-                    m = hn::Add(m, hn::IfThenElseZero(hn::RebindMask(di, hn::Ge(q, hn::Set(df, in.lodSquared[level]))),
-                                                      hn::Set(di, 1)));
-                const auto qx = hn::NearestInt(sx), qy = hn::NearestInt(sy);
-                const auto yi = hn::Set(di, y);
-                hp = Sample(hn::Add(xi, qx), hn::Add(yi, qy), m, cx, cy, cz, vx, vy, vz, startPos, hp);
-                hneg = Sample(hn::Sub(xi, qx), hn::Sub(yi, qy), m, cx, cy, cz, vx, vy, vz, startNeg, hneg);
+            // The steps in batches: every depth of a batch is gathered before the first is used,
+            // so that the gathers' cache misses overlap (the horizons are updated in step order).
+            constexpr int kBatch = 3;
+            for (int j0 = 0; j0 < in.steps; j0 += kBatch) {
+                const int count = std::min(kBatch, in.steps - j0);
+                hn::Vec<decltype(di)> pxP[kBatch], pyP[kBatch], pxN[kBatch], pyN[kBatch];
+                V tsP[kBatch], tsN[kBatch];
+                for (int b = 0; b < count; ++b) {
+                    const int j = j0 + b;
+                    const float base = float(k + j * in.steps) * 0.6180339887498948f;
+                    const V xjRaw = hn::Add(nt, hn::Set(df, base));
+                    const V xj = hn::Sub(xjRaw, hn::Floor(xjRaw));
+                    const V s = hn::Div(hn::Add(hn::Set(df, float(j)), xj), steps);
+                    const V u = hn::Add(hn::Mul(s, s), smin);  // sampleDistributionPower 2
+                    const V sx = hn::Mul(u, ox), sy = hn::Mul(u, oy);
+                    // The level round(log2 |s| - mipOffset) clamped to [0, 4], as |s|^2 against
+                    // the four squared thresholds (no logarithm; NaN counts none).
+                    const V q = hn::Add(hn::Mul(sx, sx), hn::Mul(sy, sy));
+                    auto m = hn::Zero(di);
+                    for (int level = 0; level < 4; ++level)
+                        m = hn::Add(m,
+                                    hn::IfThenElseZero(hn::RebindMask(di, hn::Ge(q, hn::Set(df, in.lodSquared[level]))),
+                                                       hn::Set(di, 1)));
+                    const auto qx = hn::NearestInt(sx), qy = hn::NearestInt(sy);
+                    const auto yi = hn::Set(di, y);
+                    pxP[b] = hn::Add(xi, qx), pyP[b] = hn::Add(yi, qy);
+                    pxN[b] = hn::Sub(xi, qx), pyN[b] = hn::Sub(yi, qy);
+                    tsP[b] = Fetch(pxP[b], pyP[b], m);
+                    tsN[b] = Fetch(pxN[b], pyN[b], m);
+                }
+                for (int b = 0; b < count; ++b) {
+                    hp = Sample(pxP[b], pyP[b], tsP[b], cx, cy, cz, vx, vy, vz, startPos, hp);
+                    hneg = Sample(pxN[b], pyN[b], tsN[b], cx, cy, cz, vx, vy, vz, startNeg, hneg);
+                }
             }
             if (in.minusOne) hp = hn::Max(hp, lowPos), hneg = hn::Max(hneg, lowNeg);  // onto the hemisphere
             const V h1 = Acos(hp), h0 = hn::Neg(Acos(hneg));
