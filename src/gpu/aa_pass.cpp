@@ -322,6 +322,21 @@ bool srgbBytesRecovered(vkx::Context& c, const vk::raii::Sampler& sampler) {
     });
 }
 
+// texture=srgb: whether the device's sRGB decode of every 8-bit value is the CPU's kSrgb8
+// float, in both sRGB formats; then the model takes fetched values as the decoded levels
+// (spec deviceDecode), as for unorm. SSFX_GPU_DEVICE_DECODE=0 turns it off.
+bool srgbDecodeIsExact(vkx::Context& c, const vk::raii::Sampler& sampler) {
+    if (const char* v = std::getenv("SSFX_GPU_DEVICE_DECODE"); v && std::string_view(v) == "0") return false;
+    return probedOnce(c, "srgb decode", [&] {
+        for (const vk::Format f : {vk::Format::eR8G8B8A8Srgb, vk::Format::eB8G8R8A8Srgb})
+            if (!everyChannel(probeDecode(c, sampler, f).decoded, f, [](float value, std::uint8_t byte) {
+                    return std::bit_cast<std::uint32_t>(value) == std::bit_cast<std::uint32_t>(kSrgb8[byte]);
+                }))
+                return false;
+        return true;
+    });
+}
+
 const std::vector<vkx::BindingSpec> kBindings{
     {vk::DescriptorType::eCombinedImageSampler},  // SSFX_AA_BINDING_INPUT
     {vk::DescriptorType::eStorageImage},          // SSFX_AA_BINDING_OUTPUT
@@ -398,7 +413,7 @@ struct AaPass::Impl {
     AaParams params;
     Sampling sampling = Sampling::Model;
     EdgePath edgePath = EdgePath::List;  // resolved: List or OnePass
-    bool deviceDecode = false;           // model: the probe found the device's unorm decode exact
+    bool deviceDecode = false;           // model: the probe found the device's decode of the input format exact
     bool srgb = false;                   // texture=srgb: sRGB input views (spec srgb)
     vk::raii::Sampler sampler{nullptr};
     vkx::Buffer tables;
@@ -674,7 +689,8 @@ AaPass::AaPass(std::shared_ptr<vkx::Context> ctx, std::string_view method, const
                 fmt::format("{}: texture=srgb: this device's sRGB decode does not give the texels' bytes "
                             "back (gpu.md, \"sRGB textures\"); use --backend cpu",
                             m.method->id));
-        m.deviceDecode = sampling == Sampling::Model && !m.srgb && unormDecodeIsExact(c, m.sampler);
+        m.deviceDecode = sampling == Sampling::Model &&
+                         (m.srgb ? srgbDecodeIsExact(c, m.sampler) : unormDecodeIsExact(c, m.sampler));
         spec.deviceDecode = m.deviceDecode ? 1 : 0;
         // The tables: the x4 resolve's weights, the CPU's own floats; texture=srgb's decoded
         // levels and encode thresholds.
@@ -685,13 +701,11 @@ AaPass::AaPass(std::shared_ptr<vkx::Context> ctx, std::string_view method, const
         for (int d = -8; d <= 7; ++d) t.push_back(aa::mitchell((float(2 + d) + 0.5f - 2.0f) / 4.0f, mp.B, mp.C));
         static_assert(SSFX_AA_MITCHELL4_COUNT == 16);
         using Encode = ssfx::detail::SrgbEncodeTable;
-        static_assert(SSFX_AA_SRGB_LEVELS == kSrgb8.size() && SSFX_AA_SRGB_NEXT == 256 &&
-                      SSFX_AA_SRGB_BUCKETS == Encode::kBuckets && SSFX_AA_SRGB_LOW_BITS == Encode::kLowBits &&
-                      SSFX_AA_SRGB_SHIFT == Encode::kShift);
+        static_assert(SSFX_AA_SRGB_LEVELS == kSrgb8.size() && SSFX_AA_SRGB_BUCKETS == Encode::kBuckets &&
+                      SSFX_AA_SRGB_LOW_BITS == Encode::kLowBits && SSFX_AA_SRGB_SHIFT == Encode::kShift &&
+                      SSFX_AA_SRGB_OFFSET_MASK == Encode::kOffsetMask && Encode::kNoThreshold <= 0xFFFF);
         t.insert(t.end(), kSrgb8.begin(), kSrgb8.end());
-        const Encode& encode = ssfx::detail::srgbEncodeTable();
-        t.insert(t.end(), encode.next.begin(), encode.next.end());
-        for (const std::int32_t k : encode.first) t.push_back(std::bit_cast<float>(k));  // int bits
+        for (const std::int32_t k : ssfx::detail::srgbEncodeTable().packed) t.push_back(std::bit_cast<float>(k));
         m.tables = c.uploadBuffer(t.data(), t.size() * sizeof(float), vk::BufferUsageFlagBits::eStorageBuffer);
         detail::AaSpecialization first = spec;
         if (hasEdgePass(m.method->id)) {

@@ -211,20 +211,26 @@ TEST(GpuModelParityBatchedSearch, BothSearchOrdersGiveTheCpuBytes) {
 }
 
 // The model takes fetched values as the texels' levels where the pass's probe found the
-// device's unorm decode exact for all 256 values (gpu::AaPass::deviceDecode; lavapipe's is
-// not: 254 decodes one ulp off); SSFX_GPU_DEVICE_DECODE=0 forces the computed levels. On a
-// device whose decode is exact, this and the other parity tests cover both paths.
+// device's decode of the input's format exact for all 256 values (gpu::AaPass::deviceDecode;
+// unorm: v / 255, lavapipe's is not: 254 decodes one ulp off; texture=srgb: the CPU's kSrgb8);
+// SSFX_GPU_DEVICE_DECODE=0 forces the computed levels. On a device whose decode is exact,
+// this and the other parity tests cover both paths.
 TEST(GpuModelParityDeviceDecode, ComputedLevelsGiveTheCpuBytes) {
     REQUIRE_DEVICE();
-    // (texture=srgb never takes the device's unorm decode: unorm only.)
     expectCpuBytesWith("SSFX_GPU_DEVICE_DECODE", "0", {"blur", "fxaa3c", "fxaa3d", "ddaa1", "ddaa2", "ssaax4"},
-                       {Case{"random 64x48", 64, 48}, Case{"random 37x23", 37, 23}}, 100, false);
+                       {Case{"random 64x48", 64, 48}, Case{"random 37x23", 37, 23}}, 100);
+    MethodSettings srgb;
+    srgb.params = {{"texture", 1}};
     ASSERT_EQ(setenv("SSFX_GPU_DEVICE_DECODE", "0", 1), 0);
     EXPECT_FALSE(gpu::AaPass(context(), "blur").deviceDecode());
+    EXPECT_FALSE(gpu::AaPass(context(), "blur", srgb).deviceDecode());
     unsetenv("SSFX_GPU_DEVICE_DECODE");
     EXPECT_FALSE(gpu::AaPass(context(), "blur", {}, gpu::Sampling::Hardware).deviceDecode());
-    std::printf("the device's unorm decode, probed: %s\n",
-                gpu::AaPass(context(), "blur").deviceDecode() ? "exact (used)" : "not exact (levels computed)");
+    EXPECT_FALSE(gpu::AaPass(context(), "blur", srgb, gpu::Sampling::Hardware).deviceDecode());
+    std::printf(
+        "the device's decode, probed: unorm %s, sRGB %s\n",
+        gpu::AaPass(context(), "blur").deviceDecode() ? "exact (used)" : "not exact (levels computed)",
+        gpu::AaPass(context(), "blur", srgb).deviceDecode() ? "exact (used)" : "not exact (levels from the bytes)");
 }
 
 // The shaders write the paper's decimal constants as GLSL literals, which glslang reads

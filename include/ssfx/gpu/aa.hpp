@@ -90,10 +90,11 @@ public:
     //! The path the edge-test methods take on this device (never Auto; List for a method
     //! without an edge test). An image too large for the list runs in one pass regardless.
     EdgePath edgePath() const;
-    //! Model mode: whether the device's unorm decode of every 8-bit value was found to be
-    //! v / 255 correctly rounded (a probe when the pass is made, once per device and driver),
-    //! so the shaders take fetched values as the texels' levels (docs/gpu.md). lavapipe's is
-    //! one ulp off for 254: false there.
+    //! Model mode: whether the device's decode of every 8-bit value in the input's format was
+    //! found to be the CPU's level (unorm: v / 255 correctly rounded; texture=srgb: kSrgb8) by
+    //! a probe when the pass is made (once per device and driver), so the shaders take fetched
+    //! values as the texels' levels (docs/gpu.md). lavapipe's unorm decode is one ulp off for
+    //! 254: false there.
     bool deviceDecode() const;
 
     //! Records the pass into `cmd` (see the contract above). Throws ssfx::Error when an

@@ -50,7 +50,7 @@
     X(6, edgeGroups, SSFX_AA_EDGE_MAX_GROUPS) /* edge pass: at most this many groups (aa_pass.cpp) */    \
     X(7, pairReads, 0)     /* ddaa2's edge pass, model: search reads by texel index (aa_pass.cpp) */     \
     X(8, batchedSearch, 0) /* ddaa2: a round's reads issued before they are tested (aa_pass.cpp) */      \
-    X(9, deviceDecode, 0)  /* model: the device's unorm decode is exact (aa_pass.cpp's probe) */         \
+    X(9, deviceDecode, 0)  /* model: the device's decode of the input format is exact (aa_pass.cpp) */   \
     X(10, srgb, 0)         /* texture=srgb: an sRGB view, decoded, filtered in linear, encoded back */
 
 // The three dispatches of the methods with an edge test (fxaa3c, fxaa3d, ddaa1, ddaa2;
@@ -104,14 +104,14 @@ SSFX_AA_SPECIALIZATION(SSFX_AA_SPEC_DECL)
 // indices that are the same for every invocation; the model's levels k / 4080 are computed,
 // exact.glsl's levelOver4080, as a per-pixel table lookup is slow on SIMD CPU drivers).
 #define SSFX_AA_MITCHELL4_COUNT 16
-// Then texture=srgb's tables, read by the model only: the 256 decoded levels (the CPU's
-// kSrgb8), and encodeSrgb8's table (ssfx::detail::SrgbEncodeTable): the threshold above each
-// level (255: +infinity) and, as int bits, each bucket's first level (buckets of the floats
-// in [2^-14, 1) by exponent and top 8 mantissa bits).
+// Then texture=srgb's tables: the 256 decoded levels (the CPU's kSrgb8), and encodeSrgb8's
+// packed table (ssfx::detail::SrgbEncodeTable::packed), as int bits: per bucket of the floats
+// in [2^-14, 1) (by exponent and top 8 mantissa bits) its first level << 16 | the offset of
+// its threshold in the bucket (1 << 15 where it holds none).
 #define SSFX_AA_SRGB_LEVELS 256
-#define SSFX_AA_SRGB_NEXT 256
 #define SSFX_AA_SRGB_BUCKETS 3584
 #define SSFX_AA_SRGB_LOW_BITS 0x38800000u
 #define SSFX_AA_SRGB_SHIFT 15
+#define SSFX_AA_SRGB_OFFSET_MASK 0x7FFFu
 
 #endif

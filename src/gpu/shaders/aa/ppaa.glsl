@@ -34,8 +34,7 @@ layout(set = 0, binding = SSFX_AA_BINDING_OUTPUT, rgba8) uniform writeonly image
 layout(set = 0, binding = SSFX_AA_BINDING_TABLES, std430) readonly buffer Tables {
     float mitchell4[SSFX_AA_MITCHELL4_COUNT];
     float srgbLevels[SSFX_AA_SRGB_LEVELS];          // texture=srgb: the CPU's kSrgb8
-    float srgbNext[SSFX_AA_SRGB_NEXT];              // texture=srgb: encodeSrgb8's thresholds
-    int srgbFirst[SSFX_AA_SRGB_BUCKETS];            // texture=srgb: encodeSrgb8's buckets
+    int srgbPacked[SSFX_AA_SRGB_BUCKETS];           // texture=srgb: encodeSrgb8's buckets, packed
 }
 tables;
 layout(push_constant, std430) uniform Push { AaConstants pc; };
@@ -69,9 +68,21 @@ float unormLevel(uint v) { return levelOver4080(16u * v); }
 // Texel (x, y) as fetched, clamped to the image (clamp-to-edge addressing). (Every fetch
 // goes through here, so a compiler can merge two fetches of one texel.)
 vec4 texelRaw(int x, int y) { return texelFetch(src, ivec2(clamp(x, 0, pc.width - 1), clamp(y, 0, pc.height - 1)), 0); }
+// texture=srgb's exact encode (the CPU's encodeSrgb8, by its packed table: color.hpp's
+// SrgbEncodeTable): the first level of v's bucket, plus one where v's offset in the bucket is
+// at or above its threshold's; 0 below 2^-14 (and for NaN), 255 from 1. One load.
+uint encodeSrgbExact(float v) {
+    if (!(v >= uintBitsToFloat(SSFX_AA_SRGB_LOW_BITS))) return 0u;
+    if (v >= 1.0) return 255u;
+    const uint offset = floatBitsToUint(v) - SSFX_AA_SRGB_LOW_BITS;
+    const uint e = uint(tables.srgbPacked[offset >> SSFX_AA_SRGB_SHIFT]);
+    return (e >> 16u) + ((offset & SSFX_AA_SRGB_OFFSET_MASK) >= (e & 0xFFFFu) ? 1u : 0u);
+}
 // A fetched texel's 8-bit values: from the unorm value, or, through an sRGB view
 // (spec_srgb), recovered from the device's decode (srgb.glsl; the pass checked that this
-// gives every byte back on this device).
+// gives every byte back on this device). (The exact encode's table gives them back too, but
+// its three loads took longer than the three pows on lavapipe: ddaa2 texture=srgb 3.9-4.5x
+// its unorm time against 3.2-3.6x, alternated runs on the photograph.)
 uvec3 texelBytes(vec4 raw) {
     if (spec_srgb != 0) return srgbLevelsDevice(raw.rgb);
     return uvec3(round(raw.rgb * 255.0));
@@ -82,16 +93,17 @@ uvec3 texel8(int x, int y) { return texelBytes(texelRaw(x, y)); }
 // double, rounded to float).
 vec3 srgbDecoded(uvec3 t) { return vec3(tables.srgbLevels[t.r], tables.srgbLevels[t.g], tables.srgbLevels[t.b]); }
 // A fetched texel's value: v / 255 rounded to float32 (the CPU's table), or with
-// texture=srgb its decoded level. The device's decode in the hardware mode; in the model too
-// where the pass found it to be exactly that for all 256 unorm values (spec_deviceDecode,
-// aa_pass.cpp's probe: a function of 256 inputs, checked on every one); else computed from
-// the byte (an sRGB view's from the CPU's table: devices' sRGB decodes are not exact).
+// texture=srgb its decoded level (the CPU's kSrgb8). The device's decode in the hardware
+// mode; in the model too where the pass found it to be exactly that for all 256 values of the
+// input's format (spec_deviceDecode, aa_pass.cpp's probes: a function of 256 inputs, checked
+// on every one); else computed from the byte (lavapipe's unorm decode is one ulp off for
+// 254, and devices' sRGB decodes are approximations).
 vec3 texelDecoded(vec4 raw) {
 #ifdef SSFX_DEVICE_ARITHMETIC
     return raw.rgb;
 #else
-    if (spec_srgb != 0) return srgbDecoded(texelBytes(raw));
     if (spec_deviceDecode != 0) return raw.rgb;
+    if (spec_srgb != 0) return srgbDecoded(texelBytes(raw));
     const uvec3 t = uvec3(round(raw.rgb * 255.0));
     return vec3(unormLevel(t.r), unormLevel(t.g), unormLevel(t.b));
 #endif
@@ -131,17 +143,17 @@ AxisPos axisV(float v) { return axisPos(v, pc.fh, pc.height); }
 // order (ssfx::Texture::sampleGpuDecoded; no 1/16-level grid).
 vec3 sampleModel(AxisPos ax, AxisPos ay, int ox, int oy) {
     const int x0 = ax.index + ox, y0 = ay.index + oy;
-    const uvec3 t00 = texel8(x0, y0), t10 = texel8(x0 + 1, y0);
-    const uvec3 t01 = texel8(x0, y0 + 1), t11 = texel8(x0 + 1, y0 + 1);
     const uint w00 = uint((256 - ax.w) * (256 - ay.w)), w10 = uint(ax.w * (256 - ay.w));
     const uint w01 = uint((256 - ax.w) * ay.w), w11 = uint(ax.w * ay.w);
     if (spec_srgb != 0) {
         const float unit = 1.0 / 65536.0;  // the weights are exact multiples of it
-        EXACT vec3 sum = ((srgbDecoded(t00) * (float(w00) * unit) + srgbDecoded(t10) * (float(w10) * unit)) +
-                          srgbDecoded(t01) * (float(w01) * unit)) +
-                         srgbDecoded(t11) * (float(w11) * unit);
+        EXACT vec3 sum = ((fetchValue(x0, y0) * (float(w00) * unit) + fetchValue(x0 + 1, y0) * (float(w10) * unit)) +
+                          fetchValue(x0, y0 + 1) * (float(w01) * unit)) +
+                         fetchValue(x0 + 1, y0 + 1) * (float(w11) * unit);
         return sum;
     }
+    const uvec3 t00 = texel8(x0, y0), t10 = texel8(x0 + 1, y0);
+    const uvec3 t01 = texel8(x0, y0 + 1), t11 = texel8(x0 + 1, y0 + 1);
     const uvec3 sum = w00 * t00 + w10 * t10 + w01 * t01 + w11 * t11;
     const uvec3 k = (sum + 2048u) >> 12u;
     return vec3(sixteenthLevel(k.r), sixteenthLevel(k.g), sixteenthLevel(k.b));
@@ -154,7 +166,7 @@ vec3 sampleModel(AxisPos ax, AxisPos ay, int ox, int oy) {
 // products are zero).
 vec3 pairRead(ivec2 a, ivec2 b) {
     if (spec_srgb != 0) {
-        EXACT vec3 half_ = srgbDecoded(texel8(a.x, a.y)) * 0.5 + srgbDecoded(texel8(b.x, b.y)) * 0.5;
+        EXACT vec3 half_ = fetchValue(a.x, a.y) * 0.5 + fetchValue(b.x, b.y) * 0.5;
         return half_;
     }
     const uvec3 k = 8u * (texel8(a.x, a.y) + texel8(b.x, b.y));
@@ -232,16 +244,6 @@ float lumaAt(int x, int y) {
 #else
 float lumaAt(int x, int y) { return edgeLuma(fetchValue(x, y)); }
 #endif
-
-// texture=srgb's exact encode (the CPU's encodeSrgb8, by its table: color.hpp): the level
-// of v's bucket, plus one at or above the next threshold; 0 below 2^-14 (and for NaN), 255
-// from 1.
-uint encodeSrgbExact(float v) {
-    if (!(v >= uintBitsToFloat(SSFX_AA_SRGB_LOW_BITS))) return 0u;
-    if (v >= 1.0) return 255u;
-    const uint k = uint(tables.srgbFirst[(floatBitsToUint(v) - SSFX_AA_SRGB_LOW_BITS) >> SSFX_AA_SRGB_SHIFT]);
-    return v >= tables.srgbNext[k] ? k + 1u : k;
-}
 
 // The output pixel: the colour quantised exactly (model) or by the device (hardware), alpha
 // from `alpha` (an 8-bit value). texture=srgb: encoded back to sRGB levels (the output is a
