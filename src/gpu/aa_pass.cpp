@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cstddef>
 #include <cstdlib>
@@ -11,6 +12,7 @@
 #include <iterator>
 #include <map>
 #include <mutex>
+#include <type_traits>
 
 #include "src/gpu/shaders/aa/aa_constants.h"
 #include "ssfx/aa/ddaa.hpp"
@@ -262,22 +264,23 @@ DecodeProbe probeDecode(vkx::Context& c, const vk::raii::Sampler& sampler, vk::F
     return result;
 }
 
-// A device property decided by the probes, once per device and driver (and property).
-template <class Check>
-bool probedOnce(vkx::Context& c, std::string_view property, Check check) {
+// A device property decided by the probes (what `check` returns), once per device and driver
+// (and property).
+template <class Check, class T = std::invoke_result_t<Check>>
+T probedOnce(vkx::Context& c, std::string_view property, Check check) {
     const vk::PhysicalDeviceProperties props = c.physical.getProperties();
     const std::string key = fmt::format("{}:{}:{}:{}:{}", property, props.vendorID, props.deviceID, props.driverVersion,
                                         std::string_view(props.deviceName));
     static std::mutex mutex;
-    static std::map<std::string, bool> known;
+    static std::map<std::string, T> known;
     {
         std::lock_guard lock(mutex);
         if (const auto it = known.find(key); it != known.end()) return it->second;
     }
-    const bool holds = check();
+    T found = check();
     std::lock_guard lock(mutex);
-    known[key] = holds;
-    return holds;
+    known.emplace(key, found);
+    return found;
 }
 
 // For each texel of the probe, whether channel k's value passes `ok(probed value, the byte)`.
@@ -334,6 +337,47 @@ bool srgbDecodeIsExact(vkx::Context& c, const vk::raii::Sampler& sampler) {
                 }))
                 return false;
         return true;
+    });
+}
+
+// texture=srgb, model, where the device's sRGB decode is not kSrgb8 itself: a lookup from the
+// device's decoded value to the CPU's level, so that a texel read costs one table load
+// instead of recovering the byte (a pow per channel) and then looking up kSrgb8. Indexed like
+// encodeSrgb8's buckets (the floats in [2^-14, 1) by exponent and top 8 mantissa bits), entry
+// bucket(d(b)) holds kSrgb8[b], where d(b) is the device's decode of byte b, probed for every
+// byte in every channel of both sRGB formats; it exists only where every byte decodes to one
+// float, 0 below 2^-14, 255 to 1 and no two bytes share a bucket, so the lookup gives every
+// texel the CPU's level exactly (the shader's srgbLevelOfDecoded). Empty otherwise, or with
+// SSFX_GPU_SRGB_DECODE_TABLE=0 (for the test of the other path, and for measurements).
+std::vector<float> probeSrgbDecodeTable(vkx::Context& c, const vk::raii::Sampler& sampler) {
+    if (const char* v = std::getenv("SSFX_GPU_SRGB_DECODE_TABLE"); v && std::string_view(v) == "0") return {};
+    return probedOnce(c, "srgb decode table", [&]() -> std::vector<float> {
+        using Encode = ssfx::detail::SrgbEncodeTable;
+        std::array<std::uint32_t, 256> bits{};
+        std::array<bool, 256> seen{};
+        for (const vk::Format f : {vk::Format::eR8G8B8A8Srgb, vk::Format::eB8G8R8A8Srgb}) {
+            const DecodeProbe p = probeDecode(c, sampler, f);
+            bool same = true;
+            everyChannel(p.decoded, f, [&](float value, std::uint8_t byte) {
+                const std::uint32_t b = std::bit_cast<std::uint32_t>(value);
+                same = same && (!seen[byte] || bits[byte] == b);
+                seen[byte] = true, bits[byte] = b;
+                return true;
+            });
+            if (!same) return {};
+        }
+        const float low = std::bit_cast<float>(Encode::kLowBits);
+        if (std::bit_cast<float>(bits[0]) >= low || !(std::bit_cast<float>(bits[255]) >= 1.0f)) return {};
+        std::vector<float> table(Encode::kBuckets, 0.0f);
+        std::vector<bool> taken(Encode::kBuckets, false);
+        for (int b = 1; b < 255; ++b) {
+            const float v = std::bit_cast<float>(bits[std::size_t(b)]);
+            if (!(v >= low && v < 1.0f)) return {};
+            const std::size_t bucket = (bits[std::size_t(b)] - Encode::kLowBits) >> Encode::kShift;
+            if (taken[bucket]) return {};
+            taken[bucket] = true, table[bucket] = kSrgb8[std::size_t(b)];
+        }
+        return table;
     });
 }
 
@@ -415,6 +459,7 @@ struct AaPass::Impl {
     EdgePath edgePath = EdgePath::List;  // resolved: List or OnePass
     bool deviceDecode = false;           // model: the probe found the device's decode of the input format exact
     bool srgb = false;                   // texture=srgb: sRGB input views (spec srgb)
+    bool srgbDecodeTable = false;        // texture=srgb, model: the device's decoded values to levels by a table
     vk::raii::Sampler sampler{nullptr};
     vkx::Buffer tables;
     std::unique_ptr<vkx::ComputePipeline> pipeline, resolve;  // resolve: ddaa2p's ssaax2
@@ -706,6 +751,16 @@ AaPass::AaPass(std::shared_ptr<vkx::Context> ctx, std::string_view method, const
                       SSFX_AA_SRGB_OFFSET_MASK == Encode::kOffsetMask && Encode::kNoThreshold <= 0xFFFF);
         t.insert(t.end(), kSrgb8.begin(), kSrgb8.end());
         for (const std::int32_t k : ssfx::detail::srgbEncodeTable().packed) t.push_back(std::bit_cast<float>(k));
+        // texture=srgb, model: the device's decoded values to the levels (zeros where unused).
+        const std::vector<float> decodeTable = m.srgb && sampling == Sampling::Model && !m.deviceDecode
+                                                   ? probeSrgbDecodeTable(c, m.sampler)
+                                                   : std::vector<float>{};
+        m.srgbDecodeTable = !decodeTable.empty();
+        spec.srgbDecodeTable = m.srgbDecodeTable ? 1 : 0;
+        if (m.srgbDecodeTable)
+            t.insert(t.end(), decodeTable.begin(), decodeTable.end());
+        else
+            t.resize(t.size() + Encode::kBuckets, 0.0f);
         m.tables = c.uploadBuffer(t.data(), t.size() * sizeof(float), vk::BufferUsageFlagBits::eStorageBuffer);
         detail::AaSpecialization first = spec;
         if (hasEdgePass(m.method->id)) {
@@ -761,6 +816,7 @@ const MethodInfo& AaPass::method() const { return *impl_->method; }
 Sampling AaPass::sampling() const { return impl_->sampling; }
 EdgePath AaPass::edgePath() const { return impl_->edgePath; }
 bool AaPass::deviceDecode() const { return impl_->deviceDecode; }
+bool AaPass::srgbDecodeTable() const { return impl_->srgbDecodeTable; }
 double AaPass::lastMilliseconds() const { return impl_->lastMs; }
 const std::vector<AaPass::DispatchTime>& AaPass::lastDispatches() const { return impl_->lastDispatches; }
 double AaPass::lastEdgeShare() const { return impl_->lastEdgeShare; }

@@ -227,10 +227,32 @@ TEST(GpuModelParityDeviceDecode, ComputedLevelsGiveTheCpuBytes) {
     unsetenv("SSFX_GPU_DEVICE_DECODE");
     EXPECT_FALSE(gpu::AaPass(context(), "blur", {}, gpu::Sampling::Hardware).deviceDecode());
     EXPECT_FALSE(gpu::AaPass(context(), "blur", srgb, gpu::Sampling::Hardware).deviceDecode());
-    std::printf(
-        "the device's decode, probed: unorm %s, sRGB %s\n",
-        gpu::AaPass(context(), "blur").deviceDecode() ? "exact (used)" : "not exact (levels computed)",
-        gpu::AaPass(context(), "blur", srgb).deviceDecode() ? "exact (used)" : "not exact (levels from the bytes)");
+    std::printf("the device's decode, probed: unorm %s, sRGB %s\n",
+                gpu::AaPass(context(), "blur").deviceDecode() ? "exact (used)" : "not exact (levels computed)",
+                gpu::AaPass(context(), "blur", srgb).deviceDecode() ? "exact (used)" : "not exact");
+}
+
+// texture=srgb, model: where the device's sRGB decode is not kSrgb8 itself, a texel's level
+// comes from the pass's table of the device's decoded values (gpu::AaPass::srgbDecodeTable,
+// built where a probe of every byte shows that it gives each one exactly: lavapipe's does);
+// SSFX_GPU_SRGB_DECODE_TABLE=0 forces the other path, the byte recovered with the device's
+// pow and its level looked up. Both give the CPU's bytes (GpuSrgbParity covers the default).
+TEST(GpuModelParitySrgbDecodeTable, TheRecoveredBytesPathGivesTheCpuBytes) {
+    REQUIRE_DEVICE();
+    MethodSettings srgb;
+    srgb.params = {{"texture", 1}};
+    const gpu::AaPass probe(context(), "blur", srgb);
+    std::printf("sRGB levels from the device's decode by a table: %s\n", probe.srgbDecodeTable() ? "yes"
+                                                                         : probe.deviceDecode()
+                                                                             ? "no (the decode is exact)"
+                                                                             : "no");
+    expectCpuBytesWith("SSFX_GPU_SRGB_DECODE_TABLE", "0", {"blur", "fxaa3c", "fxaa3d", "ddaa1", "ddaa2", "ssaax4"},
+                       {Case{"random 64x48", 64, 48}, Case{"random 37x23", 37, 23}}, 120);
+    ASSERT_EQ(setenv("SSFX_GPU_SRGB_DECODE_TABLE", "0", 1), 0);
+    EXPECT_FALSE(gpu::AaPass(context(), "blur", srgb).srgbDecodeTable());
+    unsetenv("SSFX_GPU_SRGB_DECODE_TABLE");
+    EXPECT_FALSE(gpu::AaPass(context(), "blur", srgb, gpu::Sampling::Hardware).srgbDecodeTable());
+    EXPECT_FALSE(gpu::AaPass(context(), "blur").srgbDecodeTable());  // unorm
 }
 
 // The shaders write the paper's decimal constants as GLSL literals, which glslang reads

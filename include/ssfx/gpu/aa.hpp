@@ -96,6 +96,11 @@ public:
     //! values as the texels' levels (docs/gpu.md). lavapipe's unorm decode is one ulp off for
     //! 254: false there.
     bool deviceDecode() const;
+    //! Model, texture=srgb, where deviceDecode() is false: whether a texel's level comes from a
+    //! table indexed by the device's decoded value (one load a channel), built from a probe of
+    //! every byte in both sRGB formats where that gives every byte's level exactly; else the
+    //! byte is recovered with the device's pow and its level looked up (docs/gpu.md).
+    bool srgbDecodeTable() const;
 
     //! Records the pass into `cmd` (see the contract above). Throws ssfx::Error when an
     //! image has the wrong format, usage or size, or exceeds the device's limits.

@@ -40,18 +40,19 @@
 // constants: the device compiles only the branch taken, where a branch on a push constant
 // costs both sides on drivers that run shaders as masked SIMD code (lavapipe runs every side
 // of every branch). GLSL sees them as spec_<name>.
-#define SSFX_AA_SPECIALIZATION(X)                                                                        \
-    X(0, sampling, 0)           /* 0: the GPU sampling model (exact); 1: the device's sampler */         \
-    X(1, chroma, 0)             /* 1: chromaWeight != 0 (edgeLuma adds the chroma term) */               \
-    X(2, diagonalsAtCentres, 0) /* fxaa3c: diagonalOffset == 1 (reads at pixel centres) */               \
-    X(3, stage, 0)              /* edge-list methods: SSFX_AA_STAGE_LUMA, _CLASSIFY or _EDGES; else 0 */ \
-    X(4, groupX, SSFX_AA_GROUP) /* work-group size: SSFX_AA_GROUP^2, or SSFX_AA_EDGE_GROUP x 1 */        \
-    X(5, groupY, SSFX_AA_GROUP)                                                                          \
-    X(6, edgeGroups, SSFX_AA_EDGE_MAX_GROUPS) /* edge pass: at most this many groups (aa_pass.cpp) */    \
-    X(7, pairReads, 0)     /* ddaa2's edge pass, model: search reads by texel index (aa_pass.cpp) */     \
-    X(8, batchedSearch, 0) /* ddaa2: a round's reads issued before they are tested (aa_pass.cpp) */      \
-    X(9, deviceDecode, 0)  /* model: the device's decode of the input format is exact (aa_pass.cpp) */   \
-    X(10, srgb, 0)         /* texture=srgb: an sRGB view, decoded, filtered in linear, encoded back */
+#define SSFX_AA_SPECIALIZATION(X)                                                                         \
+    X(0, sampling, 0)           /* 0: the GPU sampling model (exact); 1: the device's sampler */          \
+    X(1, chroma, 0)             /* 1: chromaWeight != 0 (edgeLuma adds the chroma term) */                \
+    X(2, diagonalsAtCentres, 0) /* fxaa3c: diagonalOffset == 1 (reads at pixel centres) */                \
+    X(3, stage, 0)              /* edge-list methods: SSFX_AA_STAGE_LUMA, _CLASSIFY or _EDGES; else 0 */  \
+    X(4, groupX, SSFX_AA_GROUP) /* work-group size: SSFX_AA_GROUP^2, or SSFX_AA_EDGE_GROUP x 1 */         \
+    X(5, groupY, SSFX_AA_GROUP)                                                                           \
+    X(6, edgeGroups, SSFX_AA_EDGE_MAX_GROUPS) /* edge pass: at most this many groups (aa_pass.cpp) */     \
+    X(7, pairReads, 0)        /* ddaa2's edge pass, model: search reads by texel index (aa_pass.cpp) */   \
+    X(8, batchedSearch, 0)    /* ddaa2: a round's reads issued before they are tested (aa_pass.cpp) */    \
+    X(9, deviceDecode, 0)     /* model: the device's decode of the input format is exact (aa_pass.cpp) */ \
+    X(10, srgb, 0)            /* texture=srgb: an sRGB view, decoded, filtered in linear, encoded back */ \
+    X(11, srgbDecodeTable, 0) /* texture=srgb, model: levels from the device's decode by a table */
 
 // The three dispatches of the methods with an edge test (fxaa3c, fxaa3d, ddaa1, ddaa2;
 // edge_list.glsl): the first writes the luma plane and copies every pixel to the output; the
@@ -107,7 +108,9 @@ SSFX_AA_SPECIALIZATION(SSFX_AA_SPEC_DECL)
 // Then texture=srgb's tables: the 256 decoded levels (the CPU's kSrgb8), and encodeSrgb8's
 // packed table (ssfx::detail::SrgbEncodeTable::packed), as int bits: per bucket of the floats
 // in [2^-14, 1) (by exponent and top 8 mantissa bits) its first level << 16 | the offset of
-// its threshold in the bucket (1 << 15 where it holds none).
+// its threshold in the bucket (1 << 15 where it holds none); then, for the model where the
+// pass built it (aa_pass.cpp: srgbDecodeTable), the same buckets of the device's decoded
+// values holding the levels they decode (zeros otherwise).
 #define SSFX_AA_SRGB_LEVELS 256
 #define SSFX_AA_SRGB_BUCKETS 3584
 #define SSFX_AA_SRGB_LOW_BITS 0x38800000u

@@ -35,6 +35,7 @@ layout(set = 0, binding = SSFX_AA_BINDING_TABLES, std430) readonly buffer Tables
     float mitchell4[SSFX_AA_MITCHELL4_COUNT];
     float srgbLevels[SSFX_AA_SRGB_LEVELS];          // texture=srgb: the CPU's kSrgb8
     int srgbPacked[SSFX_AA_SRGB_BUCKETS];           // texture=srgb: encodeSrgb8's buckets, packed
+    float srgbDeviceLevels[SSFX_AA_SRGB_BUCKETS];   // texture=srgb, model: the device's decode to levels
 }
 tables;
 layout(push_constant, std430) uniform Push { AaConstants pc; };
@@ -92,6 +93,14 @@ uvec3 texel8(int x, int y) { return texelBytes(texelRaw(x, y)); }
 // texture=srgb: the decoded level of an 8-bit value, the CPU's kSrgb8 (IEC 61966-2-1 in
 // double, rounded to float).
 vec3 srgbDecoded(uvec3 t) { return vec3(tables.srgbLevels[t.r], tables.srgbLevels[t.g], tables.srgbLevels[t.b]); }
+// texture=srgb, model (spec_srgbDecodeTable): the level of a texel channel from the device's
+// decoded value d, by the pass's table of the device's decode (aa_pass.cpp: each byte's d in a
+// bucket of its own; below 2^-14 only byte 0's, from 1 only byte 255's).
+float srgbLevelOfDecoded(float d) {
+    if (!(d >= uintBitsToFloat(SSFX_AA_SRGB_LOW_BITS))) return 0.0;
+    if (d >= 1.0) return 1.0;
+    return tables.srgbDeviceLevels[(floatBitsToUint(d) - SSFX_AA_SRGB_LOW_BITS) >> SSFX_AA_SRGB_SHIFT];
+}
 // A fetched texel's value: v / 255 rounded to float32 (the CPU's table), or with
 // texture=srgb its decoded level (the CPU's kSrgb8). The device's decode in the hardware
 // mode; in the model too where the pass found it to be exactly that for all 256 values of the
@@ -103,7 +112,11 @@ vec3 texelDecoded(vec4 raw) {
     return raw.rgb;
 #else
     if (spec_deviceDecode != 0) return raw.rgb;
-    if (spec_srgb != 0) return srgbDecoded(texelBytes(raw));
+    if (spec_srgb != 0) {
+        if (spec_srgbDecodeTable != 0)
+            return vec3(srgbLevelOfDecoded(raw.r), srgbLevelOfDecoded(raw.g), srgbLevelOfDecoded(raw.b));
+        return srgbDecoded(texelBytes(raw));
+    }
     const uvec3 t = uvec3(round(raw.rgb * 255.0));
     return vec3(unormLevel(t.r), unormLevel(t.g), unormLevel(t.b));
 #endif
