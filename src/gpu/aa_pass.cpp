@@ -293,18 +293,21 @@ bool everyChannel(const float* values, vk::Format f, Ok ok) {
     return true;
 }
 
-// Whether the device's unorm decode of an 8-bit texel channel is v / 255 rounded to float32
-// (kUnorm8, the model's level) for every v, in both input formats. It is a function of 256
-// inputs, so checking each one decides it: where it holds, the model takes a fetched value as
-// the texel's level (spec deviceDecode) instead of rounding it back to the byte and computing
-// the level (ppaa.glsl's texelDecoded). SSFX_GPU_DEVICE_DECODE=0 turns it off, for the test
-// of the computed path and for measurements.
-bool unormDecodeIsExact(vkx::Context& c, const vk::raii::Sampler& sampler) {
+// Whether the device's decode of an 8-bit texel channel is the model's level for every
+// value, in both input formats of `texture`: unorm, v / 255 rounded to float32 (kUnorm8);
+// sRGB, the CPU's kSrgb8. It is a function of 256 inputs, so checking each one decides it:
+// where it holds, the model takes a fetched value as the texel's level (spec deviceDecode)
+// instead of computing the level from the byte (ppaa.glsl's texelDecoded).
+// SSFX_GPU_DEVICE_DECODE=0 turns it off, for the tests of the other paths and for measurements.
+bool decodeIsExact(vkx::Context& c, const vk::raii::Sampler& sampler, TextureFormat texture) {
     if (const char* v = std::getenv("SSFX_GPU_DEVICE_DECODE"); v && std::string_view(v) == "0") return false;
-    return probedOnce(c, "unorm decode", [&] {
-        for (const vk::Format f : {vk::Format::eR8G8B8A8Unorm, vk::Format::eB8G8R8A8Unorm})
-            if (!everyChannel(probeDecode(c, sampler, f).decoded, f, [](float value, std::uint8_t byte) {
-                    return std::bit_cast<std::uint32_t>(value) == std::bit_cast<std::uint32_t>(kUnorm8[byte]);
+    const bool srgb = texture == TextureFormat::Srgb;
+    return probedOnce(c, srgb ? "srgb decode" : "unorm decode", [&] {
+        const float* levels = decodeTable(texture);
+        for (const vk::Format f : {srgb ? vk::Format::eR8G8B8A8Srgb : vk::Format::eR8G8B8A8Unorm,
+                                   srgb ? vk::Format::eB8G8R8A8Srgb : vk::Format::eB8G8R8A8Unorm})
+            if (!everyChannel(probeDecode(c, sampler, f).decoded, f, [&](float value, std::uint8_t byte) {
+                    return std::bit_cast<std::uint32_t>(value) == std::bit_cast<std::uint32_t>(levels[byte]);
                 }))
                 return false;
         return true;
@@ -320,21 +323,6 @@ bool srgbBytesRecovered(vkx::Context& c, const vk::raii::Sampler& sampler) {
         for (const vk::Format f : {vk::Format::eR8G8B8A8Srgb, vk::Format::eB8G8R8A8Srgb})
             if (!everyChannel(probeDecode(c, sampler, f).levels, f,
                               [](float level, std::uint8_t byte) { return level == float(byte); }))
-                return false;
-        return true;
-    });
-}
-
-// texture=srgb: whether the device's sRGB decode of every 8-bit value is the CPU's kSrgb8
-// float, in both sRGB formats; then the model takes fetched values as the decoded levels
-// (spec deviceDecode), as for unorm. SSFX_GPU_DEVICE_DECODE=0 turns it off.
-bool srgbDecodeIsExact(vkx::Context& c, const vk::raii::Sampler& sampler) {
-    if (const char* v = std::getenv("SSFX_GPU_DEVICE_DECODE"); v && std::string_view(v) == "0") return false;
-    return probedOnce(c, "srgb decode", [&] {
-        for (const vk::Format f : {vk::Format::eR8G8B8A8Srgb, vk::Format::eB8G8R8A8Srgb})
-            if (!everyChannel(probeDecode(c, sampler, f).decoded, f, [](float value, std::uint8_t byte) {
-                    return std::bit_cast<std::uint32_t>(value) == std::bit_cast<std::uint32_t>(kSrgb8[byte]);
-                }))
                 return false;
         return true;
     });
@@ -735,7 +723,7 @@ AaPass::AaPass(std::shared_ptr<vkx::Context> ctx, std::string_view method, const
                             "back (gpu.md, \"sRGB textures\"); use --backend cpu",
                             m.method->id));
         m.deviceDecode = sampling == Sampling::Model &&
-                         (m.srgb ? srgbDecodeIsExact(c, m.sampler) : unormDecodeIsExact(c, m.sampler));
+                         decodeIsExact(c, m.sampler, m.srgb ? TextureFormat::Srgb : TextureFormat::Unorm);
         spec.deviceDecode = m.deviceDecode ? 1 : 0;
         // The tables: the x4 resolve's weights, the CPU's own floats; texture=srgb's decoded
         // levels and encode thresholds.
