@@ -15,8 +15,9 @@
 # Each stage has its own time limit and a failing stage does not stop the others; the limits
 # add up to 9 minutes (a device call allows 10; run it with timeout_s=580), and a session's
 # 15 minutes of device time leave no room for a second full run: try the script here first
-# (SSFX_DEVICE_QUICK=1 on lavapipe), and on the device rerun only a failed stage if need be. Everything printed goes to OUT/checks.log; the stages' JSON
-# and markdown to OUT/results.tar.gz (a device call returns at most 8 files).
+# (SSFX_DEVICE_QUICK=1 on lavapipe), and on the device rerun only a failed stage if need be.
+# Everything printed goes to OUT/checks.log; the stages' JSON and markdown to
+# OUT/results.tar.gz (a device call returns at most 8 files).
 #
 # Usage, on the device from the repository root: bash scripts/device_checks.sh
 #   here first: make build && scripts/device_bundle.sh   (then the device call carries .device)
