@@ -26,15 +26,9 @@ if [ -d "$ROOT/../shared/assets" ]; then
     "$S" deferred --backend vulkan --lookup "$lookup" --scene "$SPONZA" --size 1920x1080 --ss 4 --stall 4000 \
       --brute-force --out "$OUT/sponza_$lookup" "$@"
   done
-  # The frame: 16 frames through the views atrium -> arcade -> upper (scenes/sponza.json's).
-  cat >"$OUT/sponza_path.json" <<'JSON'
-{"keyframes": [
-  {"position": [-13.0, 1.8, 0.0], "target": [5.0, 4.0, 0.0], "fov": 60},
-  {"position": [-8.0, 1.6, -4.5], "target": [6.0, 3.0, -3.5], "fov": 60},
-  {"position": [10.0, 7.5, 4.0], "target": [-6.0, 3.0, -2.0], "fov": 60}]}
-JSON
+  # The frame: 16 frames through the views atrium -> arcade -> upper (scenes/sponza_path.json).
   for schedule in pixel list; do
-    "$S" frame --scene "$SPONZA" --path "$OUT/sponza_path.json" --frames 16 --size 1920x1080 --ss 4 --ao sao \
+    "$S" frame --scene "$SPONZA" --path "$ROOT/scenes/sponza_path.json" --frames 16 --size 1920x1080 --ss 4 --ao sao \
       --ao-param guardBand=64 --aa ddaa2 --schedule "$schedule" --profile "$OUT/frame_sponza_$schedule.json" \
       -o "$OUT/frame_sponza_$schedule.apng" "$@"
   done

@@ -104,13 +104,6 @@ for name, wh in (("photo", sys.argv[3]), ("photo_big", sys.argv[4])):
             out.paste(src, (x, y))
     out.save(f"{sys.argv[2]}/{name}.png")
 PY
-# Sponza's three views (scenes/sponza.json's) as a camera path for the frame.
-cat >"$SCRATCH/sponza_path.json" <<'JSON'
-{"keyframes": [
-  {"position": [-13.0, 1.8, 0.0], "target": [5.0, 4.0, 0.0], "fov": 60},
-  {"position": [-8.0, 1.6, -4.5], "target": [6.0, 3.0, -3.5], "fov": 60},
-  {"position": [10.0, 7.5, 4.0], "target": [-6.0, 3.0, -2.0], "fov": 60}]}
-JSON
 
 # 3. #34: the anti-aliasing passes, both sampling modes, three kinds of content, two sizes.
 aa() {  # aa NAME SIZE_ARGS...: both sampling modes on one image
@@ -169,7 +162,7 @@ deferred_all() {
   done
   for schedule in pixel list; do
     echo "== the frame on Sponza, $frameSize, m=4, SAO, DDAA2, schedule $schedule"
-    "$S" frame $DEVOPT --scene "$sponza" --path "$SCRATCH/sponza_path.json" --frames "$frames" \
+    "$S" frame $DEVOPT --scene "$sponza" --path "$ROOT/scenes/sponza_path.json" --frames "$frames" \
       --size "$frameSize" --ss 4 --ao sao --ao-param guardBand=64 --aa ddaa2 --schedule "$schedule" \
       --profile "$R/frame_sponza_$schedule.json" -o "$SCRATCH/frame_sponza_$schedule.apng"
   done

@@ -134,7 +134,7 @@ struct GtaoLanes {
     V Pixels(int x, int y) const {
         const float kPi = 3.14159265358979323846f;
         const V one = hn::Set(df, 1.0f), zero = hn::Zero(df);
-        const auto xi = hn::Add(hn::Set(di, x), hn::Iota(di, 0));
+        const auto xi = ssfx::HWY_NAMESPACE::IotaFrom(di, x), yi = hn::Set(di, y);
         const V t0 = hn::LoadU(df, in.chain + std::ptrdiff_t(y) * in.width + x);
         const auto sky = hn::IsInf(t0);
         // Step 3: the pull against depth imprecision; C and V use it.
@@ -225,7 +225,6 @@ struct GtaoLanes {
                                     hn::IfThenElseZero(hn::RebindMask(di, hn::Ge(q, hn::Set(df, in.lodSquared[level]))),
                                                        hn::Set(di, 1)));
                     const auto qx = hn::NearestInt(sx), qy = hn::NearestInt(sy);
-                    const auto yi = hn::Set(di, y);
                     pxP[b] = hn::Add(xi, qx), pyP[b] = hn::Add(yi, qy);
                     pxN[b] = hn::Sub(xi, qx), pyN[b] = hn::Sub(yi, qy);
                     tsP[b] = Fetch(pxP[b], pyP[b], m);

@@ -283,6 +283,12 @@ T probedOnce(vkx::Context& c, std::string_view property, Check check) {
     return found;
 }
 
+// probeDecode's result for format f, dispatched once per device and driver: the properties
+// below (exact decode, recovered bytes, the decode table) read the same probes.
+DecodeProbe decodeOf(vkx::Context& c, const vk::raii::Sampler& sampler, vk::Format f) {
+    return probedOnce(c, fmt::format("decode {}", vk::to_string(f)), [&] { return probeDecode(c, sampler, f); });
+}
+
 // For each texel of the probe, whether channel k's value passes `ok(probed value, the byte)`.
 template <class Ok>
 bool everyChannel(const float* values, vk::Format f, Ok ok) {
@@ -306,7 +312,7 @@ bool decodeIsExact(vkx::Context& c, const vk::raii::Sampler& sampler, TextureFor
         const float* levels = decodeTable(texture);
         for (const vk::Format f : {srgb ? vk::Format::eR8G8B8A8Srgb : vk::Format::eR8G8B8A8Unorm,
                                    srgb ? vk::Format::eB8G8R8A8Srgb : vk::Format::eB8G8R8A8Unorm})
-            if (!everyChannel(probeDecode(c, sampler, f).decoded, f, [&](float value, std::uint8_t byte) {
+            if (!everyChannel(decodeOf(c, sampler, f).decoded, f, [&](float value, std::uint8_t byte) {
                     return std::bit_cast<std::uint32_t>(value) == std::bit_cast<std::uint32_t>(levels[byte]);
                 }))
                 return false;
@@ -321,7 +327,7 @@ bool decodeIsExact(vkx::Context& c, const vk::raii::Sampler& sampler, TextureFor
 bool srgbBytesRecovered(vkx::Context& c, const vk::raii::Sampler& sampler) {
     return probedOnce(c, "srgb bytes", [&] {
         for (const vk::Format f : {vk::Format::eR8G8B8A8Srgb, vk::Format::eB8G8R8A8Srgb})
-            if (!everyChannel(probeDecode(c, sampler, f).levels, f,
+            if (!everyChannel(decodeOf(c, sampler, f).levels, f,
                               [](float level, std::uint8_t byte) { return level == float(byte); }))
                 return false;
         return true;
@@ -344,7 +350,7 @@ std::vector<float> probeSrgbDecodeTable(vkx::Context& c, const vk::raii::Sampler
         std::array<std::uint32_t, 256> bits{};
         std::array<bool, 256> seen{};
         for (const vk::Format f : {vk::Format::eR8G8B8A8Srgb, vk::Format::eB8G8R8A8Srgb}) {
-            const DecodeProbe p = probeDecode(c, sampler, f);
+            const DecodeProbe p = decodeOf(c, sampler, f);
             bool same = true;
             everyChannel(p.decoded, f, [&](float value, std::uint8_t byte) {
                 const std::uint32_t b = std::bit_cast<std::uint32_t>(value);
