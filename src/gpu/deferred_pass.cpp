@@ -152,7 +152,8 @@ struct AdaptiveShading::Impl {
     vkx::Image textures;  // the device sampler's (render::uploadTextureArray)
     vk::raii::Sampler nearest{nullptr}, hardware{nullptr};
     int hardwareAnisotropy = -1;  // the hardware sampler's maxAnisotropy
-    std::unique_ptr<vkx::ComputePipeline> first, evaluate;
+    std::unique_ptr<vkx::ComputePipeline> first;
+    std::array<std::unique_ptr<vkx::ComputePipeline>, 5> evaluate;  // per m (made on first use)
     std::array<std::unique_ptr<vkx::ComputePipeline>, 3> rest;
     std::array<std::unique_ptr<vkx::ComputePipeline>, 4> list;  // enqueue, args, shade, resolve
     vkx::Buffer setupBuffer, lightBuffer, counters;
@@ -209,16 +210,7 @@ struct AdaptiveShading::Impl {
                                       vk::SamplerAddressMode::eClampToEdge, vk::SamplerAddressMode::eClampToEdge,
                                       vk::SamplerAddressMode::eClampToEdge, 0.0f, false, 1.0f, false,
                                       vk::CompareOp::eNever, 0.0f, VK_LOD_CLAMP_NONE));
-            const std::int32_t hardwareLookup = lookup == Sampling::Hardware ? 1 : 0;
-            auto make = [&](std::span<const std::uint32_t> spirv, std::int32_t variant) {
-                const std::array<std::int32_t, 2> values{hardwareLookup, variant};
-                const std::array<vk::SpecializationMapEntry, 2> entries{vk::SpecializationMapEntry(0, 0, 4),
-                                                                        vk::SpecializationMapEntry(1, 4, 4)};
-                const vk::SpecializationInfo info(2, entries.data(), sizeof(values), values.data());
-                return std::make_unique<vkx::ComputePipeline>(c, spirv, kBindings, 0, &info, true);
-            };
             first = make(kFirst, 0);
-            evaluate = make(kEvaluate, 0);
             for (int v = 0; v < 3; ++v) rest[std::size_t(v)] = make(kRest, v);
             for (int stage = 0; stage < 4; ++stage) list[std::size_t(stage)] = make(kList, stage);
             listArgs = c.createBuffer(
@@ -241,6 +233,16 @@ struct AdaptiveShading::Impl {
                                 A::eTransferWrite, S::eComputeShader, A::eShaderRead);
             });
         });
+    }
+
+    // A pass's pipeline: specialization constants 0 (the lookup) and 1 (`variant`: the rest
+    // pass's variant, the list's stage, the evaluate pass's m).
+    std::unique_ptr<vkx::ComputePipeline> make(std::span<const std::uint32_t> spirv, std::int32_t variant) const {
+        const std::array<std::int32_t, 2> values{lookup == Sampling::Hardware ? 1 : 0, variant};
+        const std::array<vk::SpecializationMapEntry, 2> entries{vk::SpecializationMapEntry(0, 0, 4),
+                                                                vk::SpecializationMapEntry(1, 4, 4)};
+        const vk::SpecializationInfo info(2, entries.data(), sizeof(values), values.data());
+        return std::make_unique<vkx::ComputePipeline>(*ctx, spirv, kBindings, 0, &info, true);
     }
 
     // The model's texel buffer: level l of every layer after the previous levels, RGBA8 in one
@@ -397,7 +399,9 @@ struct AdaptiveShading::Impl {
         // Timer intervals: first 1, evaluate 2, rest 3; brute force 1.
         if (variant != kBruteForce) {
             pass(*first, 1);
-            pass(*evaluate, 2);
+            auto& evaluateM = evaluate[std::size_t(g.m)];
+            if (!evaluateM) evaluateM = make(kEvaluate, g.m);
+            pass(*evaluateM, 2);
         }
         if (!sampleList) {
             pass(*rest[std::size_t(variant)], variant == kBruteForce ? 1 : 3);

@@ -115,13 +115,14 @@ vec4 textureGradModel(int layer, vec2 uv, vec2 dx, vec2 dy) {
 // ---- one sample -------------------------------------------------------------------------
 
 // The CPU's SampleShader::linearDepth's -z: -c0 / (d c1 + c2) from the host's doubles, in
-// float pairs and rounded once. +infinity for background.
-float linearDepth(ivec2 s) {
-    if (texelFetch(gIds, s, 0).x == kNoMaterial) return 1.0 / 0.0;
-    const float d = texelFetch(gDepth, s, 0).r;
+// float pairs and rounded once. +infinity for background. linearDepthOf: from the sample's
+// material id and hardware depth d, already read.
+float linearDepthOf(uint id, float d) {
+    if (id == kNoMaterial) return 1.0 / 0.0;
     const vec2 den = pairAdd(pairMul(vec2(d, 0.0), vec2(setup.c1Hi, setup.c1Lo)), vec2(setup.c2Hi, setup.c2Lo));
     return -pairDivToFloat(vec2(setup.c0Hi, setup.c0Lo), den);
 }
+float linearDepth(ivec2 s) { return linearDepthOf(texelFetch(gIds, s, 0).x, texelFetch(gDepth, s, 0).r); }
 
 // An artificial cost per sample (ShadingParams::stall): xorshift steps the compiler must
 // keep; a state of 0, which xorshift never reaches from an odd seed, would change the colour.
