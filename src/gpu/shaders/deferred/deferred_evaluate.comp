@@ -5,8 +5,10 @@
 // from zero and clamped to [1, m^2]. The CPU's adaptiveSupersampling, Evaluate step.
 //
 // The pipeline is made per m (kM): every loop has a constant trip count and every fetch a
-// constant offset. With every sample's id, depth and normal read unconditionally, that took
-// the pass to about 0.85 of its time on lavapipe; either change alone did not (docs/gpu.md).
+// constant offset, so a compiler can unroll the loops and keep depths[] in registers. With
+// every sample's id, depth and normal read unconditionally, that took the pass to about 0.9
+// of its time on lavapipe, near that machine's noise; either change alone did not
+// (docs/gpu.md).
 #include "deferred.glsl"
 
 layout(constant_id = 1) const int kM = 4;  // the G-buffer's m (1 .. 4)
