@@ -393,6 +393,29 @@ std::unique_ptr<vkx::ComputePipeline> makePipeline(const vkx::Context& c, std::s
 
 // The edge pass's most work groups on a CPU device (aa_constants.h: edgeGroups).
 constexpr std::int32_t kCpuEdgeGroups = 256;
+
+// The loop iterations one edge pixel's computation may run (the shaders' loops with runtime
+// bounds), beyond the edge pass's own loop over the list: fxaa3d's walk (fxaa3d.comp, steps 1
+// to 11) and ddaa2's search (ddaa2.comp: searchRounds rounds, counted with their kBatch = 3
+// reads a side as if not unrolled).
+int edgeLoopIterations(const AaParams& params) {
+    if (std::holds_alternative<aa::Fxaa3dParams>(params)) return 11;
+    if (const auto* p = std::get_if<aa::Ddaa2Params>(&params)) return p->searchRounds * (1 + 2 * 3);
+    return 0;
+}
+
+// The edge pass's fewest work groups for a list of up to `pixels`, so that no invocation runs
+// more loop iterations than the device allows (vkx::Context::maxShaderLoopIterations; budget 0:
+// no limit). lavapipe ends every loop of an invocation silently once its 65535 iterations are
+// spent: with 256 groups, fxaa3d would lose edge pixels from about 90 million listed pixels
+// (docs/gpu.md). A tenth of the budget is left for the short loops a compiler may keep.
+std::uint32_t edgeGroupsFor(vk::DeviceSize pixels, int loopsPerPixel, std::uint32_t budget) {
+    if (budget == 0) return 0;
+    const vk::DeviceSize perInvocation =
+        std::max<vk::DeviceSize>(1, (budget - budget / 10) / vk::DeviceSize(1 + loopsPerPixel));
+    const vk::DeviceSize perGroup = perInvocation * SSFX_AA_EDGE_GROUP;
+    return std::uint32_t(std::min<vk::DeviceSize>((pixels + perGroup - 1) / perGroup, SSFX_AA_EDGE_MAX_GROUPS));
+}
 // EdgePath::Auto's choice per kind of device (docs/gpu.md: measured on lavapipe and an H200).
 constexpr EdgePath kCpuEdgePath = EdgePath::List;
 constexpr EdgePath kGpuEdgePath = EdgePath::OnePass;
@@ -476,6 +499,10 @@ struct AaPass::Impl {
     // Larger images run the method in one pass (stage 0, made when first needed): the list
     // must fit in one storage-buffer descriptor (maxStorageBufferRange).
     vk::DeviceSize maxListPixels = 0;
+    // Loop iterations an edge pixel's computation may run, and the device's loop budget
+    // (edgeGroupsFor).
+    int edgeLoops = 0;
+    std::uint32_t loopBudget = 0;
     std::unique_ptr<vkx::ComputePipeline> onePass, onePassPairs;  // coordinate reads; ddaa2's pair reads
     detail::AaSpecialization spec{};
     vkx::Image scratch;  // ddaa2p: ddaa2's 2x output
@@ -558,6 +585,8 @@ struct AaPass::Impl {
         }
         ensureEdges(pixels);
         ensureLuma(lumaPlaneWidth(c.width), std::uint32_t(c.height));
+        AaConstants budgeted = c;
+        budgeted.edgeGroupsMin = std::int32_t(edgeGroupsFor(pixels, edgeLoops, loopBudget));
         using S = vk::PipelineStageFlagBits;
         using A = vk::AccessFlagBits;
         // Before this recording's writes, an earlier recording's reads of the list and the luma
@@ -571,15 +600,16 @@ struct AaPass::Impl {
                                               VK_WHOLE_SIZE);
         // The luma plane is written whole by the luma pass: its old contents are dropped.
         cmd.pipelineBarrier(S::eTransfer | S::eComputeShader, S::eComputeShader, {}, {}, cleared, lumaDiscarded());
-        dispatch(*lumaPass, cmd, in, inLayout, out, c, *edges.buffer, Grid::LumaTexels, "luma");
+        dispatch(*lumaPass, cmd, in, inLayout, out, budgeted, *edges.buffer, Grid::LumaTexels, "luma");
         // The luma plane, before the classify pass reads it.
         const vk::MemoryBarrier lumaWritten(A::eShaderWrite, A::eShaderRead | A::eShaderWrite);
         cmd.pipelineBarrier(S::eComputeShader, S::eComputeShader, {}, lumaWritten, {}, {});
-        dispatch(*pipeline, cmd, in, inLayout, out, c, *edges.buffer, Grid::LumaTexels, "classify");
+        dispatch(*pipeline, cmd, in, inLayout, out, budgeted, *edges.buffer, Grid::LumaTexels, "classify");
         // The list and the unchanged pixels, before the indirect dispatch and the edge pixels.
         const vk::MemoryBarrier listed(A::eShaderWrite, A::eIndirectCommandRead | A::eShaderRead | A::eShaderWrite);
         cmd.pipelineBarrier(S::eComputeShader, S::eDrawIndirect | S::eComputeShader, {}, listed, {}, {});
-        dispatch(edgePipeline(c.width, c.height), cmd, in, inLayout, out, c, *edges.buffer, Grid::EdgeList, "edges");
+        dispatch(edgePipeline(c.width, c.height), cmd, in, inLayout, out, budgeted, *edges.buffer, Grid::EdgeList,
+                 "edges");
         listedOf = pixels;
     }
 
@@ -764,6 +794,8 @@ AaPass::AaPass(std::shared_ptr<vkx::Context> ctx, std::string_view method, const
             // (lavapipe at 1920x1080: fxaa3c's edge pass about half as long with 256 groups
             // as with one group per 64 listed pixels; docs/gpu.md.)
             if (cpuDevice) first.edgeGroups = kCpuEdgeGroups;
+            // Tests of the loop budget lower it (SSFX_GPU_EDGE_GROUPS; docs/gpu.md).
+            if (const char* v = std::getenv("SSFX_GPU_EDGE_GROUPS")) first.edgeGroups = std::max(1, std::atoi(v));
             // Auto: the list where a driver runs shaders as masked SIMD code on a CPU (it runs
             // the edge computation for every lane group holding one edge pixel), one pass on a
             // GPU (no atomics, no plane, no barriers between dispatches). docs/gpu.md gives the
@@ -775,6 +807,8 @@ AaPass::AaPass(std::shared_ptr<vkx::Context> ctx, std::string_view method, const
             m.spec = spec;
             const vk::DeviceSize range = c.physical.getProperties().limits.maxStorageBufferRange;
             m.maxListPixels = (range - 16) / 4;
+            m.edgeLoops = edgeLoopIterations(m.params);
+            m.loopBudget = c.maxShaderLoopIterations;
             // A smaller limit for tests of the one-pass path (docs/gpu.md).
             if (const char* v = std::getenv("SSFX_GPU_EDGE_LIST_MAX_PIXELS"))
                 m.maxListPixels = std::min<vk::DeviceSize>(m.maxListPixels, std::strtoull(v, nullptr, 10));

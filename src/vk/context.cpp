@@ -130,6 +130,13 @@ std::vector<DeviceInfo> enumerate(const vk::raii::Instance& instance) {
     return out;
 }
 
+// Context::maxShaderLoopIterations: llvmpipe's loop limiter (Mesa, gallivm's
+// LP_MAX_TGSI_LOOP_ITERATIONS = 65535, shared by every loop of a shader invocation).
+std::uint32_t shaderLoopLimit(const vk::PhysicalDeviceProperties& props) {
+    const std::string_view name = props.deviceName.data();
+    return props.deviceType == vk::PhysicalDeviceType::eCpu && name.starts_with("llvmpipe") ? 65535u : 0u;
+}
+
 }  // namespace
 
 // The debug-utils callback appends to the context's messages under its mutex.
@@ -216,6 +223,7 @@ Context::Context(const ContextOptions& options) : context(makeLoader()) {
         const auto supported = physical.getFeatures();
         anisotropy = supported.samplerAnisotropy;
         maxAnisotropy = props.limits.maxSamplerAnisotropy;
+        maxShaderLoopIterations = shaderLoopLimit(props);
 
         const float priority = 1.0f;
         const vk::DeviceQueueCreateInfo queueInfo({}, queueFamily, 1, &priority);
@@ -266,6 +274,7 @@ Context::Context(const External& e, BorrowTag) : context(makeLoader()) {
                                VK_API_VERSION_MINOR(props.apiVersion), VK_API_VERSION_PATCH(props.apiVersion));
         info.compute = true;
         info.maxImageDimension2D = int(props.limits.maxImageDimension2D);
+        maxShaderLoopIterations = shaderLoopLimit(props);
         const auto families = physical.getQueueFamilyProperties();
         if (queueFamily >= families.size() || !(families[queueFamily].queueFlags & vk::QueueFlagBits::eCompute))
             throw Error(fmt::format("vkx::Context::borrow: queue family {} has no compute", queueFamily));

@@ -200,6 +200,34 @@ TEST(GpuModelParityCoordinateReads, SearchReadsAtCoordinatesGiveTheCpuBytes) {
                        {Case{"random 64x48", 64, 48}, Case{"random 37x23", 37, 23}}, 60);
 }
 
+// lavapipe ends every loop of a shader invocation once its loops together have run 65535
+// iterations (vkx::Context::maxShaderLoopIterations), without an error. The edge pass's
+// invocations loop over the list, so the pass gives it enough work groups that the method's
+// own loops fit (edgeGroupsFor). SSFX_GPU_EDGE_GROUPS=1 leaves a single group of 64
+// invocations to that rule: on these stripes (every pixel an edge, every fxaa3d walk its 11
+// steps) each invocation would run 8192 list entries, about 98 000 loop iterations, where
+// fxaa3d lost the entries past the budget (before the rule: 260 096 of the 524 288 pixels differed).
+// The budget is llvmpipe's; elsewhere the test checks the same bytes with one group.
+TEST(GpuModelParityLoopBudget, OneGroupOverAnEdgeDenseImageGivesTheCpuBytes) {
+    REQUIRE_DEVICE();
+    ImageRgba8 in(1024, 512);
+    for (int y = 0; y < in.height(); ++y)
+        for (int x = 0; x < in.width(); ++x)
+            in(x, y) = (y / 2) % 2 ? Rgba8{220, 210, 200, 255} : Rgba8{30, 40, 50, 255};
+    ASSERT_EQ(setenv("SSFX_GPU_EDGE_GROUPS", "1", 1), 0);
+    for (const char* id : {"fxaa3d", "ddaa2"}) {
+        const MethodInfo& m = methodById(id);
+        gpu::AaPass pass(context(), m.id, {}, gpu::Sampling::Model, gpu::EdgePath::List);
+        const ImageRgba8 cpu = m.run(in.view(), {}, Exec{});
+        const Diff d = compare(pass.run(in.view()), cpu);
+        EXPECT_EQ(d.pixels, 0) << id << " with one edge group: " << d.pixels << " pixels differ, by up to "
+                               << d.largest;
+        EXPECT_GT(pass.lastEdgeShare(), 0.9) << id << ": the stripes must be edges";
+    }
+    unsetenv("SSFX_GPU_EDGE_GROUPS");
+    expectNoValidationMessages();
+}
+
 // ddaa2's search issues a round's reads before testing them on a CPU device and one at a
 // time on a GPU (spec batchedSearch); SSFX_GPU_BATCHED_SEARCH forces either: the same bytes.
 TEST(GpuModelParityBatchedSearch, BothSearchOrdersGiveTheCpuBytes) {

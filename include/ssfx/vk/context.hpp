@@ -66,7 +66,12 @@ public:
     bool anisotropy = false;
     float maxAnisotropy = 1.0f;
     bool pushDescriptors = false;  //!< VK_KHR_push_descriptor is enabled (the GPU effects need it)
-    bool borrowed = false;         //!< instance, device and queue are the caller's (borrow())
+    //! The most loop iterations one shader invocation may run, all its loops together, before
+    //! the driver silently ends them; 0 where none is known. llvmpipe (lavapipe): 65535, Mesa's
+    //! LP_MAX_TGSI_LOOP_ITERATIONS (its loop limiter, set at a shader's start and counted down by
+    //! every loop's every iteration). Passes whose invocations loop size their dispatches by it.
+    std::uint32_t maxShaderLoopIterations = 0;
+    bool borrowed = false;  //!< instance, device and queue are the caller's (borrow())
 
     //! Validation messages (warnings and errors) since creation; empty when validation is off.
     std::vector<std::string> validationMessages() const;

@@ -33,7 +33,8 @@
     X(float, strength) /* ddaa1, ddaa2 */                                                  \
     X(float, maxDiffusion)                                                                 \
     X(float, ridgeFactor)                                                                  \
-    X(int, searchRounds) /* ddaa2 */
+    X(int, searchRounds)  /* ddaa2 */                                                      \
+    X(int, edgeGroupsMin) /* edge pass: at least this many groups (a loop budget; aa_pass.cpp) */
 
 // The specialization constants, fixed when a pass's pipeline is made: X(constant_id, name,
 // default), each a 32-bit int. The choices that select code live here, not in the push

@@ -28,14 +28,16 @@ shared uint groupEdges[SSFX_AA_GROUP * SSFX_AA_GROUP];
 shared uint groupEdgeCount;
 
 // Appends the edge pixels among `n` candidates (`edge[i]`: pixel (x0 + i, y)) with one
-// atomic: their slots are consecutive. groupsX = min(ceil(count / SSFX_AA_EDGE_GROUP),
-// spec_edgeGroups) as the list grows.
+// atomic: their slots are consecutive. groupsX = min(ceil(count / SSFX_AA_EDGE_GROUP), most)
+// as the list grows, most = spec_edgeGroups or more where the device's loop budget needs
+// more (pc.edgeGroupsMin), at most SSFX_AA_EDGE_MAX_GROUPS.
 void appendEdges(int x0, int y, bool edge[SSFX_AA_LUMA_PACK]) {
     uint n = 0u;
     for (int i = 0; i < SSFX_AA_LUMA_PACK; ++i) n += edge[i] ? 1u : 0u;
     if (n == 0u) return;
     uint slot = atomicAdd(edges.count, n);
-    const uint group = uint(SSFX_AA_EDGE_GROUP), most = uint(spec_edgeGroups);
+    const uint group = uint(SSFX_AA_EDGE_GROUP);
+    const uint most = min(max(uint(spec_edgeGroups), uint(pc.edgeGroupsMin)), uint(SSFX_AA_EDGE_MAX_GROUPS));
     const uint before = min((slot + group - 1u) / group, most), after = min((slot + n + group - 1u) / group, most);
     if (after > before) atomicAdd(edges.groupsX, after - before);
     for (int i = 0; i < SSFX_AA_LUMA_PACK; ++i)
