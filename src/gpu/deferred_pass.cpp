@@ -305,6 +305,27 @@ struct AdaptiveShading::Impl {
         scratch.w = w, scratch.h = h;
     }
 
+    // lavapipe ends every loop of an invocation silently once its loops together have run
+    // 65535 iterations (vkx::Context::maxShaderLoopIterations): a run whose pixels may need
+    // more is refused rather than shaded wrong. Per shaded sample at most: the stall's
+    // iterations (16 steps each, deferred.glsl), the lights, the quad's boundary test (6), the
+    // model's anisotropic probes and the sample loop's own; per pixel m^2 samples (brute
+    // force, or k = m^2), and a margin for the tiled ranking and the loops a compiler keeps.
+    void checkLoopBudget(int m, const deferred::ShadingParams& sp, int lightCount) const {
+        const std::int64_t budget = ctx->maxShaderLoopIterations;
+        if (budget == 0) return;
+        const std::int64_t n = std::int64_t(m) * m, margin = 128;
+        const std::int64_t perSample = 6 + lightCount + sp.maxAnisotropy + 16 + 1;  // + 15: the stall's rest
+        const std::int64_t needed = n * (sp.stall / 16 + perSample) + margin;
+        if (needed <= budget) return;
+        const std::int64_t most = std::max<std::int64_t>(0, 16 * ((budget - margin) / n - perSample));
+        throw Error(fmt::format(
+            "stall {}: on {} a shader invocation runs at most {} loop iterations in all (Mesa's loop limiter; past "
+            "it the results are wrong), and a pixel of this run may need {} (m = {}, {} lights); at m = {} the "
+            "stall can be at most {}",
+            sp.stall, ctx->info.name, budget, needed, m, lightCount, m, most));
+    }
+
     // The setup block of one run.
     void writeSetup(const DeviceGBuffer& g, const deferred::ShadingParams& sp, const deferred::AdaptiveParams* ap) {
         const int sw = g.m * g.width, sh = g.m * g.height;
@@ -331,6 +352,7 @@ struct AdaptiveShading::Impl {
         for (const deferred::CameraLight& l : deferred::cameraLights(lights, g.view))
             data.push_back({glm::vec4(l.vector, l.point ? 1.0f : 0.0f), glm::vec4(l.color, 0.0f)});
         s.lightCount = int(data.size());
+        checkLoopBudget(g.m, sp, s.lightCount);
         if (data.empty()) data.push_back({});
         const vk::DeviceSize bytes = data.size() * sizeof(LightData);
         if (lightBuffer.size < bytes)

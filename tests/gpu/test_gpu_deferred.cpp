@@ -289,6 +289,33 @@ TEST(GpuDeferred, AllSamplesAreBruteForceBitForBit) {
     expectNoValidationMessages(ctx);
 }
 
+// lavapipe ends an invocation's loops once they have run 65535 iterations together
+// (vkx::Context::maxShaderLoopIterations). The stall runs 16 of its steps a loop iteration, so
+// brute force at m = 4 with a stall of 4200 (16 x 4200 single steps a pixel: lavapipe cut
+// the sample loop short, 3058 of 3072 pixels wrong at 64 x 48, before) is the CPU's; on a
+// device with such a budget, a stall past it is refused by name, not shaded wrong.
+TEST(GpuDeferred, StallsWithinTheLoopBudgetAreTheCpusAndOthersAreRefused) {
+    REQUIRE_DEVICE();
+    auto ctx = gpuContext();
+    const scene::Scene scene = scene::atrium();
+    gpu::AdaptiveShading shading(ctx, scene);
+    const scene::GBuffer g = test::handMadeGBuffer(scene, 9, 7, 4, true);
+    deferred::ShadingParams sp;
+    sp.stall = 4200;
+    EXPECT_LE(diff(shading.bruteForce(g, sp).image, deferred::bruteForceSupersampling(scene, g, sp).image).max, 1e-4);
+    if (ctx->maxShaderLoopIterations > 0) {
+        sp.stall = 100000;
+        try {
+            shading.bruteForce(g, sp);
+            ADD_FAILURE() << "no error for a stall past the loop budget";
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find("65535 loop iterations"), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find("the stall can be at most"), std::string::npos) << e.what();
+        }
+    }
+    expectNoValidationMessages(ctx);
+}
+
 TEST(GpuDeferred, BadInputIsRefusedByName) {
     REQUIRE_DEVICE();
     auto ctx = gpuContext();

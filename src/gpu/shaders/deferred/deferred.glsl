@@ -126,13 +126,18 @@ float linearDepth(ivec2 s) { return linearDepthOf(texelFetch(gIds, s, 0).x, texe
 
 // An artificial cost per sample (ShadingParams::stall): xorshift steps the compiler must
 // keep; a state of 0, which xorshift never reaches from an odd seed, would change the colour.
+// Sixteen steps a loop iteration: lavapipe ends an invocation's loops after 65535 iterations
+// in all (vkx::Context::maxShaderLoopIterations; deferred_pass.cpp checks a run fits).
+uint xorshift(uint s) {
+    s ^= s << 13;
+    s ^= s >> 17;
+    return s ^ (s << 5);
+}
+uint xorshift4(uint s) { return xorshift(xorshift(xorshift(xorshift(s)))); }
 vec3 stallFor(uint index, vec3 colour) {
     uint s = index | 1u;
-    for (int k = 0; k < setup.stall; ++k) {
-        s ^= s << 13;
-        s ^= s >> 17;
-        s ^= s << 5;
-    }
+    for (int k = 0; k < setup.stall / 16; ++k) s = xorshift4(xorshift4(xorshift4(xorshift4(s))));
+    for (int k = 0; k < setup.stall % 16; ++k) s = xorshift(s);
     return s == 0u ? colour + 1.0 : colour;
 }
 
