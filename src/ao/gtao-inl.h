@@ -1,14 +1,15 @@
 // Highway body of GTAO's main pass (spec gtao.md section 5; the scalar oracle is
 // GtaoMain::pixel in gtao_pixel.hpp, whose operations the lanes follow one for one): one lane
 // per pixel along a row, every sample gathered from the depth chain stored in one buffer.
-// What differs from the oracle: the cosines, sines, arc cosines and the final power come from
-// Highway's float approximations (a few ulps) instead of libm, and with
+// What differs from the oracle: the arc cosines and the final power come from Highway's float
+// approximations (a few ulps) instead of libm; each sample's position, distance and weight use
+// fused multiply-adds; the slice directions and step spacings are the oracle's own bits, read
+// from the setup's noise planes (GtaoNoisePlanes; without them, Highway's cosine and sine); with
 // the exact arc cosine sin(gamma), cos(gamma +- pi/2) and the integral's cos(2 h - gamma) come
 // from the cosines they are functions of (sqrt(1 - c^2), angle-sum identities); the falloff
 // multiplies by 1 / (f Re), the level compares |s|^2 with the squared thresholds of
-// round(log2 |s| - mipOffset) instead of taking a logarithm, and slice k's
-// direction is slice 0's turned by k pi / slices (angle sums). That
-// moves A by ulps and, in rare pixels, a rounded sample offset or its chain level by one;
+// round(log2 |s| - mipOffset) instead of taking a logarithm, and (without the planes) slice
+// k's direction is slice 0's turned by k pi / slices (angle sums). That moves A by ulps and, in rare pixels, a rounded sample offset or its chain level by one;
 // the tests hold this path to the oracle within a stated bound (tests/ao/test_gtao.cpp).
 #if defined(SSFX_AO_GTAO_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef SSFX_AO_GTAO_INL_H_
@@ -22,6 +23,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 #include "src/ao/gtao_simd.hpp"
@@ -41,6 +43,9 @@ struct GtaoLanes {
     V Clamp01(V v) const { return hn::Min(hn::Max(v, hn::Zero(df)), hn::Set(df, 1.0f)); }
     V Dot(V ax, V ay, V az, V bx, V by, V bz) const {  // (a.x b.x + a.y b.y) + a.z b.z, as dot()
         return hn::Add(hn::Add(hn::Mul(ax, bx), hn::Mul(ay, by)), hn::Mul(az, bz));
+    }
+    V FusedDot(V ax, V ay, V az, V bx, V by, V bz) const {  // dot() in two fused multiply-adds
+        return hn::MulAdd(az, bz, hn::MulAdd(ay, by, hn::Mul(ax, bx)));
     }
     //! XeGTAO's approximation (gtaoFastAcos) or Highway's acos.
     V Acos(V x) const {
@@ -76,54 +81,58 @@ struct GtaoLanes {
     }
 
     //! The chain value (t, +infinity for sky) of one step's sample on one side: buffer pixel
-    //! (px, py) at chain level m, a pixel beyond the buffer reading the edge texel's column or
-    //! row (texel tables, clamped).
-    template <class VI>
-    V Fetch(VI px, VI py, VI m) const {
-        const VI zero = hn::Zero(di);
-        const VI cpx = hn::Min(hn::Max(px, zero), hn::Set(di, in.width - 1));
-        const VI cpy = hn::Min(hn::Max(py, zero), hn::Set(di, in.height - 1));
+    //! (px, py), integers held as floats (exact: the buffer is far below 2^24 a side), at
+    //! chain level m, a pixel beyond the buffer reading the edge texel's column or row
+    //! (texel tables, clamped). kInside: the caller knows every lane's pixel is in the buffer.
+    template <bool kInside, class VI>
+    V Fetch(V px, V py, VI m) const {
+        if (!kInside) {
+            px = hn::Min(hn::Max(px, hn::Zero(df)), hn::Set(df, float(in.width - 1)));
+            py = hn::Min(hn::Max(py, hn::Zero(df)), hn::Set(df, float(in.height - 1)));
+        }
         const VI off = Pick(di, in.levelStart16, m), lw = Pick(di, in.levelWidth16, m);
         VI tx, ty;
         if (in.floatTexels) {  // one product each (exact here: checked by the setup)
-            const VI one = hn::Set(di, 1);
-            const V scaleX = Pick(df, in.texelScaleX16, m), scaleY = Pick(df, in.texelScaleY16, m);
-            tx = hn::ConvertTo(di, hn::Mul(hn::ConvertTo(df, hn::Add(hn::Add(cpx, cpx), one)), scaleX));
-            ty = hn::ConvertTo(di, hn::Mul(hn::ConvertTo(df, hn::Add(hn::Add(cpy, cpy), one)), scaleY));
+            const V two = hn::Set(df, 2.0f), one = hn::Set(df, 1.0f);  // 2 p + 1, exact
+            tx = hn::ConvertTo(di, hn::Mul(hn::MulAdd(two, px, one), Pick(df, in.texelScaleX16, m)));
+            ty = hn::ConvertTo(di, hn::Mul(hn::MulAdd(two, py, one), Pick(df, in.texelScaleY16, m)));
         } else if (in.arithmeticTexels) {  // two gathers cost more than the arithmetic
-            tx = TexelOf(cpx, lw, in.width);
-            ty = TexelOf(cpy, Pick(di, in.levelHeight16, m), in.height);
+            tx = TexelOf(hn::ConvertTo(di, px), lw, in.width);
+            ty = TexelOf(hn::ConvertTo(di, py), Pick(di, in.levelHeight16, m), in.height);
         } else {
-            tx = hn::GatherIndex(di, in.texelX, hn::Add(hn::Mul(m, hn::Set(di, in.width)), cpx));
-            ty = hn::GatherIndex(di, in.texelY, hn::Add(hn::Mul(m, hn::Set(di, in.height)), cpy));
+            tx = hn::GatherIndex(di, in.texelX, hn::Add(hn::Mul(m, hn::Set(di, in.width)), hn::ConvertTo(di, px)));
+            ty = hn::GatherIndex(di, in.texelY, hn::Add(hn::Mul(m, hn::Set(di, in.height)), hn::ConvertTo(di, py)));
         }
         return hn::GatherIndex(df, in.chain, hn::Add(off, hn::Add(hn::Mul(ty, lw), tx)));
     }
 
-    //! One step's sample on one side at buffer pixel (px, py), its chain value ts (Fetch):
-    //! the horizon cosine h moves up to the sample's (GtaoMain::sample).
-    template <class VI>
-    V Sample(VI px, VI py, V ts, V cx, V cy, V cz, V vx, V vy, V vz, V start, V h) const {
+    //! One step's sample on one side at buffer pixel (px, py) (integer-valued floats), its
+    //! chain value ts (Fetch): the horizon cosine h moves up to the sample's (GtaoMain::sample).
+    template <bool kInside>
+    V Sample(V px, V py, V ts, V cx, V cy, V cz, V vx, V vy, V vz, V start, V h) const {
         auto valid = hn::Not(hn::IsInf(ts));  // sky: weight 0
-        if (in.discard) {
-            const VI minus1 = hn::Set(di, -1);
-            const auto inside = hn::And(hn::And(hn::Gt(px, minus1), hn::Gt(py, minus1)),
-                                        hn::And(hn::Lt(px, hn::Set(di, in.width)), hn::Lt(py, hn::Set(di, in.height))));
-            valid = hn::And(valid, hn::RebindMask(df, inside));
+        if (in.discard && !kInside) {
+            const V minus1 = hn::Set(df, -1.0f);
+            const auto inside =
+                hn::And(hn::And(hn::Gt(px, minus1), hn::Gt(py, minus1)),
+                        hn::And(hn::Lt(px, hn::Set(df, float(in.width))), hn::Lt(py, hn::Set(df, float(in.height)))));
+            valid = hn::And(valid, inside);
         }
+        // Fused multiply-adds where the oracle rounds twice (a few ulps; the tests' bound).
         const V z = hn::Neg(ts);
-        const V fx = hn::Add(hn::Set(df, in.ax), hn::Mul(hn::Set(df, in.bx), hn::ConvertTo(df, px)));
-        const V fy = hn::Add(hn::Set(df, in.ay), hn::Mul(hn::Set(df, in.by), hn::ConvertTo(df, py)));
-        const V dx = hn::Sub(hn::Mul(z, fx), cx), dy = hn::Sub(hn::Mul(z, fy), cy), dz = hn::Sub(z, cz);
-        const V len = hn::Sqrt(Dot(dx, dy, dz, dx, dy, dz));
-        const V cs = hn::Div(Dot(dx, dy, dz, vx, vy, vz), len);
+        const V fx = hn::MulAdd(hn::Set(df, in.bx), px, hn::Set(df, in.ax));
+        const V fy = hn::MulAdd(hn::Set(df, in.by), py, hn::Set(df, in.ay));
+        const V dx = hn::MulSub(z, fx, cx), dy = hn::MulSub(z, fy, cy), dz = hn::Sub(z, cz);
+        const V len = hn::Sqrt(FusedDot(dx, dy, dz, dx, dy, dz));
+        const V cs = hn::Div(FusedDot(dx, dy, dz, vx, vy, vz), len);
         V lenW = len;
         if (in.toc1 != 1.0f) {
             const V tz = hn::Mul(hn::Set(df, in.toc1), dz);
-            lenW = hn::Sqrt(hn::Add(hn::Add(hn::Mul(dx, dx), hn::Mul(dy, dy)), hn::Mul(tz, tz)));
+            lenW = hn::Sqrt(FusedDot(dx, dy, tz, dx, dy, tz));
         }
-        const V w = Clamp01(hn::Mul(hn::Sub(hn::Set(df, in.re), lenW), hn::Set(df, 1.0f / in.fRe)));
-        const V cw = hn::Add(start, hn::Mul(w, hn::Sub(cs, start)));
+        const V invFRe = hn::Set(df, 1.0f / in.fRe);
+        const V w = Clamp01(hn::NegMulAdd(lenW, invFRe, hn::Mul(hn::Set(df, in.re), invFRe)));
+        const V cw = hn::MulAdd(w, hn::Sub(cs, start), start);
         V next = hn::Max(h, cw);
         if (in.thickness > 0.0f)  // the paper's thickness heuristic
             next = hn::IfThenElse(hn::Lt(cw, h), hn::Add(h, hn::Mul(hn::Set(df, in.thickness), hn::Sub(cw, h))), next);
@@ -134,7 +143,7 @@ struct GtaoLanes {
     V Pixels(int x, int y) const {
         const float kPi = 3.14159265358979323846f;
         const V one = hn::Set(df, 1.0f), zero = hn::Zero(df);
-        const auto xi = ssfx::HWY_NAMESPACE::IotaFrom(di, x), yi = hn::Set(di, y);
+        const auto xi = ssfx::HWY_NAMESPACE::IotaFrom(di, x);
         const V t0 = hn::LoadU(df, in.chain + std::ptrdiff_t(y) * in.width + x);
         const auto sky = hn::IsInf(t0);
         // Step 3: the pull against depth imprecision; C and V use it.
@@ -154,22 +163,48 @@ struct GtaoLanes {
         const V v0 = in.nearFade ? hn::Mul(hn::Set(df, 0.5f),
                                            Clamp01(hn::Div(hn::Sub(hn::Set(df, 10.0f), r), hn::Set(df, 100.0f))))
                                  : zero;
-        const V smin = hn::Div(hn::Set(df, 1.3f), r);
+        // (0 for sky, where r = 0: those lanes then sample their own pixel, not NaN offsets;
+        // their A is 1 whatever they find.)
+        const V smin = hn::IfThenZeroElse(sky, hn::Div(hn::Set(df, 1.3f), r));
+        // Every sample of these lanes inside the buffer (no clamping, and nothing to discard)
+        // where their farthest, |round(u (cos phi, -sin phi) r)| <= u r + 1 with u <= 1 + smin,
+        // i.e. r + 2.3 pixels (sky: r = 0), stays within it. NaN fails the test.
+        const float reach = hn::GetLane(hn::MaxOfLanes(df, hn::Add(r, hn::Set(df, 2.3f))));
+        const bool inside = !in.clampEverywhere && float(x) - reach >= 0.0f &&
+                            float(x + int(hn::Lanes(df)) - 1) + reach <= float(in.width - 1) &&
+                            float(y) - reach >= 0.0f && float(y) + reach <= float(in.height - 1);
+        const V xf = hn::ConvertTo(df, xi), yf = hn::Set(df, float(y));
         const auto mask63 = hn::Set(di, 63);
-        const auto noiseIdx =
-            hn::Add(hn::Set(di, ((y - in.guard) & 63) * 64), hn::And(hn::Sub(xi, hn::Set(di, in.guard)), mask63));
-        const V ns = hn::GatherIndex(df, in.noiseS, noiseIdx), nt = hn::GatherIndex(df, in.noiseT, noiseIdx);
-        const V slices = hn::Set(df, float(in.slices)), steps = hn::Set(df, float(in.steps));
+        const auto column = hn::And(hn::Sub(xi, hn::Set(di, in.guard)), mask63);  // the noise cells' x
+        const V slices = hn::Set(df, float(in.slices)), stepCount = hn::Set(df, float(in.steps));
+        // What the noise gives (section 7): read from the setup's planes, the scalar oracle's
+        // bits; else derived here from the noise, slice k's cosine and sine from slice 0's by
+        // the angle-sum identities (phi_k = phi_0 + k pi / S).
+        using Planes = GtaoNoisePlanes;
+        const float* planeRow = in.noisePlanes + std::ptrdiff_t((y - in.guard) & 63) * Planes::kStride;
+        auto plane = [&](int q) {  // plane q at the lanes' cells: one load where the row's copy allows
+            const float* row = planeRow + std::ptrdiff_t(q) * Planes::kPlaneFloats;
+            if (hn::Lanes(df) <= std::size_t(Planes::kStride - 64)) return hn::LoadU(df, row + ((x - in.guard) & 63));
+            return hn::GatherIndex(df, row, column);
+        };
+        V ns = zero, nt = zero, cphi0 = zero, sphi0 = zero;
+        if (!in.noisePlanes) {
+            const auto noiseIdx = hn::Add(hn::Set(di, ((y - in.guard) & 63) * 64), column);
+            ns = hn::GatherIndex(df, in.noiseS, noiseIdx), nt = hn::GatherIndex(df, in.noiseT, noiseIdx);
+            const V phi0 = hn::Mul(hn::Div(ns, slices), hn::Set(df, kPi));
+            cphi0 = hn::Cos(df, phi0), sphi0 = hn::Sin(df, phi0);
+        }
         V sum = zero;
-        // Slice k's angle is slice 0's plus k pi / slices: its cosine and sine by the angle-sum
-        // identities from slice 0's (two transcendentals a pixel, not two a slice).
-        const V phi0 = hn::Mul(hn::Div(ns, slices), hn::Set(df, kPi));
-        const V cphi0 = hn::Cos(df, phi0), sphi0 = hn::Sin(df, phi0);
         for (int k = 0; k < in.slices; ++k) {
-            const double turn = double(k) * 3.14159265358979323846 / double(in.slices);
-            const V ck = hn::Set(df, float(std::cos(turn))), sk = hn::Set(df, float(std::sin(turn)));
-            const V cphi = k == 0 ? cphi0 : hn::Sub(hn::Mul(cphi0, ck), hn::Mul(sphi0, sk));
-            const V sphi = k == 0 ? sphi0 : hn::Add(hn::Mul(sphi0, ck), hn::Mul(cphi0, sk));
+            V cphi = cphi0, sphi = sphi0;
+            if (in.noisePlanes) {
+                cphi = plane(2 * k), sphi = plane(2 * k + 1);
+            } else if (k > 0) {
+                const double turn = double(k) * 3.14159265358979323846 / double(in.slices);
+                const V ck = hn::Set(df, float(std::cos(turn))), sk = hn::Set(df, float(std::sin(turn)));
+                cphi = hn::Sub(hn::Mul(cphi0, ck), hn::Mul(sphi0, sk));
+                sphi = hn::Add(hn::Mul(sphi0, ck), hn::Mul(cphi0, sk));
+            }
             const V ox = hn::Mul(cphi, r), oy = hn::Mul(hn::Neg(sphi), r);  // screen y is down
             const V dv = Dot(cphi, sphi, zero, vx, vy, vz);
             const V dpx = hn::Sub(cphi, hn::Mul(dv, vx)), dpy = hn::Sub(sphi, hn::Mul(dv, vy)),
@@ -203,38 +238,52 @@ struct GtaoLanes {
             V hp = startPos, hneg = startNeg;
             // The steps in batches: every depth of a batch is gathered before the first is used,
             // so that the gathers' cache misses overlap (the horizons are updated in step order).
-            constexpr int kBatch = 3;
-            for (int j0 = 0; j0 < in.steps; j0 += kBatch) {
-                const int count = std::min(kBatch, in.steps - j0);
-                hn::Vec<decltype(di)> pxP[kBatch], pyP[kBatch], pxN[kBatch], pyN[kBatch];
-                V tsP[kBatch], tsN[kBatch];
-                for (int b = 0; b < count; ++b) {
-                    const int j = j0 + b;
-                    const float base = float(k + j * in.steps) * 0.6180339887498948f;
-                    const V xjRaw = hn::Add(nt, hn::Set(df, base));
-                    const V xj = hn::Sub(xjRaw, hn::Floor(xjRaw));
-                    const V s = hn::Div(hn::Add(hn::Set(df, float(j)), xj), steps);
-                    const V u = hn::Add(hn::Mul(s, s), smin);  // sampleDistributionPower 2
-                    const V sx = hn::Mul(u, ox), sy = hn::Mul(u, oy);
-                    // The level round(log2 |s| - mipOffset) clamped to [0, 4], as |s|^2 against
-                    // the four squared thresholds (no logarithm; NaN counts none).
-                    const V q = hn::Add(hn::Mul(sx, sx), hn::Mul(sy, sy));
-                    auto m = hn::Zero(di);
-                    for (int level = 0; level < 4; ++level)
-                        m = hn::Add(m,
-                                    hn::IfThenElseZero(hn::RebindMask(di, hn::Ge(q, hn::Set(df, in.lodSquared[level]))),
-                                                       hn::Set(di, 1)));
-                    const auto qx = hn::NearestInt(sx), qy = hn::NearestInt(sy);
-                    pxP[b] = hn::Add(xi, qx), pyP[b] = hn::Add(yi, qy);
-                    pxN[b] = hn::Sub(xi, qx), pyN[b] = hn::Sub(yi, qy);
-                    tsP[b] = Fetch(pxP[b], pyP[b], m);
-                    tsN[b] = Fetch(pxN[b], pyN[b], m);
+            auto steps = [&](auto insideTag) {
+                constexpr bool kInside = decltype(insideTag)::value;
+                constexpr int kBatch = 3;
+                for (int j0 = 0; j0 < in.steps; j0 += kBatch) {
+                    const int count = std::min(kBatch, in.steps - j0);
+                    V pxP[kBatch], pyP[kBatch], pxN[kBatch], pyN[kBatch], tsP[kBatch], tsN[kBatch];
+                    for (int b = 0; b < count; ++b) {
+                        const int j = j0 + b;
+                        V spacing;  // ((j + xj) / J)^2: sampleDistributionPower 2
+                        if (in.noisePlanes) {
+                            spacing = plane(2 * in.slices + k * in.steps + j);
+                        } else {
+                            const float base = float(k + j * in.steps) * 0.6180339887498948f;
+                            const V xjRaw = hn::Add(nt, hn::Set(df, base));
+                            const V xj = hn::Sub(xjRaw, hn::Floor(xjRaw));
+                            const V s = hn::Div(hn::Add(hn::Set(df, float(j)), xj), stepCount);
+                            spacing = hn::Mul(s, s);
+                        }
+                        const V u = hn::Add(spacing, smin);
+                        const V sx = hn::Mul(u, ox), sy = hn::Mul(u, oy);
+                        // The level round(log2 |s| - mipOffset) clamped to [0, 4], as |s|^2 against
+                        // the four squared thresholds (no logarithm; NaN counts none).
+                        const V q = hn::MulAdd(sy, sy, hn::Mul(sx, sx));
+                        auto m = hn::Zero(di);
+                        for (int level = 0; level < 4; ++level)
+                            m = hn::Add(
+                                m, hn::IfThenElseZero(hn::RebindMask(di, hn::Ge(q, hn::Set(df, in.lodSquared[level]))),
+                                                      hn::Set(di, 1)));
+                        // The offset rounded to the nearest pixel (ties to even, as nearbyint), as
+                        // floats: the pixels' coordinates stay exact integers.
+                        const V qx = hn::Round(sx), qy = hn::Round(sy);
+                        pxP[b] = hn::Add(xf, qx), pyP[b] = hn::Add(yf, qy);
+                        pxN[b] = hn::Sub(xf, qx), pyN[b] = hn::Sub(yf, qy);
+                        tsP[b] = Fetch<kInside>(pxP[b], pyP[b], m);
+                        tsN[b] = Fetch<kInside>(pxN[b], pyN[b], m);
+                    }
+                    for (int b = 0; b < count; ++b) {
+                        hp = Sample<kInside>(pxP[b], pyP[b], tsP[b], cx, cy, cz, vx, vy, vz, startPos, hp);
+                        hneg = Sample<kInside>(pxN[b], pyN[b], tsN[b], cx, cy, cz, vx, vy, vz, startNeg, hneg);
+                    }
                 }
-                for (int b = 0; b < count; ++b) {
-                    hp = Sample(pxP[b], pyP[b], tsP[b], cx, cy, cz, vx, vy, vz, startPos, hp);
-                    hneg = Sample(pxN[b], pyN[b], tsN[b], cx, cy, cz, vx, vy, vz, startNeg, hneg);
-                }
-            }
+            };
+            if (inside)
+                steps(std::true_type{});
+            else
+                steps(std::false_type{});
             if (in.minusOne) hp = hn::Max(hp, lowPos), hneg = hn::Max(hneg, lowNeg);  // onto the hemisphere
             const V h1 = Acos(hp), h0 = hn::Neg(Acos(hneg));
             const V lp = in.lift ? hn::Add(hn::Mul(hn::Set(df, 0.95f), l), hn::Set(df, 0.05f)) : l;

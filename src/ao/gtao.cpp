@@ -22,6 +22,14 @@ GtaoTexelPath& gtaoTexelPathForTest() {
     static GtaoTexelPath path = GtaoTexelPath::Auto;
     return path;
 }
+bool& gtaoNoisePlanesForTest() {
+    static bool use = true;
+    return use;
+}
+bool& gtaoClampEverywhereForTest() {
+    static bool clamp = false;
+    return clamp;
+}
 }  // namespace detail
 
 GtaoParams gtaoPreset(const std::string& name) {
@@ -152,8 +160,33 @@ void edgesAndNormals(const detail::GtaoSetup& s, Region work, std::vector<std::u
 // The 8-bit storage of xegtaoStorage: A / 1.5 as UNORM8.
 float xegtaoStore(float a) { return std::nearbyint(std::clamp(a / 1.5f, 0.0f, 1.0f) * 255.0f) / 255.0f * 1.5f; }
 
+// The vector pass's noise planes for s's slices and steps (gtao_simd.hpp), kept in
+// `planes` while those stay; false (none made) past GtaoNoisePlanes::kMaxPlanes.
+bool makeNoisePlanes(const detail::GtaoSetup& s, detail::GtaoNoisePlanes& planes) {
+    using P = detail::GtaoNoisePlanes;
+    const int S = s.slices, J = s.steps;
+    if (S * (J + 2) > P::kMaxPlanes) return false;
+    if (planes.slices == S && planes.steps == J) return true;
+    planes.values.assign(std::size_t(S * (J + 2)) * P::kPlaneFloats, 0.0f);
+    for (int row = 0; row < 64; ++row)
+        for (int col = 0; col < P::kStride; ++col) {
+            const std::size_t cell = std::size_t(row * 64 + (col & 63));
+            float* at = planes.values.data() + std::size_t(row * P::kStride + col);
+            for (int k = 0; k < S; ++k) {
+                const float phi = s.sliceAngle(k, s.noiseS[cell]);
+                at[std::size_t(2 * k) * P::kPlaneFloats] = std::cos(phi);
+                at[std::size_t(2 * k + 1) * P::kPlaneFloats] = std::sin(phi);
+                for (int j = 0; j < J; ++j)
+                    at[std::size_t(2 * S + k * J + j) * P::kPlaneFloats] = s.stepSpacing(k, j, s.noiseT[cell]);
+            }
+        }
+    planes.slices = S, planes.steps = J;
+    return true;
+}
+
 struct Workspace {
     ZPyramid chain;
+    detail::GtaoNoisePlanes noisePlanes;
     std::vector<std::uint8_t> edges;
     std::vector<Vec3> normals;
     ImageF a, b;
@@ -271,6 +304,9 @@ ImageF gtaoImpl(ImageView<const float> depth, const Camera& camera, const GtaoPa
         }
         for (int k = 1; k <= 4; ++k)
             in.lodSquared[k - 1] = float(std::exp2(double(2 * k - 1) + 2.0 * double(s.mipOffset)));
+        if (detail::gtaoNoisePlanesForTest() && makeNoisePlanes(s, ws.noisePlanes))
+            in.noisePlanes = ws.noisePlanes.values.data();
+        in.clampEverywhere = detail::gtaoClampEverywhereForTest();
     }
     parallelRows(work.height, exec, [&](int r0, int r1) {
         for (int j = r0; j < r1; ++j) {

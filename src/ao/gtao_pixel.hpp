@@ -95,6 +95,17 @@ struct GtaoSetup {
         }
     }
     float acos(float x) const { return fastAcos ? gtaoFastAcos(x) : std::acos(x); }
+    //! Slice k's screen angle phi from the cell's slice noise xs (sections 5.3, 7).
+    float sliceAngle(int k, float xs) const { return (float(k) + xs) / float(slices) * kPi; }
+    //! Step j's distance along slice k as a fraction of r before the closest step's offset:
+    //! spacing((j + xj) / J) with xj the cell's step noise xt turned by the golden ratio
+    //! (sections 5.5, 7).
+    float stepSpacing(int k, int j, float xt) const {
+        const float base = float(k + j * steps) * 0.6180339887498948f;
+        const float xjRaw = xt + base;
+        const float xj = xjRaw - std::floor(xjRaw);
+        return spacing((float(j) + xj) / float(steps));
+    }
     //! ((j + xj) / J)^power: power 2 as one product (what a correctly rounded pow gives).
     float spacing(float u) const { return spacingPower == 2.0f ? u * u : std::pow(u, spacingPower); }
 };
@@ -193,7 +204,7 @@ struct GtaoMain {
         float sum = 0.0f;
         Vec3 bentSum{0, 0, 0};
         for (int k = 0; k < s.slices; ++k) {
-            const float phi = (float(k) + noise[0]) / float(s.slices) * kPi;
+            const float phi = s.sliceAngle(k, noise[0]);
             const float cphi = std::cos(phi), sphi = std::sin(phi);
             const Vec3 d{cphi, sphi, 0.0f};
             const float ox = cphi * r, oy = -sphi * r;  // screen y is down
@@ -215,10 +226,7 @@ struct GtaoMain {
             const float startPos = s.minusOne ? -1.0f : lowPos, startNeg = s.minusOne ? -1.0f : lowNeg;
             float hp = startPos, hn = startNeg;
             for (int j = 0; j < s.steps; ++j) {
-                const float base = float(k + j * s.steps) * 0.6180339887498948f;
-                const float xjRaw = noise[1] + base;
-                const float xj = xjRaw - std::floor(xjRaw);
-                const float u = s.spacing((float(j) + xj) / float(s.steps)) + smin;
+                const float u = s.stepSpacing(k, j, noise[1]) + smin;
                 const float sx = u * ox, sy = u * oy;
                 const float lod = std::clamp(std::log2(std::sqrt(sx * sx + sy * sy)) - s.mipOffset, 0.0f, 5.0f);
                 const int m = std::min(kGtaoChainLevels - 1, int(std::floor(lod + 0.5f)));

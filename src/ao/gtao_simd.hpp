@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 namespace ssfx::ao::detail {
 
@@ -36,6 +37,27 @@ struct GtaoSimdInput {
     //! Level m is the number of k = 1 .. 4 with |s|^2 >= lodSquared[k - 1] = 2^(2 k - 1 + 2
     //! mipOffset): round(log2 |s| - mipOffset) clamped to [0, 4] without the logarithm.
     float lodSquared[4] = {};
+    //! GtaoNoisePlanes::values where the setup made them (else null: the pass derives the
+    //! same quantities from noiseS and noiseT with Highway's cosine and sine).
+    const float* noisePlanes = nullptr;
+    //! Clamp every sample (test hook gtaoClampEverywhereForTest), else only where a vector's
+    //! samples could leave the buffer.
+    bool clampEverywhere = false;
+};
+
+//! What the main pass derives from the noise alone, per noise cell (x mod 64, y mod 64), in
+//! the scalar oracle's own operations (GtaoMain::pixel: libm's cosine and sine, an IEEE
+//! division), so the same bits: for slice k, cos phi_k (plane 2 k) and sin phi_k (plane
+//! 2 k + 1); for slice k and step j, the step's spacing ((j + xj) / J)^2 (plane 2 S + k J + j).
+//! A plane is 64 rows of kStride floats; entries 64 .. kStride - 1 of a row repeat entries
+//! 0 .. 15, so that up to 16 lanes load a row's cells from any column without wrapping.
+struct GtaoNoisePlanes {
+    static constexpr int kStride = 80;
+    static constexpr int kPlaneFloats = 64 * kStride;
+    //! Planes beyond this many (S (J + 2) > 512: 10 MiB) are not made.
+    static constexpr int kMaxPlanes = 512;
+    int slices = 0, steps = 0;
+    std::vector<float> values;
 };
 
 //! How the vector pass finds each sample's texel (GtaoSimdInput): the one product where the
@@ -43,6 +65,12 @@ struct GtaoSimdInput {
 //! setup's tables. Tests force each path (all give the same texels, so the same bytes).
 enum class GtaoTexelPath { Auto, Product, Arithmetic, Tables };
 GtaoTexelPath& gtaoTexelPathForTest();
+//! Whether the vector pass may use noise planes (GtaoNoisePlanes; true): tests turn them off
+//! to run the arithmetic that replaces them.
+bool& gtaoNoisePlanesForTest();
+//! Whether the vector pass clamps every sample to the buffer (false): tests set it to compare
+//! the lanes known to stay inside with the clamped code.
+bool& gtaoClampEverywhereForTest();
 //! Test hook: how many p in [0, n) get a computed texel (the arithmetic path) other than
 //! floor((2 p + 1) wm / 2 n), on the SIMD target this machine dispatches to.
 std::int64_t gtaoTexelMismatches(int n, int wm);

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "src/ao/gtao_simd.hpp"
+#include "ssfx/ao/depth.hpp"
 #include "ssfx/ao/gtao.hpp"
 #include "ssfx/ao/raytraced.hpp"
 #include "ssfx/core/error.hpp"
@@ -366,7 +367,8 @@ TEST(Gtao, FastPathStaysWithinItsBoundOfTheScalarReference) {
     // approximations: A moves by ulps, and in rare pixels a rounded sample offset or chain
     // level could move by one, which would move that pixel's horizon. Measured here (AVX-512,
     // 8 configurations over the room: sky, guard band, every distance): mean |fast - reference|
-    // <= 6.7e-8, max 2.0e-5, no pixel beyond 1/1024. Bound, with room for other targets'
+    // <= 6.9e-8 and max 1.8e-6 with the noise planes, <= 8.5e-8 and 2.0e-5 without; no pixel
+    // beyond 1/1024. Bound, with room for other targets'
     // rounding (SSE4 without FMA, AVX2): mean <= 1e-6, at most 0.05 % of pixels beyond 1/1024
     // and none beyond 0.1 (one moved sample of 18 with a full horizon swing, spread by the
     // denoiser over its 3x3 neighbours).
@@ -385,27 +387,64 @@ TEST(Gtao, FastPathStaysWithinItsBoundOfTheScalarReference) {
     configs.push_back({"high, no denoiser, R = 2 m, thin occluders", gtaoPreset("high")});
     configs.back().p.denoisePasses = 0, configs.back().p.radius = 2.0f;
     configs.back().p.thinOccluderCompensation = 0.5f;
-    for (Config& c : configs) {
-        c.p.guardBand = 16;
-        const ImageF ref = gtaoReference(d.view(), cam, c.p);
-        const ImageF fast = gtao(d.view(), cam, c.p, Exec{2});
-        ASSERT_EQ(fast.width(), ref.width());
-        double sum = 0, worst = 0;
-        int beyond = 0, differ = 0;
-        for (std::size_t i = 0; i < ref.pixels().size(); ++i) {
-            const double e = std::abs(double(fast.pixels()[i]) - ref.pixels()[i]);
-            sum += e, worst = std::max(worst, e);
-            beyond += e > 1.0 / 1024, differ += e > 0;
+    struct Reset {
+        ~Reset() { ao::detail::gtaoNoisePlanesForTest() = true; }
+    } reset;
+    // Each with the noise planes (the oracle's slice directions and step spacings, its bits)
+    // and without (the pass derives them with Highway's cosine and sine).
+    for (Config& c : configs)
+        for (const bool planes : {true, false}) {
+            ao::detail::gtaoNoisePlanesForTest() = planes;
+            c.p.guardBand = 16;
+            const ImageF ref = gtaoReference(d.view(), cam, c.p);
+            const ImageF fast = gtao(d.view(), cam, c.p, Exec{2});
+            ASSERT_EQ(fast.width(), ref.width());
+            double sum = 0, worst = 0;
+            int beyond = 0, differ = 0;
+            for (std::size_t i = 0; i < ref.pixels().size(); ++i) {
+                const double e = std::abs(double(fast.pixels()[i]) - ref.pixels()[i]);
+                sum += e, worst = std::max(worst, e);
+                beyond += e > 1.0 / 1024, differ += e > 0;
+            }
+            const double n = double(ref.pixels().size());
+            EXPECT_LE(sum / n, 1e-6) << c.name;
+            EXPECT_LE(beyond / n, 0.0005) << c.name;
+            EXPECT_LE(worst, 0.1) << c.name;
+            // The vector path really ran: libm and Highway round differently somewhere.
+            EXPECT_GT(differ, 0) << c.name;
+            std::printf("%-44s %-9s mean %.2e, max %.2e, beyond 1/1024 %.3f %%, differing %.1f %%\n", c.name,
+                        planes ? "planes" : "derived", sum / n, worst, 100.0 * beyond / n, 100.0 * differ / n);
         }
-        const double n = double(ref.pixels().size());
-        EXPECT_LE(sum / n, 1e-6) << c.name;
-        EXPECT_LE(beyond / n, 0.0005) << c.name;
-        EXPECT_LE(worst, 0.1) << c.name;
-        // The vector path really ran: libm and Highway round differently somewhere.
-        EXPECT_GT(differ, 0) << c.name;
-        std::printf("%-44s mean %.2e, max %.2e, beyond 1/1024 %.3f %%, differing %.1f %%\n", c.name, sum / n, worst,
-                    100.0 * beyond / n, 100.0 * differ / n);
-    }
+}
+
+// The vector pass skips clamping (and the discard test) for a vector whose samples all stay
+// in the buffer (farthest offset r + 2.3 pixels); clamping changes nothing there, so the
+// bytes must be those of the clamped code everywhere. The precondition checks that some
+// vectors of the centre row do take the unclamped code at this size.
+TEST(Gtao, UnclampedVectorsGiveTheClampedBytes) {
+    struct Reset {
+        ~Reset() { ao::detail::gtaoClampEverywhereForTest() = false; }
+    } reset;
+    Camera cam;
+    const auto room = scene::analyticSceneByName("room");
+    const int w = 320 + 32, h = 180 + 32;
+    const ImageF d = scene::castGeometry(room, cam, w, h, Exec{1}).depth;
+    for (const char* preset : {"low", "high", "ultra"})
+        for (const bool discard : {false, true}) {
+            GtaoParams p = gtaoPreset(preset);
+            p.guardBand = 16;
+            if (discard) p.offscreen = Offscreen::Discard;
+            const ImageF z = ao::depthToZ(d.view(), cam);
+            const float rNum = gtaoConstants(p, projection(cam, w, h)).rNum;
+            float reach = 0;  // the centre row's 16 middle pixels
+            for (int x = w / 2 - 8; x < w / 2 + 8; ++x) reach = std::max(reach, rNum / (-z(x, h / 2)) + 2.3f);
+            ASSERT_LT(reach, float(h / 2 - 1)) << preset << ": no vector of the centre row stays inside";
+            ao::detail::gtaoClampEverywhereForTest() = false;
+            const ImageF some = gtao(d.view(), cam, p, Exec{2});
+            ao::detail::gtaoClampEverywhereForTest() = true;
+            const ImageF all = gtao(d.view(), cam, p, Exec{2});
+            EXPECT_EQ(some, all) << preset << (discard ? ", discard" : "");
+        }
 }
 
 TEST(Gtao, VectorEdgesNormalsAndDenoiserGiveTheReferencesBits) {
