@@ -69,6 +69,11 @@ struct GtaoLanes {
             r = hn::IfThenElse(hn::RebindMask(d, hn::Eq(m, hn::Set(di, l))), hn::Set(d, table16[l]), r);
         return r;
     }
+    //! The integer of an integer-valued float in [0, 2^23): its bits after adding 2^23 (a
+    //! conversion instruction would also check for overflow, which costs four more here).
+    hn::Vec<hn::RebindToSigned<DF>> ToIndex(V f) const {
+        return hn::Sub(hn::BitCast(di, hn::Add(f, hn::Set(df, 8388608.0f))), hn::Set(di, 0x4B000000));
+    }
     //! GtaoSetup's texel table entry computed: floor((2 p + 1) wm / 2 n) for p in [0, n),
     //! exactly (a float estimate within one of it, then one integer correction).
     template <class VI>
@@ -95,8 +100,13 @@ struct GtaoLanes {
         VI tx, ty;
         if (in.floatTexels) {  // one product each (exact here: checked by the setup)
             const V two = hn::Set(df, 2.0f), one = hn::Set(df, 1.0f);  // 2 p + 1, exact
-            tx = hn::ConvertTo(di, hn::Mul(hn::MulAdd(two, px, one), Pick(df, in.texelScaleX16, m)));
-            ty = hn::ConvertTo(di, hn::Mul(hn::MulAdd(two, py, one), Pick(df, in.texelScaleY16, m)));
+            const V fx = hn::Trunc(hn::Mul(hn::MulAdd(two, px, one), Pick(df, in.texelScaleX16, m)));
+            const V fy = hn::Trunc(hn::Mul(hn::MulAdd(two, py, one), Pick(df, in.texelScaleY16, m)));
+            if (in.floatIndex)  // start + y width + x, exact in floats below 2^23
+                return hn::GatherIndex(
+                    df, in.chain,
+                    ToIndex(hn::MulAdd(fy, Pick(df, in.levelWidthF16, m), hn::Add(fx, Pick(df, in.levelStartF16, m)))));
+            tx = ToIndex(fx), ty = ToIndex(fy);
         } else if (in.arithmeticTexels) {  // two gathers cost more than the arithmetic
             tx = TexelOf(hn::ConvertTo(di, px), lw, in.width);
             ty = TexelOf(hn::ConvertTo(di, py), Pick(di, in.levelHeight16, m), in.height);
@@ -259,14 +269,14 @@ struct GtaoLanes {
                         }
                         const V u = hn::Add(spacing, smin);
                         const V sx = hn::Mul(u, ox), sy = hn::Mul(u, oy);
-                        // The level round(log2 |s| - mipOffset) clamped to [0, 4], as |s|^2 against
-                        // the four squared thresholds (no logarithm; NaN counts none).
-                        const V q = hn::MulAdd(sy, sy, hn::Mul(sx, sx));
-                        auto m = hn::Zero(di);
-                        for (int level = 0; level < 4; ++level)
-                            m = hn::Add(
-                                m, hn::IfThenElseZero(hn::RebindMask(di, hn::Ge(q, hn::Set(df, in.lodSquared[level]))),
-                                                      hn::Set(di, 1)));
+                        // The level round(log2 |s| - mipOffset) clamped to [0, 4]: level k is
+                        // reached where |s|^2 >= 2^(2 k - 1 + 2 mipOffset), i.e. where the
+                        // exponent E of |s|^2 2^(2 - 2 mipOffset) is at least 2 k + 1, so the
+                        // level is floor((E - 1) / 2) = (its bits >> 24) - 64, clamped.
+                        const V q = hn::Mul(hn::MulAdd(sy, sy, hn::Mul(sx, sx)), hn::Set(df, in.lodScale));
+                        const auto m = hn::Min(
+                            hn::Max(hn::Sub(hn::ShiftRight<24>(hn::BitCast(di, q)), hn::Set(di, 64)), hn::Zero(di)),
+                            hn::Set(di, 4));
                         // The offset rounded to the nearest pixel (ties to even, as nearbyint), as
                         // floats: the pixels' coordinates stay exact integers.
                         const V qx = hn::Round(sx), qy = hn::Round(sy);

@@ -278,6 +278,7 @@ ImageF gtaoImpl(ImageView<const float> depth, const Camera& camera, const GtaoPa
             in.levelStart16[l] = ws.chain.offset[std::size_t(m)];
             in.levelWidth16[l] = ws.chain.width[std::size_t(m)];
             in.levelHeight16[l] = ws.chain.height[std::size_t(m)];
+            in.levelStartF16[l] = float(in.levelStart16[l]), in.levelWidthF16[l] = float(in.levelWidth16[l]);
         }
         const std::int64_t side = std::max(W, H);
         in.arithmeticTexels = (2 * side + 2) * side < (std::int64_t(1) << 30);
@@ -293,17 +294,21 @@ ImageF gtaoImpl(ImageView<const float> depth, const Camera& camera, const GtaoPa
             for (int y = 0; y < H && in.floatTexels; ++y)
                 in.floatTexels = int(float(2 * y + 1) * sy) == s.texelY[std::size_t(m * H + y)];
         }
+        in.floatIndex = in.floatTexels && ws.chain.data.size() < (std::size_t(1) << 23);
         switch (detail::gtaoTexelPathForTest()) {
             case detail::GtaoTexelPath::Auto: break;
-            case detail::GtaoTexelPath::Product: SSFX_ASSERT(in.floatTexels); break;
+            case detail::GtaoTexelPath::Product: SSFX_ASSERT(in.floatIndex); break;
+            case detail::GtaoTexelPath::ProductIntegerIndex:
+                SSFX_ASSERT(in.floatTexels);
+                in.floatIndex = false;
+                break;
             case detail::GtaoTexelPath::Arithmetic:
                 SSFX_ASSERT(in.arithmeticTexels);
-                in.floatTexels = false;
+                in.floatTexels = in.floatIndex = false;
                 break;
-            case detail::GtaoTexelPath::Tables: in.floatTexels = in.arithmeticTexels = false; break;
+            case detail::GtaoTexelPath::Tables: in.floatTexels = in.floatIndex = in.arithmeticTexels = false; break;
         }
-        for (int k = 1; k <= 4; ++k)
-            in.lodSquared[k - 1] = float(std::exp2(double(2 * k - 1) + 2.0 * double(s.mipOffset)));
+        in.lodScale = float(std::exp2(2.0 - 2.0 * double(s.mipOffset)));
         if (detail::gtaoNoisePlanesForTest() && makeNoisePlanes(s, ws.noisePlanes))
             in.noisePlanes = ws.noisePlanes.values.data();
         in.clampEverywhere = detail::gtaoClampEverywhereForTest();

@@ -34,9 +34,13 @@ struct GtaoSimdInput {
     //! with scale_m = float(W_m / 2W) (resp. H), one product.
     bool floatTexels = false;
     float texelScaleX16[16] = {}, texelScaleY16[16] = {};
-    //! Level m is the number of k = 1 .. 4 with |s|^2 >= lodSquared[k - 1] = 2^(2 k - 1 + 2
-    //! mipOffset): round(log2 |s| - mipOffset) clamped to [0, 4] without the logarithm.
-    float lodSquared[4] = {};
+    //! With floatTexels, where the chain holds fewer than 2^23 texels: the sample's index in
+    //! `chain` as one float multiply-add (exact) from the level's start and width as floats.
+    bool floatIndex = false;
+    float levelStartF16[16] = {}, levelWidthF16[16] = {};
+    //! 2^(2 - 2 mipOffset): level m is round(log2 |s| - mipOffset) clamped to [0, 4], read
+    //! from the exponent of |s|^2 lodScale (gtao-inl.h) without a logarithm.
+    float lodScale = 0.0f;
     //! GtaoNoisePlanes::values where the setup made them (else null: the pass derives the
     //! same quantities from noiseS and noiseT with Highway's cosine and sine).
     const float* noisePlanes = nullptr;
@@ -61,9 +65,10 @@ struct GtaoNoisePlanes {
 };
 
 //! How the vector pass finds each sample's texel (GtaoSimdInput): the one product where the
-//! setup found it exact, else the corrected arithmetic where it fits an int32, else the
-//! setup's tables. Tests force each path (all give the same texels, so the same bytes).
-enum class GtaoTexelPath { Auto, Product, Arithmetic, Tables };
+//! setup found it exact (its index in floats where the chain is small enough, else in
+//! integers), else the corrected arithmetic where it fits an int32, else the setup's tables.
+//! Tests force each path (all give the same texels, so the same bytes).
+enum class GtaoTexelPath { Auto, Product, ProductIntegerIndex, Arithmetic, Tables };
 GtaoTexelPath& gtaoTexelPathForTest();
 //! Whether the vector pass may use noise planes (GtaoNoisePlanes; true): tests turn them off
 //! to run the arithmetic that replaces them.
