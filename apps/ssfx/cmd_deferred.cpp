@@ -70,6 +70,9 @@ GpuRun runOnGpu(const DeferredOptions& o, const scene::Scene& scene, const scene
         gpu::GpuDeferredResult one = shading.adaptive(g, p, kSchedules[i]);
         r.summary += fmt::format("{} {} {:.2f} ms, {:.1f} % of lanes idle", i ? ";" : "", names[i], one.restMs,
                                  100.0 * one.idleLaneShare());
+        if (kSchedules[i] == gpu::Schedule::SampleList)
+            r.summary += fmt::format(" (enqueue {:.2f}, shade {:.2f}, resolve {:.2f} ms)", one.listEnqueueMs,
+                                     one.listShadeMs, one.listResolveMs);
         if (i + 1 == kSchedules.size()) r.summary += fmt::format(" (subgroup {})", one.subgroupSize);
         if (kSchedules[i] == chosen) r.adaptive = std::move(one);
     }

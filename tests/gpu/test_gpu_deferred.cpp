@@ -112,6 +112,13 @@ TEST(GpuDeferred, AdaptiveOnRenderedGBuffersIsTheCpus) {
             EXPECT_EQ(l.shaded, gpu.shaded);
             EXPECT_EQ(l.busyLanes, gpu.busyLanes);
             EXPECT_LT(l.issuedLanes - l.busyLanes, std::uint64_t(l.subgroupSize));
+            // Its three dispatches' timestamps lie inside the rest pass's (lavapipe has
+            // timestamps); the other schedules have none.
+            EXPECT_GT(l.listShadeMs, 0.0);
+            EXPECT_GT(l.listEnqueueMs, 0.0);
+            EXPECT_GT(l.listResolveMs, 0.0);
+            EXPECT_LE(l.listEnqueueMs + l.listShadeMs + l.listResolveMs, l.restMs + 1e-6);
+            EXPECT_EQ(gpu.listShadeMs, 0.0);
 
             // Brute force on the GPU against the CPU's, within the same bounds.
             const auto bf = shading.bruteForce(g, p.shading);

@@ -68,6 +68,10 @@ struct GpuDeferredResult : deferred::DeferredResult {
     //! subgroup: its lanes times its busiest lane's samples). idleLaneShare = 1 - busy / issued.
     std::uint64_t busyLanes = 0, issuedLanes = 0;
     int subgroupSize = 0;
+    //! With the sample list (Schedule::SampleList): restMs split into its enqueue, shade and
+    //! resolve dispatches (GPU timestamps; the tiny group-count dispatch between the first two
+    //! is in restMs only). 0 for the other schedules.
+    double listEnqueueMs = 0, listShadeMs = 0, listResolveMs = 0;
     double idleLaneShare() const { return issuedLanes ? 1.0 - double(busyLanes) / double(issuedLanes) : 0.0; }
 };
 
