@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <array>
 #include <bit>
 #include <chrono>
 #include <cmath>
@@ -21,6 +22,28 @@ namespace detail {
 GtaoTexelPath& gtaoTexelPathForTest() {
     static GtaoTexelPath path = GtaoTexelPath::Auto;
     return path;
+}
+bool gtaoNoisePlanes(const GtaoParams& p, GtaoNoisePlanes& planes) {
+    using P = GtaoNoisePlanes;
+    const int S = p.sliceCount, J = p.stepsPerSlice;
+    const float power = p.sampleDistributionPower;
+    if (S * (J + 2) > P::kMaxPlanes) return false;
+    if (planes.slices == S && planes.steps == J && planes.power == power) return true;
+    planes.values.assign(std::size_t(S * (J + 2)) * P::kPlaneFloats, 0.0f);
+    for (int row = 0; row < 64; ++row)
+        for (int col = 0; col < P::kStride; ++col) {
+            const std::array<float, 2> noise = gtaoNoise(col & 63, row);
+            float* at = planes.values.data() + std::size_t(row * P::kStride + col);
+            for (int k = 0; k < S; ++k) {
+                const float phi = gtaoSliceAngle(k, S, noise[0]);
+                at[std::size_t(2 * k) * P::kPlaneFloats] = std::cos(phi);
+                at[std::size_t(2 * k + 1) * P::kPlaneFloats] = std::sin(phi);
+                for (int j = 0; j < J; ++j)
+                    at[std::size_t(2 * S + k * J + j) * P::kPlaneFloats] = gtaoStepSpacing(k, j, J, power, noise[1]);
+            }
+        }
+    planes.slices = S, planes.steps = J, planes.power = power;
+    return true;
 }
 bool& gtaoNoisePlanesForTest() {
     static bool use = true;
@@ -160,30 +183,6 @@ void edgesAndNormals(const detail::GtaoSetup& s, Region work, std::vector<std::u
 // The 8-bit storage of xegtaoStorage: A / 1.5 as UNORM8.
 float xegtaoStore(float a) { return std::nearbyint(std::clamp(a / 1.5f, 0.0f, 1.0f) * 255.0f) / 255.0f * 1.5f; }
 
-// The vector pass's noise planes for s's slices and steps (gtao_simd.hpp), kept in
-// `planes` while those stay; false (none made) past GtaoNoisePlanes::kMaxPlanes.
-bool makeNoisePlanes(const detail::GtaoSetup& s, detail::GtaoNoisePlanes& planes) {
-    using P = detail::GtaoNoisePlanes;
-    const int S = s.slices, J = s.steps;
-    if (S * (J + 2) > P::kMaxPlanes) return false;
-    if (planes.slices == S && planes.steps == J) return true;
-    planes.values.assign(std::size_t(S * (J + 2)) * P::kPlaneFloats, 0.0f);
-    for (int row = 0; row < 64; ++row)
-        for (int col = 0; col < P::kStride; ++col) {
-            const std::size_t cell = std::size_t(row * 64 + (col & 63));
-            float* at = planes.values.data() + std::size_t(row * P::kStride + col);
-            for (int k = 0; k < S; ++k) {
-                const float phi = s.sliceAngle(k, s.noiseS[cell]);
-                at[std::size_t(2 * k) * P::kPlaneFloats] = std::cos(phi);
-                at[std::size_t(2 * k + 1) * P::kPlaneFloats] = std::sin(phi);
-                for (int j = 0; j < J; ++j)
-                    at[std::size_t(2 * S + k * J + j) * P::kPlaneFloats] = s.stepSpacing(k, j, s.noiseT[cell]);
-            }
-        }
-    planes.slices = S, planes.steps = J;
-    return true;
-}
-
 struct Workspace {
     ZPyramid chain;
     detail::GtaoNoisePlanes noisePlanes;
@@ -309,7 +308,7 @@ ImageF gtaoImpl(ImageView<const float> depth, const Camera& camera, const GtaoPa
             case detail::GtaoTexelPath::Tables: in.floatTexels = in.floatIndex = in.arithmeticTexels = false; break;
         }
         in.lodScale = float(std::exp2(2.0 - 2.0 * double(s.mipOffset)));
-        if (detail::gtaoNoisePlanesForTest() && makeNoisePlanes(s, ws.noisePlanes))
+        if (detail::gtaoNoisePlanesForTest() && detail::gtaoNoisePlanes(p, ws.noisePlanes))
             in.noisePlanes = ws.noisePlanes.values.data();
         in.clampEverywhere = detail::gtaoClampEverywhereForTest();
     }

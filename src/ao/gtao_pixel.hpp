@@ -28,6 +28,20 @@ inline float gtaoFastAcos(float x) {
     return x >= 0.0f ? r : kPi - r;
 }
 
+//! Slice k of S's screen angle phi from the cell's slice noise xs (sections 5.3, 7).
+inline float gtaoSliceAngle(int k, int slices, float xs) { return (float(k) + xs) / float(slices) * kPi; }
+//! ((j + xj) / J)^power: power 2 as one product (what a correctly rounded pow gives).
+inline float gtaoSpacing(float u, float power) { return power == 2.0f ? u * u : std::pow(u, power); }
+//! Step j's distance along slice k as a fraction of r before the closest step's offset:
+//! spacing((j + xj) / J) with xj the cell's step noise xt turned by the golden ratio
+//! (sections 5.5, 7).
+inline float gtaoStepSpacing(int k, int j, int steps, float power, float xt) {
+    const float base = float(k + j * steps) * 0.6180339887498948f;
+    const float xjRaw = xt + base;
+    const float xj = xjRaw - std::floor(xjRaw);
+    return gtaoSpacing((float(j) + xj) / float(steps), power);
+}
+
 //! The unit vector of n, or (0, 0, 0) where it has none (zero length, not finite).
 inline Vec3 unitOrZero(Vec3 n) {
     const float len = std::sqrt(dot(n, n));
@@ -95,19 +109,8 @@ struct GtaoSetup {
         }
     }
     float acos(float x) const { return fastAcos ? gtaoFastAcos(x) : std::acos(x); }
-    //! Slice k's screen angle phi from the cell's slice noise xs (sections 5.3, 7).
-    float sliceAngle(int k, float xs) const { return (float(k) + xs) / float(slices) * kPi; }
-    //! Step j's distance along slice k as a fraction of r before the closest step's offset:
-    //! spacing((j + xj) / J) with xj the cell's step noise xt turned by the golden ratio
-    //! (sections 5.5, 7).
-    float stepSpacing(int k, int j, float xt) const {
-        const float base = float(k + j * steps) * 0.6180339887498948f;
-        const float xjRaw = xt + base;
-        const float xj = xjRaw - std::floor(xjRaw);
-        return spacing((float(j) + xj) / float(steps));
-    }
-    //! ((j + xj) / J)^power: power 2 as one product (what a correctly rounded pow gives).
-    float spacing(float u) const { return spacingPower == 2.0f ? u * u : std::pow(u, spacingPower); }
+    float sliceAngle(int k, float xs) const { return gtaoSliceAngle(k, slices, xs); }
+    float stepSpacing(int k, int j, float xt) const { return gtaoStepSpacing(k, j, steps, spacingPower, xt); }
 };
 
 //! Section 5.1: the edges L, R, T, B of (x, y) from level-0 t (1 = connected), unquantised;

@@ -4,6 +4,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "ssfx/ao/gtao.hpp"
+
 namespace ssfx::ao::detail {
 
 struct GtaoSimdInput {
@@ -61,8 +63,12 @@ struct GtaoNoisePlanes {
     //! Planes beyond this many (S (J + 2) > 512: 10 MiB) are not made.
     static constexpr int kMaxPlanes = 512;
     int slices = 0, steps = 0;
+    float power = 0.0f;  //!< sampleDistributionPower
     std::vector<float> values;
 };
+//! Makes `planes` for p's slices, steps and sampleDistributionPower (kept while those stay);
+//! false, and none made, past kMaxPlanes.
+bool gtaoNoisePlanes(const GtaoParams& p, GtaoNoisePlanes& planes);
 
 //! How the vector pass finds each sample's texel (GtaoSimdInput): the one product where the
 //! setup found it exact (its index in floats where the chain is small enough, else in
