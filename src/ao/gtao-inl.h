@@ -7,11 +7,11 @@
 // from the setup's noise planes (GtaoNoisePlanes; without them, Highway's cosine and sine); with
 // the exact arc cosine sin(gamma), cos(gamma +- pi/2) and the integral's cos(2 h - gamma) come
 // from the cosines they are functions of (sqrt(1 - c^2), angle-sum identities); the falloff
-// multiplies by 1 / (f Re), the level compares |s|^2 with the squared thresholds of
-// round(log2 |s| - mipOffset) instead of taking a logarithm, and (without the planes) slice
-// k's direction is slice 0's turned by k pi / slices (angle sums). That moves A by ulps and,
-// in rare pixels, a rounded sample offset or its chain level by one; the tests hold this path
-// to the oracle within a stated bound (tests/ao/test_gtao.cpp).
+// multiplies by 1 / (f Re), the level is read from the exponent of |s|^2 scaled (the
+// thresholds of round(log2 |s| - mipOffset)) instead of taking a logarithm, and (without the
+// planes) slice k's direction is slice 0's turned by k pi / slices (angle sums). That moves A
+// by ulps and, in rare pixels, a rounded sample offset or its chain level by one; the tests
+// hold this path to the oracle within a stated bound (tests/ao/test_gtao.cpp).
 #if defined(SSFX_AO_GTAO_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef SSFX_AO_GTAO_INL_H_
 #undef SSFX_AO_GTAO_INL_H_
