@@ -14,7 +14,10 @@ layout(set = 0, binding = 1, r32f) uniform writeonly image2D aOut;   // work reg
 layout(set = 0, binding = 2, r32f) uniform readonly image2D z0;      // buffer pixels
 layout(set = 0, binding = 3, r32f) uniform readonly image2D edges;   // work region
 
-float edgeOf(int packed, int side) { return crDiv(float((packed >> (2 * side)) & 3), 3.0); }
+// float(q) / 3 correctly rounded for q = 0 .. 3 (the CPU's division), as constants: 1/3 and
+// 2/3 rounded to float.
+const float kThirds[4] = float[4](0.0, 0.3333333432674408, 0.6666666865348816, 1.0);
+float edgeOf(int packed, int side) { return kThirds[(packed >> (2 * side)) & 3]; }
 
 void main() {
     ivec2 p;

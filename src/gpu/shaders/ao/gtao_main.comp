@@ -6,7 +6,10 @@
 // samples (either side) point-sampled from the chain level the step's distance picks, each
 // raising its side's horizon cosine with the falloff weight; the slice's visibility from the
 // two horizons. A before the denoiser (may exceed 1), sky 1. The cosines, sines, arc cosines,
-// log2 and pow are the device's; everything else is the CPU's floats.
+// log2 and pow are the device's, and so are division and square root (not corrected by crDiv
+// and crSqrt as in the other passes: this pass is held to a bound, not to the CPU's bits, and
+// the corrections took 45 % of its time on lavapipe); the rest is the CPU's float operations
+// in its order (precise).
 #define SSFX_GTAO_TABLES_BINDING 3
 #include "gtao.glsl"
 
@@ -25,6 +28,13 @@ float gtaoAcos(float x) {
     precise float r = (kHalfPi - 0.156583 * ax) * root;
     precise float other = kPi - r;
     return x >= 0.0 ? r : other;
+}
+// unitOrZero with the device's square root and division (gtao.glsl's gtaoUnitOrZero, which
+// the normals pass uses, corrects them to the CPU's bits).
+vec3 unitOrZeroDevice(vec3 n) {
+    const float len = sqrt(gtaoDot(n, n));
+    if (!(len > 0.0) || isinf(len) || isnan(len)) return vec3(0.0);
+    return vec3(n.x / len, n.y / len, n.z / len);
 }
 // GLSL's cos is specified on [-pi, pi]: 2 h - gamma reaches 2.5 pi.
 float cosReduced(float a) {
@@ -49,16 +59,16 @@ void gtaoSample(int px, int py, int m, vec3 c, vec3 v, float start, inout float 
     const float ts = chainT(m, px, py);
     if (isinf(ts)) return;  // sky: weight 0
     precise vec3 dv = gtaoPosition(px, py, -ts) - c;
-    const float len = crSqrt(gtaoDot(dv, dv));
-    const float cs = crDiv(gtaoDot(dv, v), len);
+    const float len = sqrt(gtaoDot(dv, dv));
+    const float cs = gtaoDot(dv, v) / len;
     float lenW = len;
     if (gt.toc1 != 1.0) {
         precise float tz = gt.toc1 * dv.z;
         precise float s = (dv.x * dv.x + dv.y * dv.y) + tz * tz;
-        lenW = crSqrt(s);
+        lenW = sqrt(s);
     }
     precise float num = gt.re - lenW;
-    const float w = clamp(crDiv(num, gt.fRe), 0.0, 1.0);
+    const float w = clamp(num / gt.fRe, 0.0, 1.0);
     precise float cw = start + w * (cs - start);
     if (gt.thickness > 0.0 && cw < h) {
         precise float hh = h + gt.thickness * (cw - h);  // the paper's thickness heuristic
@@ -73,31 +83,31 @@ float pixelA(int x, int y) {
     if (isinf(t0)) return 1.0;  // sky: unoccluded
     precise float t = t0 * 0.99999;
     const vec3 c = gtaoPosition(x, y, -t);
-    const float invLen = crDiv(1.0, crSqrt(gtaoDot(c, c)));
+    const float invLen = 1.0 / sqrt(gtaoDot(c, c));
     precise vec3 v = -c * invLen;
     vec3 n = imageLoad(normals, ivec2(x - pc.regionX, y - pc.regionY)).xyz;
     if (n.x == 0.0 && n.y == 0.0 && n.z == 0.0) n = v;
-    const float r = crDiv(pc.radiusS, t);  // rNum / t
-    precise float fade = crDiv(10.0 - r, 100.0);
+    const float r = pc.radiusS / t;  // rNum / t
+    precise float fade = (10.0 - r) / 100.0;
     const float v0 = gt.nearFade != 0 ? 0.5 * clamp(fade, 0.0, 1.0) : 0.0;
-    const float smin = crDiv(1.3, r);
+    const float smin = 1.3 / r;
     const int ni = 2 * (((y - gt.guard) & 63) * 64 + ((x - gt.guard) & 63));
     const vec2 noise = vec2(gt.noise[ni], gt.noise[ni + 1]);
     precise float sum = 0.0;
     for (int k = 0; k < gt.slices; ++k) {
-        precise float phi = crDiv(float(k) + noise.x, float(gt.slices)) * kPi;
+        precise float phi = (float(k) + noise.x) / float(gt.slices) * kPi;
         const float cphi = cos(phi), sphi = sin(phi);
         const vec3 d = vec3(cphi, sphi, 0.0);
         precise float ox = cphi * r, oy = -sphi * r;  // screen y is down
         const float dv = gtaoDot(d, v);
         precise vec3 dp = d - dv * v;
-        const vec3 axis = gtaoUnitOrZero(gtaoCross(dp, v));
+        const vec3 axis = unitOrZeroDevice(gtaoCross(dp, v));
         const float na = gtaoDot(n, axis);
         precise vec3 np = n - na * axis;
-        const float l = crSqrt(gtaoDot(np, np));
+        const float l = sqrt(gtaoDot(np, np));
         float cg = 1.0, gamma = 0.0;
         if (l > 0.0) {
-            cg = clamp(crDiv(gtaoDot(np, v), l), 0.0, 1.0);
+            cg = clamp(gtaoDot(np, v) / l, 0.0, 1.0);
             const float side = gtaoDot(dp, np);
             const float a = gtaoAcos(cg);
             gamma = side > 0.0 ? a : side < 0.0 ? -a : 0.0;
@@ -111,13 +121,13 @@ float pixelA(int x, int y) {
             precise float base = float(k + j * gt.steps) * 0.6180339887498948;
             precise float xjRaw = noise.y + base;
             precise float xj = xjRaw - floor(xjRaw);
-            const float s = crDiv(float(j) + xj, float(gt.steps));
+            precise float s = (float(j) + xj) / float(gt.steps);
             precise float sp = s * s;
             const float spacing = gt.spacingPower == 2.0 ? sp : pow(s, gt.spacingPower);
             precise float u = spacing + smin;
             precise float sx = u * ox, sy = u * oy;
             precise float len2 = sx * sx + sy * sy;
-            precise float lodRaw = log2(crSqrt(len2)) - gt.mipOffset;
+            precise float lodRaw = log2(sqrt(len2)) - gt.mipOffset;
             const float lod = clamp(lodRaw, 0.0, 5.0);
             precise float lodHalf = lod + 0.5;
             const int m = min(4, int(floor(lodHalf)));
@@ -133,7 +143,7 @@ float pixelA(int x, int y) {
         precise float i1 = ((cg + 2.0 * h1 * sg) - cosReduced(twoH1)) * 0.25;
         sum += lp * (i0 + i1);
     }
-    precise float mean = crDiv(v0 + sum, float(gt.slices));
+    precise float mean = (v0 + sum) / float(gt.slices);
     const float a = max(0.0, mean);
     return max(0.03, gt.finalPower == 1.0 ? a : pow(a, gt.finalPower));
 }
