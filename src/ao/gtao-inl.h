@@ -192,7 +192,8 @@ struct GtaoLanes {
         // bits; else derived here from the noise, slice k's cosine and sine from slice 0's by
         // the angle-sum identities (phi_k = phi_0 + k pi / S).
         using Planes = GtaoNoisePlanes;
-        const float* planeRow = in.noisePlanes + std::ptrdiff_t((y - in.guard) & 63) * Planes::kStride;
+        const float* planeRow =
+            in.noisePlanes ? in.noisePlanes + std::ptrdiff_t((y - in.guard) & 63) * Planes::kStride : nullptr;
         auto plane = [&](int q) {  // plane q at the lanes' cells: one load where the row's copy allows
             const float* row = planeRow + std::ptrdiff_t(q) * Planes::kPlaneFloats;
             if (hn::Lanes(df) <= std::size_t(Planes::kStride - 64)) return hn::LoadU(df, row + ((x - in.guard) & 63));
