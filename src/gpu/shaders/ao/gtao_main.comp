@@ -42,13 +42,26 @@ float cosReduced(float a) {
     return cos(r);
 }
 
+// floor((2 p + 1) wm / (2 n)) for p in [0, n) without an integer division (which a CPU device
+// such as lavapipe runs lane by lane): a float estimate, within one of it whatever the
+// device's rounding (relative error about 1e-7 on a quotient below 2^15), then one
+// correction by the integer remainder. The same integers as the division.
+int texelOf(int p, int wm, int n) {
+    const int num = (2 * p + 1) * wm, den = 2 * n;
+    int q = int(floor(float(num) * (1.0 / float(den))));
+    const int r = num - q * den;
+    q -= r < 0 ? 1 : 0;
+    q += r >= den ? 1 : 0;
+    return q;
+}
+
 // t of chain level m at buffer pixel (px, py): point sampling at the full-resolution centre,
 // floor((p + 0.5) W_m / W) with p clamped into the buffer.
 float chainT(int m, int px, int py) {
     const ivec2 size = ivec2(pc.width, pc.height);
     const ivec2 sm = max(ivec2(1), size >> m);
     const ivec2 q = clamp(ivec2(px, py), ivec2(0), size - 1);
-    const ivec2 texel = ((2 * q + 1) * sm) / (2 * size);
+    const ivec2 texel = ivec2(texelOf(q.x, sm.x, size.x), texelOf(q.y, sm.y, size.y));
     return -texelFetch(chain, texel, m).r;
 }
 
