@@ -31,8 +31,8 @@ bool gtaoNoisePlanes(const GtaoParams& p, GtaoNoisePlanes& planes) {
     if (planes.slices == S && planes.steps == J && planes.power == power) return true;
     planes.values.assign(std::size_t(S * (J + 2)) * P::kPlaneFloats, 0.0f);
     for (int row = 0; row < 64; ++row)
-        for (int col = 0; col < P::kStride; ++col) {
-            const std::array<float, 2> noise = gtaoNoise(col & 63, row);
+        for (int col = 0; col < 64; ++col) {
+            const std::array<float, 2> noise = gtaoNoise(col, row);
             float* at = planes.values.data() + std::size_t(row * P::kStride + col);
             for (int k = 0; k < S; ++k) {
                 const float phi = gtaoSliceAngle(k, S, noise[0]);
@@ -41,6 +41,11 @@ bool gtaoNoisePlanes(const GtaoParams& p, GtaoNoisePlanes& planes) {
                 for (int j = 0; j < J; ++j)
                     at[std::size_t(2 * S + k * J + j) * P::kPlaneFloats] = gtaoStepSpacing(k, j, J, power, noise[1]);
             }
+        }
+    for (std::size_t q = 0; q < std::size_t(S * (J + 2)); ++q)  // each row's copy of its first cells
+        for (int row = 0; row < 64; ++row) {
+            float* r = planes.values.data() + q * P::kPlaneFloats + std::size_t(row * P::kStride);
+            std::copy(r, r + (P::kStride - 64), r + 64);
         }
     planes.slices = S, planes.steps = J, planes.power = power;
     return true;
