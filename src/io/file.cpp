@@ -56,7 +56,7 @@ InputFile::InputFile(const std::string& path, const char* kind) : path_(path) {
     checkPath(path);
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec))
-        throw Error(fmt::format("{}: is a directory, not a {} file", path, kind));
+        throw Error(fmt::format("{}: is a directory, not {} data", path, kind));
     file_ = std::fopen(path.c_str(), "rb");
     if (!file_) throw Error(fmt::format("{}: cannot open for reading ({})", path, std::strerror(errno)));
 }
@@ -68,7 +68,7 @@ InputFile::~InputFile() {
 std::vector<std::uint8_t> InputFile::signature(std::span<const std::uint8_t> magic, const char* kind) {
     std::vector<std::uint8_t> bytes;
     if (append(bytes, magic.size()) < magic.size() || std::memcmp(bytes.data(), magic.data(), magic.size()) != 0)
-        throw Error(fmt::format("{}: not a {} file (wrong signature)", path_, kind));
+        throw Error(fmt::format("{}: not in {} format (wrong signature)", path_, kind));
     return bytes;
 }
 
