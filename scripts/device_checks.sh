@@ -6,7 +6,7 @@
 #     the CPU's bytes, hardware-mode agreement, AO and GTAO parity, adaptive shading parity;
 #  3. #34: ssfx bench --backend vulkan in both sampling modes on the drawing, the photograph
 #     and a rendered scene at 1920x1080, the drawing and the photograph (tiled 2 x 2) at
-#     3840x2160, and the photograph on both edge paths;
+#     3840x2160, the photograph on both edge paths and with both of ddaa2's search reads;
 #  4. #37: bench_ao's GPU entries for SAO and GTAO (low, high, ultra) at 1080p + 64 px guard
 #     band, per-pass times from GPU timestamps;
 #  5. #38: ssfx deferred on Sponza at 1920x1080, m = 4, both lookups, stall 400 and 4000, with
@@ -133,6 +133,14 @@ aa_all() {
             --methods blur fxaa3c fxaa3d ddaa1 ddaa2 --reps "$reps" --warmup "$warmup" \
             --image "$SCRATCH/photo.png" --json "$R/aa-photo-$size-$sampling-$path.json" | tail -8
         done
+      done
+      # ddaa2's search reads in the hardware mode: the GPU's default (the device's filtered
+      # reads) against the texel pairs that a CPU device takes (docs/gpu.md), same run.
+      for reads in 1 0; do
+        echo "== photo-$size, hardware, SSFX_GPU_COORDINATE_READS=$reads"
+        SSFX_GPU_COORDINATE_READS=$reads "$S" bench --backend vulkan $DEVOPT -p sampling=hardware \
+          --methods blur fxaa3d ddaa2 --reps "$reps" --warmup "$warmup" --image "$SCRATCH/photo.png" \
+          --json "$R/aa-photo-$size-hardware-reads$reads.json" | tail -6
       done
     else
       echo "device_checks: no PIL here: the photograph's runs are left out"

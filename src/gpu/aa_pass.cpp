@@ -816,12 +816,20 @@ AaPass::AaPass(std::shared_ptr<vkx::Context> ctx, std::string_view method, const
             second.stage = SSFX_AA_STAGE_EDGES;
             second.groupX = SSFX_AA_EDGE_GROUP;
             second.groupY = 1;
-            // (fxaa3d's walk as quad reads by index was slower on lavapipe in a paired A/B run:
-            // its four fetches stay, and the coordinate path's arithmetic is cheap there.)
-            second.pairReads = sampling == Sampling::Model && std::holds_alternative<aa::Ddaa2Params>(m.params);
-            // Tests of the coordinate reads set SSFX_GPU_COORDINATE_READS (docs/gpu.md).
-            if (const char* v = std::getenv("SSFX_GPU_COORDINATE_READS"); v && std::string_view(v) == "1")
-                second.pairReads = 0;
+            // ddaa2's search reads as texel pairs by index (ppaa.glsl's pairRead): always in the
+            // model (the same bytes, without the model's coordinates and weights); in the
+            // hardware mode on a CPU device, where two fetches cost less than one filtered read
+            // (lavapipe: ddaa2's edge dispatch about 0.75 of its time, paired runs), while a
+            // GPU's texture unit filters in one instruction (unmeasured: SSFX_GPU_COORDINATE_READS=0
+            // forces the pairs there). (fxaa3d's walk as quad reads by index was slower on
+            // lavapipe in a paired A/B run: its four fetches stay, and the coordinate path's
+            // arithmetic is cheap there.)
+            second.pairReads =
+                std::holds_alternative<aa::Ddaa2Params>(m.params) && (sampling == Sampling::Model || cpuDevice);
+            // SSFX_GPU_COORDINATE_READS=1 forces the reads at coordinates (tests), =0 the pairs
+            // (measurements of the hardware mode on a GPU; docs/gpu.md).
+            if (const char* v = std::getenv("SSFX_GPU_COORDINATE_READS"); v && (*v == '0' || *v == '1') && v[1] == 0)
+                second.pairReads = std::holds_alternative<aa::Ddaa2Params>(m.params) && *v == '0';
             m.edgeSpec = second;
             m.edgePass = makePipeline(c, shaderFor(m.method->id, sampling), second);
             detail::AaSpecialization lumaSpec = spec;

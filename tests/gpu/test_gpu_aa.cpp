@@ -333,6 +333,10 @@ INSTANTIATE_TEST_SUITE_P(Methods, GpuSrgbParity, ::testing::ValuesIn(textureMeth
 // so the methods that read texels only are within 1.5 + delta levels; a bilinear weight
 // error is not so bounded in sRGB terms (a dark result beside a bright texel magnifies it up
 // to 12.92 times), so ssaax2 joins the deciding methods' 99 % rule, at 1.5 + e + delta.
+// ddaa2's search reads are either the device's filtered reads (a GPU's default) or, on a CPU
+// device, the mean of the two texels they lie half-way between (pairRead: what the filter
+// returns there up to its rounding); both run here, each under the same rule
+// (SSFX_GPU_COORDINATE_READS=1 and =0).
 TEST(GpuAa, HardwareSamplingAgreesWithinTheDevicePrecision) {
     REQUIRE_DEVICE();
     const auto props = context()->physical.getProperties();
@@ -346,43 +350,55 @@ TEST(GpuAa, HardwareSamplingAgreesWithinTheDevicePrecision) {
             const bool bounded = texelsOnly || (m.id == "ssaax2" && !texture);
             MethodSettings settings;
             if (texture) settings.params = {{"texture", 1}};
-            gpu::AaPass pass(context(), m.id, settings, gpu::Sampling::Hardware);
-            const char* suffix = m.inputScale == 4 ? "x4" : m.inputScale == 2 ? "x2" : "";
-            std::vector<std::pair<std::string, ImageRgba8>> inputs;
-            if (dir)
-                for (const char* name : {"lines", "circles"})
-                    inputs.emplace_back(name, io::readPng(fmt::format("{}/{}{}.png", *dir, name, suffix)));
-            else  // the evaluation's synthetic drawing (random noise would be all near-ties, not a drawing)
-                inputs.emplace_back("synthetic", eval::syntheticScene(256, 144, m.inputScale));
-            for (const auto& [name, in] : inputs) {
-                const double delta = 0.01 + (m.id == "ssaax2" ? 2.5 * 0x1p-24 * in.width() * 255.0 * 1.159 : 0.0);
-                const double decode = texture ? 0.5 : 0.0;
-                const int within = int(std::floor(1.0 + decode +
-                                                  (texelsOnly         ? 0.0
-                                                   : m.id == "ssaax2" ? 1.159 * e
-                                                                      : e) +
-                                                  delta));
-                const ImageRgba8 cpu = m.run(in.view(), settings, Exec{}), gpu = pass.run(in.view());
-                std::int64_t identical = 0, close = 0;
-                int largest = 0;
-                for (int y = 0; y < cpu.height(); ++y)
-                    for (int x = 0; x < cpu.width(); ++x) {
-                        const Rgba8 p = cpu(x, y), q = gpu(x, y);
-                        const int d = std::max({std::abs(p.r - q.r), std::abs(p.g - q.g), std::abs(p.b - q.b)});
-                        identical += d == 0;
-                        close += d <= within;
-                        largest = std::max(largest, d);
-                    }
-                const double n = double(cpu.pixelCount());
-                std::printf(
-                    "hardware %-7s %-5s %-8s: %.3f %% identical, %.3f %% within %d levels, largest difference %d "
-                    "(%d-bit sub-texel precision)\n",
-                    std::string(m.id).c_str(), texture ? "srgb" : "unorm", name.c_str(), 100.0 * double(identical) / n,
-                    100.0 * double(close) / n, within, largest, bits);
-                if (bounded)
-                    EXPECT_LE(largest, within) << m.id << " on " << name;
-                else
-                    EXPECT_GE(double(close) / n, 0.99) << m.id << " on " << name;
+            const bool searches = m.id == "ddaa2" || m.id == "ddaa2p";
+            // SSFX_GPU_COORDINATE_READS: "1" the filtered search reads, "0" the pairs.
+            for (const std::string_view coordinates : {"1", "0"}) {
+                if (!searches && coordinates == "0") continue;
+                if (searches) {
+                    ASSERT_EQ(setenv("SSFX_GPU_COORDINATE_READS", coordinates.data(), 1), 0);
+                }
+                gpu::AaPass pass(context(), m.id, settings, gpu::Sampling::Hardware);
+                unsetenv("SSFX_GPU_COORDINATE_READS");
+                const std::string label = std::string(m.id) + (!searches            ? ""
+                                                               : coordinates == "1" ? ", filtered search reads"
+                                                                                    : ", pair search reads");
+                const char* suffix = m.inputScale == 4 ? "x4" : m.inputScale == 2 ? "x2" : "";
+                std::vector<std::pair<std::string, ImageRgba8>> inputs;
+                if (dir)
+                    for (const char* name : {"lines", "circles"})
+                        inputs.emplace_back(name, io::readPng(fmt::format("{}/{}{}.png", *dir, name, suffix)));
+                else  // the evaluation's synthetic drawing (random noise would be all near-ties, not a drawing)
+                    inputs.emplace_back("synthetic", eval::syntheticScene(256, 144, m.inputScale));
+                for (const auto& [name, in] : inputs) {
+                    const double delta = 0.01 + (m.id == "ssaax2" ? 2.5 * 0x1p-24 * in.width() * 255.0 * 1.159 : 0.0);
+                    const double decode = texture ? 0.5 : 0.0;
+                    const int within = int(std::floor(1.0 + decode +
+                                                      (texelsOnly         ? 0.0
+                                                       : m.id == "ssaax2" ? 1.159 * e
+                                                                          : e) +
+                                                      delta));
+                    const ImageRgba8 cpu = m.run(in.view(), settings, Exec{}), gpu = pass.run(in.view());
+                    std::int64_t identical = 0, close = 0;
+                    int largest = 0;
+                    for (int y = 0; y < cpu.height(); ++y)
+                        for (int x = 0; x < cpu.width(); ++x) {
+                            const Rgba8 p = cpu(x, y), q = gpu(x, y);
+                            const int d = std::max({std::abs(p.r - q.r), std::abs(p.g - q.g), std::abs(p.b - q.b)});
+                            identical += d == 0;
+                            close += d <= within;
+                            largest = std::max(largest, d);
+                        }
+                    const double n = double(cpu.pixelCount());
+                    std::printf(
+                        "hardware %-7s %-5s %-8s: %.3f %% identical, %.3f %% within %d levels, largest difference %d "
+                        "(%d-bit sub-texel precision)\n",
+                        label.c_str(), texture ? "srgb" : "unorm", name.c_str(), 100.0 * double(identical) / n,
+                        100.0 * double(close) / n, within, largest, bits);
+                    if (bounded)
+                        EXPECT_LE(largest, within) << label << " on " << name;
+                    else
+                        EXPECT_GE(double(close) / n, 0.99) << label << " on " << name;
+                }
             }
         }
     expectNoValidationMessages();

@@ -178,12 +178,20 @@ vec3 sampleModel(AxisPos ax, AxisPos ay, int ox, int oy) {
 // texture=srgb: 0.5 a + 0.5 b of the decoded texels (sampleModel's sum, whose other two
 // products are zero).
 vec3 pairRead(ivec2 a, ivec2 b) {
+#ifdef SSFX_DEVICE_ARITHMETIC
+    // The hardware mode (aa_pass.cpp takes this on CPU devices): the mean of the device's
+    // decoded texels, what its bilinear filter returns there (weight exactly 1/2) up to its
+    // own rounding. (With texture=srgb the decode is the sRGB view's, in linear light, as the
+    // filter's.)
+    return (fetchValue(a.x, a.y) + fetchValue(b.x, b.y)) * 0.5;
+#else
     if (spec_srgb != 0) {
         EXACT vec3 half_ = fetchValue(a.x, a.y) * 0.5 + fetchValue(b.x, b.y) * 0.5;
         return half_;
     }
     const uvec3 k = 8u * (texel8(a.x, a.y) + texel8(b.x, b.y));
     return vec3(sixteenthLevel(k.r), sixteenthLevel(k.g), sixteenthLevel(k.b));
+#endif
 }
 
 // A bilinear read at texture coordinate (u, v) plus an integer texel offset: the model, or
