@@ -6,6 +6,7 @@
 #include <memory>
 #include <mutex>
 
+#include "ssfx/aa/registry.hpp"
 #include "ssfx/core/error.hpp"
 #ifdef SSFX_HAVE_GPU
 #include "ssfx/gpu/aa.hpp"
@@ -52,6 +53,9 @@ void takeSamplingParam(std::vector<std::string>& params, BackendOptions& o) {
 Applier makeApplier(const BackendOptions& o, const MethodInfo& m, const MethodSettings& settings, const Exec& exec) {
     checkBackendOptions(o);
     if (o.backend != "vulkan") {
+        // The parameters checked now, not with the first frame: a bad value is the run's
+        // error, not a frame's (the GPU pass checks them when it is made).
+        resolveParams(m.id, settings);
         const MethodInfo* method = &m;
         return {[method, settings, exec](ImageView<const Rgba8> in) { return method->run(in, settings, exec); },
                 [] { return -1.0; }, "cpu", ""};

@@ -134,6 +134,11 @@ head -c $((2 * FRAME)) /dev/zero >two.rgba
 check i9 2 "$SSFX" --max-pixels 1000 aa --raw 64x48 -m noaa two.rgba -o -
 contains i9 i9.err "exceeds the pixel limit of 1000 (--max-pixels)"
 check i9_ok 0 "$SSFX" --max-pixels 3072 aa --raw 64x48 -m noaa two.rgba -o -
+# A bad parameter value is the run's error, named before any frame is read: no frame in the
+# message, no output.
+check i9_param 2 "$SSFX" aa --raw 64x48 -m ddaa2 -p strength=inf two.rgba -o i9_param.rgba
+contains i9_param i9_param.err "ssfx: error: ddaa2: strength = inf is not in [0, 100]"
+absent i9_param i9_param.rgba
 
 # ---- 10. standard output that cannot be written --------------------------------------------
 mkdir -p q10 && cp scene/scene.png q10/a.png && "$SSFX" testscene --out q10w --width 512 --height 384 >/dev/null 2>&1
