@@ -140,7 +140,7 @@ aa_all() {
         echo "== photo-$size, hardware, SSFX_GPU_COORDINATE_READS=$reads"
         SSFX_GPU_COORDINATE_READS=$reads "$S" bench --backend vulkan $DEVOPT -p sampling=hardware \
           --methods blur fxaa3d ddaa2 --reps "$reps" --warmup "$warmup" --image "$SCRATCH/photo.png" \
-          --json "$R/aa-photo-$size-hardware-reads$reads.json" | tail -6
+          --json "$R/aa-photo-$size-hardware-reads$reads.json"
       done
     else
       echo "device_checks: no PIL here: the photograph's runs are left out"
