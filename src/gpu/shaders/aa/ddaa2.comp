@@ -13,7 +13,8 @@ const int kBatch = 3;  // samples per round: EDGE_STEP_LIST = [3, 3, 3, 3, 3]
 // offset k along it, minus localAverage. With spec_pairReads (aa_pass.cpp: the CPU's
 // searchReadsArePairReads holds for this size) that read is the pair read of the texels
 // `along` pixels from (x, y) along the edge, across at rows/columns +a0 and +a0 + 1: the
-// same value from two fetches and no coordinate arithmetic.
+// same value from two fetches and no coordinate arithmetic (in the hardware mode, which takes
+// it on CPU devices, the mean of the device's two texels: its filter's value up to rounding).
 float searchDelta(int x, int y, int a0, int along, bool horizontal, float cu, float cv, float move, int k,
                   float localAverage) {
     if (spec_pairReads != 0) {
