@@ -824,12 +824,12 @@ AaPass::AaPass(std::shared_ptr<vkx::Context> ctx, std::string_view method, const
             // forces the pairs there). (fxaa3d's walk as quad reads by index was slower on
             // lavapipe in a paired A/B run: its four fetches stay, and the coordinate path's
             // arithmetic is cheap there.)
-            second.pairReads =
-                std::holds_alternative<aa::Ddaa2Params>(m.params) && (sampling == Sampling::Model || cpuDevice);
+            bool pairs = sampling == Sampling::Model || cpuDevice;
             // SSFX_GPU_COORDINATE_READS=1 forces the reads at coordinates (tests), =0 the pairs
             // (measurements of the hardware mode on a GPU; docs/gpu.md).
             if (const char* v = std::getenv("SSFX_GPU_COORDINATE_READS"); v && (*v == '0' || *v == '1') && v[1] == 0)
-                second.pairReads = std::holds_alternative<aa::Ddaa2Params>(m.params) && *v == '0';
+                pairs = *v == '0';
+            second.pairReads = std::holds_alternative<aa::Ddaa2Params>(m.params) && pairs;
             m.edgeSpec = second;
             m.edgePass = makePipeline(c, shaderFor(m.method->id, sampling), second);
             detail::AaSpecialization lumaSpec = spec;

@@ -351,17 +351,19 @@ TEST(GpuAa, HardwareSamplingAgreesWithinTheDevicePrecision) {
             MethodSettings settings;
             if (texture) settings.params = {{"texture", 1}};
             const bool searches = m.id == "ddaa2" || m.id == "ddaa2p";
-            // SSFX_GPU_COORDINATE_READS: "1" the filtered search reads, "0" the pairs.
-            for (const std::string_view coordinates : {"1", "0"}) {
-                if (!searches && coordinates == "0") continue;
-                if (searches) {
-                    ASSERT_EQ(setenv("SSFX_GPU_COORDINATE_READS", coordinates.data(), 1), 0);
+            // ddaa2's search reads (SSFX_GPU_COORDINATE_READS): "1" the filtered reads, "0" the
+            // pairs; the other methods run once, as they are.
+            const std::vector<const char*> searchReads =
+                searches ? std::vector<const char*>{"1", "0"} : std::vector<const char*>{nullptr};
+            for (const char* coordinates : searchReads) {
+                if (coordinates) {
+                    ASSERT_EQ(setenv("SSFX_GPU_COORDINATE_READS", coordinates, 1), 0);
                 }
                 gpu::AaPass pass(context(), m.id, settings, gpu::Sampling::Hardware);
                 unsetenv("SSFX_GPU_COORDINATE_READS");
-                const std::string label = std::string(m.id) + (!searches            ? ""
-                                                               : coordinates == "1" ? ", filtered search reads"
-                                                                                    : ", pair search reads");
+                const std::string label = std::string(m.id) + (!coordinates          ? ""
+                                                               : *coordinates == '1' ? ", filtered search reads"
+                                                                                     : ", pair search reads");
                 const char* suffix = m.inputScale == 4 ? "x4" : m.inputScale == 2 ? "x2" : "";
                 std::vector<std::pair<std::string, ImageRgba8>> inputs;
                 if (dir)
