@@ -823,7 +823,8 @@ AaPass::AaPass(std::shared_ptr<vkx::Context> ctx, std::string_view method, const
             // GPU's texture unit filters in one instruction (unmeasured: SSFX_GPU_COORDINATE_READS=0
             // forces the pairs there). (fxaa3d's walk as quad reads by index was slower on
             // lavapipe in a paired A/B run: its four fetches stay, and the coordinate path's
-            // arithmetic is cheap there.)
+            // arithmetic is cheap there. In the hardware mode too: its pairs and quads by index
+            // took the photograph's edge dispatch from 26-29 to 33-35 ms, docs/gpu.md.)
             bool pairs = sampling == Sampling::Model || cpuDevice;
             // SSFX_GPU_COORDINATE_READS=1 forces the reads at coordinates (tests), =0 the pairs
             // (measurements of the hardware mode on a GPU; docs/gpu.md).
