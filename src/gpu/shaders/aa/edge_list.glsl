@@ -5,11 +5,12 @@
 //   vec3 edgeColour(int x, int y): the method's colour for an edge pixel.
 // LUMA writes the luma plane (each texel's edgeLuma once, four per plane texel: ppaa.glsl's
 // lumaAt reads it) and copies every pixel to the output unchanged; CLASSIFY lists the edge
-// pixels; EDGES (an indirect dispatch of 64 x 1 groups) computes the listed pixels over their
-// copies. LUMA and CLASSIFY run one invocation per plane texel (four pixels of a row) in
-// 16 x 16 groups: a CPU driver pays per invocation, and CLASSIFY reads the 3x3 lumas of four
-// pixels from 5 to 9 plane loads, not 20 to 36 (lavapipe at 1920x1080: the two dispatches
-// took 80 ms with one pixel per invocation and an r32f plane, 37 ms like this).
+// pixels; EDGES (an indirect dispatch of 64 x 1 groups, each over a run of the list) computes
+// the listed pixels over their copies. LUMA and CLASSIFY run one invocation per plane texel
+// (four pixels of a row) in 16 x 16 groups: a CPU driver pays per invocation, and CLASSIFY
+// reads the 3x3 lumas of four pixels from 5 to 9 plane loads, not 20 to 36 (lavapipe at
+// 1920x1080: the two dispatches took 80 ms with one pixel per invocation and an r32f plane,
+// 37 ms like this).
 // Why a list: a driver that runs shaders as masked SIMD code (lavapipe) runs the whole edge
 // computation, search loops included, for every group of lanes that holds one edge pixel,
 // and about 40 % of 8-pixel runs hold one; from the list every lane is an edge pixel. The
@@ -59,8 +60,17 @@ LumaRow lumaRow(int q, int y) {
 
 void main() {
     if (spec_stage == SSFX_AA_STAGE_EDGES) {
-        const uint stride = edges.groupsX * uint(SSFX_AA_EDGE_GROUP);
-        for (uint i = gl_GlobalInvocationID.x; i < edges.count; i += stride) {
+        // Each group walks a contiguous run of the list (its lanes consecutive entries), not
+        // every groupsX-th block of it: the list follows the image's rows, so a group's
+        // reads and writes stay in a band of rows that the caches hold (lavapipe, 256
+        // groups: the edge dispatch took 0.71 to 0.98 of the strided walk's time, every
+        // method in both modes, paired runs; docs/gpu.md). Iterations per invocation are the
+        // same either way (the loop budget's count). With one pixel per invocation (a GPU)
+        // both walks are the same.
+        const uint lanes = uint(SSFX_AA_EDGE_GROUP);
+        const uint per = (edges.count + edges.groupsX * lanes - 1u) / (edges.groupsX * lanes) * lanes;
+        const uint begin = gl_WorkGroupID.x * per, end = min(begin + per, edges.count);
+        for (uint i = begin + gl_LocalInvocationID.x; i < end; i += lanes) {
             const uint e = edges.pixels[i];
             const ivec2 p = ivec2(e & 0xffffu, e >> 16u);
             store(p, edgeColour(p.x, p.y), alphaAt(p.x, p.y));
