@@ -61,8 +61,9 @@ LumaRow lumaRow(int q, int y) {
 void main() {
     if (spec_stage == SSFX_AA_STAGE_EDGES) {
         // Each group walks a contiguous run of the list (its lanes consecutive entries), not
-        // every groupsX-th block of it: the list follows the image's rows, so a group's
-        // reads and writes stay in a band of rows that the caches hold (lavapipe, 256
+        // every groupsX-th block of it: the classify groups append in about the image's
+        // order (a band of rows at a time), so a group's reads and writes stay in a band of
+        // rows that the caches hold (lavapipe, 256
         // groups: the edge dispatch took 0.71 to 0.98 of the strided walk's time, every
         // method in both modes, paired runs; docs/gpu.md). Iterations per invocation are the
         // same either way (the loop budget's count). With one pixel per invocation (a GPU)
