@@ -63,11 +63,10 @@ void main() {
         // Each group walks a contiguous run of the list (its lanes consecutive entries), not
         // every groupsX-th block of it: the classify groups append in about the image's
         // order (a band of rows at a time), so a group's reads and writes stay in a band of
-        // rows that the caches hold (lavapipe, 256
-        // groups: the edge dispatch took 0.71 to 0.98 of the strided walk's time, every
-        // method in both modes, paired runs; docs/gpu.md). Iterations per invocation are the
-        // same either way (the loop budget's count). With one pixel per invocation (a GPU)
-        // both walks are the same.
+        // rows that the caches hold (lavapipe, 256 groups: the edge dispatch took a median
+        // 0.85 of the strided walk's time, 80 paired runs over every method, both modes and
+        // three images; docs/gpu.md). Iterations per invocation are the same either way (the
+        // loop budget's count). With one pixel per invocation (a GPU) both walks are the same.
         const uint lanes = uint(SSFX_AA_EDGE_GROUP);
         const uint per = (edges.count + edges.groupsX * lanes - 1u) / (edges.groupsX * lanes) * lanes;
         const uint begin = gl_WorkGroupID.x * per, end = min(begin + per, edges.count);
