@@ -64,7 +64,7 @@
 #define SSFX_AA_STAGE_LUMA 3   // before CLASSIFY: the luma plane (SSFX_AA_BINDING_LUMA)
 #define SSFX_AA_EDGE_GROUP 64  // edge pass: invocations per work group (1-D)
 // Edge pass: at most this many groups (Vulkan's minimum maxComputeWorkGroupCount); each
-// invocation loops over the list with the dispatch's stride. The specialization constant
+// group loops over a contiguous run of the list (edge_list.glsl). The specialization constant
 // edgeGroups lowers it on CPU devices (aa_pass.cpp: kCpuEdgeGroups).
 #define SSFX_AA_EDGE_MAX_GROUPS 65535
 
