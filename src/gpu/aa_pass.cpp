@@ -299,6 +299,13 @@ bool everyChannel(const float* values, vk::Format f, Ok ok) {
     return true;
 }
 
+// A device's default that an environment variable set to exactly "0" or "1" overrides, for
+// the tests and measurements of the other choice (docs/gpu.md); any other value leaves it.
+bool envChoice(const char* name, bool byDefault) {
+    const char* v = std::getenv(name);
+    return v && (*v == '0' || *v == '1') && v[1] == 0 ? *v == '1' : byDefault;
+}
+
 // Whether the device's decode of an 8-bit texel channel is the model's level for every
 // value, in both input formats of `texture`: unorm, v / 255 rounded to float32 (kUnorm8);
 // sRGB, the CPU's kSrgb8. It is a function of 256 inputs, so checking each one decides it:
@@ -742,9 +749,7 @@ AaPass::AaPass(std::shared_ptr<vkx::Context> ctx, std::string_view method, const
     if (std::holds_alternative<aa::Ddaa2Params>(m.params)) {
         // ddaa2's batched search rounds: faster on lavapipe, slower on the H200 (ddaa2.comp).
         // SSFX_GPU_BATCHED_SEARCH=0|1 forces either, for tests and measurements (docs/gpu.md).
-        spec.batchedSearch = cpuDevice ? 1 : 0;
-        if (const char* v = std::getenv("SSFX_GPU_BATCHED_SEARCH"); v && (*v == '0' || *v == '1'))
-            spec.batchedSearch = *v - '0';
+        spec.batchedSearch = envChoice("SSFX_GPU_BATCHED_SEARCH", cpuDevice) ? 1 : 0;
     }
     vkx::guarded("creating the GPU pass", [&] {
         m.sampler = vk::raii::Sampler(
@@ -825,11 +830,9 @@ AaPass::AaPass(std::shared_ptr<vkx::Context> ctx, std::string_view method, const
             // lavapipe in a paired A/B run: its four fetches stay, and the coordinate path's
             // arithmetic is cheap there. In the hardware mode too: its pairs and quads by index
             // took the photograph's edge dispatch from 26-29 to 33-35 ms, docs/gpu.md.)
-            bool pairs = sampling == Sampling::Model || cpuDevice;
             // SSFX_GPU_COORDINATE_READS=1 forces the reads at coordinates (tests), =0 the pairs
             // (measurements of the hardware mode on a GPU; docs/gpu.md).
-            if (const char* v = std::getenv("SSFX_GPU_COORDINATE_READS"); v && (*v == '0' || *v == '1') && v[1] == 0)
-                pairs = *v == '0';
+            const bool pairs = !envChoice("SSFX_GPU_COORDINATE_READS", !(sampling == Sampling::Model || cpuDevice));
             second.pairReads = std::holds_alternative<aa::Ddaa2Params>(m.params) && pairs;
             m.edgeSpec = second;
             m.edgePass = makePipeline(c, shaderFor(m.method->id, sampling), second);

@@ -350,6 +350,16 @@ TEST(GpuAa, HardwareSamplingAgreesWithinTheDevicePrecision) {
             const bool bounded = texelsOnly || (m.id == "ssaax2" && !texture);
             MethodSettings settings;
             if (texture) settings.params = {{"texture", 1}};
+            const char* suffix = m.inputScale == 4 ? "x4" : m.inputScale == 2 ? "x2" : "";
+            // The inputs and the CPU's outputs, once for every way of reading.
+            std::vector<std::pair<std::string, ImageRgba8>> inputs;
+            if (dir)
+                for (const char* name : {"lines", "circles"})
+                    inputs.emplace_back(name, io::readPng(fmt::format("{}/{}{}.png", *dir, name, suffix)));
+            else  // the evaluation's synthetic drawing (random noise would be all near-ties, not a drawing)
+                inputs.emplace_back("synthetic", eval::syntheticScene(256, 144, m.inputScale));
+            std::vector<ImageRgba8> cpuOutputs;
+            for (const auto& input : inputs) cpuOutputs.push_back(m.run(input.second.view(), settings, Exec{}));
             const bool searches = m.id == "ddaa2" || m.id == "ddaa2p";
             // ddaa2's search reads (SSFX_GPU_COORDINATE_READS): "1" the filtered reads, "0" the
             // pairs; the other methods run once, as they are.
@@ -364,14 +374,8 @@ TEST(GpuAa, HardwareSamplingAgreesWithinTheDevicePrecision) {
                 const std::string label = std::string(m.id) + (!coordinates          ? ""
                                                                : *coordinates == '1' ? ", filtered search reads"
                                                                                      : ", pair search reads");
-                const char* suffix = m.inputScale == 4 ? "x4" : m.inputScale == 2 ? "x2" : "";
-                std::vector<std::pair<std::string, ImageRgba8>> inputs;
-                if (dir)
-                    for (const char* name : {"lines", "circles"})
-                        inputs.emplace_back(name, io::readPng(fmt::format("{}/{}{}.png", *dir, name, suffix)));
-                else  // the evaluation's synthetic drawing (random noise would be all near-ties, not a drawing)
-                    inputs.emplace_back("synthetic", eval::syntheticScene(256, 144, m.inputScale));
-                for (const auto& [name, in] : inputs) {
+                for (std::size_t i = 0; i < inputs.size(); ++i) {
+                    const auto& [name, in] = inputs[i];
                     const double delta = 0.01 + (m.id == "ssaax2" ? 2.5 * 0x1p-24 * in.width() * 255.0 * 1.159 : 0.0);
                     const double decode = texture ? 0.5 : 0.0;
                     const int within = int(std::floor(1.0 + decode +
@@ -379,7 +383,8 @@ TEST(GpuAa, HardwareSamplingAgreesWithinTheDevicePrecision) {
                                                        : m.id == "ssaax2" ? 1.159 * e
                                                                           : e) +
                                                       delta));
-                    const ImageRgba8 cpu = m.run(in.view(), settings, Exec{}), gpu = pass.run(in.view());
+                    const ImageRgba8& cpu = cpuOutputs[i];
+                    const ImageRgba8 gpu = pass.run(in.view());
                     std::int64_t identical = 0, close = 0;
                     int largest = 0;
                     for (int y = 0; y < cpu.height(); ++y)
