@@ -5,24 +5,36 @@
 # <file>.inc, which the target's sources include as the body of a `const std::uint32_t[]`
 # (see ssfx/vk/compute.hpp: makeShaderModule). glslc writes a depfile, so a change to an
 # #include'd file rebuilds the shaders that include it. SPIRV_DIR <dir>: also write each as a
-# binary <dir>/<file>.spv (installed for integrators). VARIANT <name> <define>: also compile
-# each with -D<define>=1 as <file>.<name>.inc (and .spv): e.g. the GPU passes' hardware mode,
-# which drops the model's exact arithmetic (docs/gpu.md).
+# binary <dir>/<file>.spv (installed for integrators). VARIANT <name> <defines> [<name>
+# <defines>]...: also compile each with -D<define>=1 for each of the comma-separated <defines>
+# as <file>.<name>.inc (and .spv): e.g. the GPU passes' hardware mode, which drops the model's
+# exact arithmetic (docs/gpu.md). NO_PLAIN: the variants only.
 function(ssfx_add_shaders)
-  cmake_parse_arguments(ARG "" "TARGET;SOURCE_DIR;SPIRV_DIR" "SHADERS;VARIANT" ${ARGN})
+  cmake_parse_arguments(ARG "NO_PLAIN" "TARGET;SOURCE_DIR;SPIRV_DIR" "SHADERS;VARIANT" ${ARGN})
   if(NOT ARG_TARGET OR NOT ARG_SOURCE_DIR OR NOT ARG_SHADERS)
     message(FATAL_ERROR "ssfx_add_shaders: TARGET, SOURCE_DIR and SHADERS are required")
   endif()
   set(out ${CMAKE_CURRENT_BINARY_DIR}/generated/${ARG_TARGET})
   set(incs)
-  set(variants "_")  # "_": the plain build
-  set(defines_ "")
-  if(ARG_VARIANT)
-    list(GET ARG_VARIANT 0 vname)
-    list(GET ARG_VARIANT 1 vdefine)
-    list(APPEND variants ${vname})
-    set(defines_${vname} -D${vdefine}=1)
+  set(variants)
+  if(NOT ARG_NO_PLAIN)
+    set(variants "_")  # "_": the plain build
   endif()
+  set(defines_ "")
+  list(LENGTH ARG_VARIANT nvariant)
+  math(EXPR odd "${nvariant} % 2")
+  if(odd)
+    message(FATAL_ERROR "ssfx_add_shaders: VARIANT takes pairs <name> <defines>")
+  endif()
+  while(ARG_VARIANT)
+    list(POP_FRONT ARG_VARIANT vname vdefines)
+    list(APPEND variants ${vname})
+    string(REPLACE "," ";" vdefines "${vdefines}")
+    set(defines_${vname})
+    foreach(d ${vdefines})
+      list(APPEND defines_${vname} -D${d}=1)
+    endforeach()
+  endwhile()
   foreach(shader ${ARG_SHADERS})
     foreach(v ${variants})
       if(v STREQUAL "_")

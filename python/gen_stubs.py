@@ -46,7 +46,7 @@ for m in ssfx.methods("aa"):
         f"def aa(image: NDArray[np.uint8], method: Literal[{m['id']!r}]{default}, {preset}threads: int = 0, "
         "filtering: Literal['gpu', 'exact'] = 'gpu', out: NDArray[np.uint8] | None = None, "
         "backend: Literal['cpu', 'vulkan'] = 'cpu', device: str | None = None, "
-        "sampling: Literal['model', 'hardware'] = 'model', edges: Literal['auto', 'list', 'one-pass'] = 'auto'"
+        "sampling: Literal['model', 'hardware'] = 'model', edges: Literal['auto', 'list', 'one-pass', 'segments'] = 'auto'"
         f"{kwargs(m['params'])}) -> NDArray[np.uint8]:\n"
         f'    """{doc(m)}"""\n\n')
 out.append("def methods(family: Literal['aa', 'ao'] | None = None) -> list[dict]: ...\n")

@@ -126,7 +126,7 @@ aa_all() {
     if python3 "$SCRATCH/tile.py" "$photo" "$SCRATCH" "$size" "$big"; then
       aa "photo-$size" --image "$SCRATCH/photo.png"
       aa "photo-$big" --image "$SCRATCH/photo_big.png"
-      for path in list one-pass; do
+      for path in list one-pass segments; do
         echo "== photo-$size, edges=$path (both modes)"
         for sampling in model hardware; do
           "$S" bench --backend vulkan $DEVOPT -p "sampling=$sampling" -p "edges=$path" \

@@ -18,7 +18,7 @@ void addBackendOptions(CLI::App* cmd, BackendOptions& o) {
     cmd->add_option("--backend", o.backend,
                     "cpu (default) or vulkan: the methods as Vulkan compute passes (-p sampling=model, the default, "
                     "gives the CPU's bytes; -p sampling=hardware uses the device's texture filtering and arithmetic; "
-                    "-p edges=list|one-pass chooses the edge-test methods' path, default auto)")
+                    "-p edges=list|one-pass|segments chooses the edge-test methods' path, default auto)")
         ->check(CLI::IsMember({"cpu", "vulkan"}));
     cmd->add_option("--device", o.device,
                     "With --backend vulkan: a device index or part of its name ('ssfx devices' lists them; default: "
@@ -41,8 +41,8 @@ void takeSamplingParam(std::vector<std::string>& params, BackendOptions& o) {
         } else if (p.rfind("edges=", 0) == 0) {
             o.edges = p.substr(6);
             if (o.backend != "vulkan") throw Error("-p edges=... is a parameter of the vulkan backend");
-            if (o.edges != "auto" && o.edges != "list" && o.edges != "one-pass")
-                throw Error(fmt::format("edges '{}': expected auto, list or one-pass", o.edges));
+            if (o.edges != "auto" && o.edges != "list" && o.edges != "one-pass" && o.edges != "segments")
+                throw Error(fmt::format("edges '{}': expected auto, list, one-pass or segments", o.edges));
         } else {
             rest.push_back(p);
         }

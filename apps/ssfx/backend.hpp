@@ -18,7 +18,7 @@ struct BackendOptions {
     std::string backend = "cpu";
     std::string device;    //!< vulkan: an index or part of a name
     std::string sampling;  //!< vulkan: model (default) or hardware, from -p sampling=...
-    std::string edges;     //!< vulkan: auto (default), list or one-pass, from -p edges=...
+    std::string edges;     //!< vulkan: auto (default), list, one-pass or segments, from -p edges=...
 };
 
 //! Adds --backend and --device to `cmd`.
@@ -28,7 +28,7 @@ void addBackendOptions(CLI::App* cmd, BackendOptions& o);
 //! vulkan. (A blank --device is refused where devices are chosen, vkx::Context.)
 void checkBackendOptions(const BackendOptions& o);
 
-//! Takes -p sampling=model|hardware and -p edges=auto|list|one-pass out of `params` into
+//! Takes -p sampling=model|hardware and -p edges=auto|list|one-pass|segments out of `params` into
 //! o.sampling and o.edges (an error with the cpu backend, where the sampling model is
 //! --filtering and the edge path does not exist).
 void takeSamplingParam(std::vector<std::string>& params, BackendOptions& o);

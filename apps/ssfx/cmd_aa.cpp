@@ -367,8 +367,9 @@ void addAaCommand(CLI::App& app) {
         "A '%' in a plain (not numbered) file name is written %%: ssfx aa -m ddaa2 100%%.png -o out%%.png\n"
         "GPU: --backend vulkan runs the method as a Vulkan compute pass (docs/gpu.md); with the default\n"
         "-p sampling=model the output bytes are the CPU's, -p sampling=hardware uses the device's filtering\n"
-        "and arithmetic (the fast path, exact to the device's precision). -p edges=list|one-pass chooses how\n"
-        "the edge-test methods run (default auto: the list on a CPU device, one pass on a GPU).\n"
+        "and arithmetic (the fast path, exact to the device's precision). -p edges=list|one-pass|segments\n"
+        "chooses how the edge-test methods run (default auto: on a CPU device the list, or the segments\n"
+        "for fxaa3c and ddaa1 with sampling=hardware; one pass on a GPU).\n"
         "  ssfx aa -m ddaa2 --backend vulkan in.png -o out.png");
     cmd->callback([opts] { run(*opts); });
 }

@@ -157,7 +157,7 @@ void run(BenchOptions o) {
     if (!o.params.empty())
         throw Error(
             fmt::format("bench: -p takes texture=unorm|srgb|both, and with --backend vulkan "
-                        "sampling=model|hardware and edges=auto|list|one-pass, only ('{}')",
+                        "sampling=model|hardware and edges=auto|list|one-pass|segments, only ('{}')",
                         o.params[0]));
     const bool gpu = o.backend.backend == "vulkan";
     // Inputs at scale 1, 2 and 4 (the resolves take the supersampled render).
@@ -262,7 +262,7 @@ void addBenchCommand(CLI::App& app) {
     cmd->add_option(
         "-p,--param", opts->params,
         "texture=unorm (default), srgb or both (each method also as ID:srgb, in the same rounds); with --backend "
-        "vulkan: sampling=model (default) or sampling=hardware; edges=auto (default), list or one-pass");
+        "vulkan: sampling=model (default) or sampling=hardware; edges=auto (default), list, one-pass or segments");
     addBackendOptions(cmd, opts->backend);
     cmd->footer(
         "CPU: wall-clock time of each method call. --backend vulkan: GPU timestamps around each pass's\n"

@@ -38,7 +38,7 @@ def test_model_gives_the_cpu_bytes(method):
     scale = {"ssaax2": 2, "ddaa2p": 2, "ssaax4": 4}.get(method, 1)
     img = random_image(24 * scale, 40 * scale, 3)
     cpu = ssfx.aa(img, method)
-    for edges in ("auto", "list", "one-pass"):
+    for edges in ("auto", "list", "one-pass", "segments"):
         assert np.array_equal(ssfx.aa(img, method, backend="vulkan", edges=edges), cpu), (method, edges)
 
 
@@ -91,7 +91,7 @@ def test_bad_choices_are_refused(kwargs, words):
 @needs_device
 @pytest.mark.parametrize("kwargs, words", [
     (dict(sampling="fast"), "sampling 'fast': expected model or hardware"),
-    (dict(edges="tiles"), "edges 'tiles': expected auto, list or one-pass"),
+    (dict(edges="tiles"), "edges 'tiles': expected auto, list, one-pass or segments"),
     (dict(filtering="exact"), "exact filtering is a CPU option"),
 ])
 def test_bad_vulkan_settings_are_refused(kwargs, words):

@@ -151,6 +151,31 @@ const std::uint32_t kBlur[] = {
 const std::uint32_t kBlurDevice[] = {
 #include "shaders/blur.comp.device.inc"
 };
+// The edge methods' segments stage (EdgePath::Segments), in modules of their own.
+const std::uint32_t kFxaa3cSegments[] = {
+#include "shaders/fxaa3c.comp.segments.inc"
+};
+const std::uint32_t kFxaa3cSegmentsDevice[] = {
+#include "shaders/fxaa3c.comp.segments.device.inc"
+};
+const std::uint32_t kFxaa3dSegments[] = {
+#include "shaders/fxaa3d.comp.segments.inc"
+};
+const std::uint32_t kFxaa3dSegmentsDevice[] = {
+#include "shaders/fxaa3d.comp.segments.device.inc"
+};
+const std::uint32_t kDdaa1Segments[] = {
+#include "shaders/ddaa1.comp.segments.inc"
+};
+const std::uint32_t kDdaa1SegmentsDevice[] = {
+#include "shaders/ddaa1.comp.segments.device.inc"
+};
+const std::uint32_t kDdaa2Segments[] = {
+#include "shaders/ddaa2.comp.segments.inc"
+};
+const std::uint32_t kDdaa2SegmentsDevice[] = {
+#include "shaders/ddaa2.comp.segments.device.inc"
+};
 const std::uint32_t kFxaa3c[] = {
 #include "shaders/fxaa3c.comp.inc"
 };
@@ -191,16 +216,26 @@ const std::uint32_t kSsaax4Device[] = {
 struct Shader {
     std::string_view id;
     std::span<const std::uint32_t> model, device;
+    std::span<const std::uint32_t> segments = {}, segmentsDevice = {};  // the edge methods'
 };
 // ddaa2p is ddaa2's shader followed by ssaax2's (spec ppaa.md "ddaa2p").
-const Shader kShaders[] = {
-    {"noaa", kNoaa, kNoaaDevice},       {"blur", kBlur, kBlurDevice},       {"fxaa3c", kFxaa3c, kFxaa3cDevice},
-    {"fxaa3d", kFxaa3d, kFxaa3dDevice}, {"ddaa1", kDdaa1, kDdaa1Device},    {"ddaa2", kDdaa2, kDdaa2Device},
-    {"ssaax2", kSsaax2, kSsaax2Device}, {"ssaax4", kSsaax4, kSsaax4Device}, {"ddaa2p", kDdaa2, kDdaa2Device}};
+const Shader kShaders[] = {{"noaa", kNoaa, kNoaaDevice},
+                           {"blur", kBlur, kBlurDevice},
+                           {"fxaa3c", kFxaa3c, kFxaa3cDevice, kFxaa3cSegments, kFxaa3cSegmentsDevice},
+                           {"fxaa3d", kFxaa3d, kFxaa3dDevice, kFxaa3dSegments, kFxaa3dSegmentsDevice},
+                           {"ddaa1", kDdaa1, kDdaa1Device, kDdaa1Segments, kDdaa1SegmentsDevice},
+                           {"ddaa2", kDdaa2, kDdaa2Device, kDdaa2Segments, kDdaa2SegmentsDevice},
+                           {"ssaax2", kSsaax2, kSsaax2Device},
+                           {"ssaax4", kSsaax4, kSsaax4Device},
+                           {"ddaa2p", kDdaa2, kDdaa2Device, kDdaa2Segments, kDdaa2SegmentsDevice}};
 
-std::span<const std::uint32_t> shaderFor(std::string_view id, Sampling sampling) {
+// The method's module for the sampling mode: its segments stage's with `segments`.
+std::span<const std::uint32_t> shaderFor(std::string_view id, Sampling sampling, bool segments = false) {
     for (const Shader& s : kShaders)
-        if (s.id == id) return sampling == Sampling::Hardware ? s.device : s.model;
+        if (s.id == id) {
+            if (segments) return sampling == Sampling::Hardware ? s.segmentsDevice : s.segments;
+            return sampling == Sampling::Hardware ? s.device : s.model;
+        }
     throw Error(fmt::format("{}: no GPU pass", id));
 }
 
@@ -423,8 +458,17 @@ std::uint32_t edgeGroupsFor(vk::DeviceSize pixels, int loopsPerPixel, std::uint3
     const vk::DeviceSize perGroup = perInvocation * SSFX_AA_EDGE_GROUP;
     return std::uint32_t(std::min<vk::DeviceSize>((pixels + perGroup - 1) / perGroup, SSFX_AA_EDGE_MAX_GROUPS));
 }
-// EdgePath::Auto's choice per kind of device (docs/gpu.md: measured on lavapipe and an H200).
-constexpr EdgePath kCpuEdgePath = EdgePath::List;
+// EdgePath::Auto's choice per kind of device, mode and method (docs/gpu.md: measured on
+// lavapipe and an H200). On a CPU device the segments for fxaa3c and ddaa1 in the hardware
+// mode (where the device has their subgroup operations: 0.63 to 1.07 of the list's time,
+// median about 0.75, three images); the list for fxaa3d and ddaa2, whose long searches ran
+// about as fast or slower from segments (ddaa2 on the rendered atrium 1.23 and 0.96), and in
+// the model, whose exact lumas the segments compute about five times a pixel (their rows'
+// and their edge pixels' own) where the list computes each once (1.1 to 2.0x the list's time).
+EdgePath cpuEdgePath(std::string_view id, Sampling sampling, bool segmentsRun) {
+    const bool segments = sampling == Sampling::Hardware && (id == "fxaa3c" || id == "ddaa1") && segmentsRun;
+    return segments ? EdgePath::Segments : EdgePath::List;
+}
 constexpr EdgePath kGpuEdgePath = EdgePath::OnePass;
 
 // The methods whose shaders have an edge test and run as three dispatches (edge_list.glsl).
@@ -459,14 +503,21 @@ Sampling parseSampling(std::string_view name) {
 }
 
 std::string_view edgePathName(EdgePath p) {
-    return p == EdgePath::List ? "list" : p == EdgePath::OnePass ? "one-pass" : "auto";
+    switch (p) {
+        case EdgePath::List: return "list";
+        case EdgePath::OnePass: return "one-pass";
+        case EdgePath::Segments: return "segments";
+        case EdgePath::Auto: break;
+    }
+    return "auto";
 }
 
 EdgePath parseEdgePath(std::string_view name) {
     if (name == "auto") return EdgePath::Auto;
     if (name == "list") return EdgePath::List;
     if (name == "one-pass") return EdgePath::OnePass;
-    throw Error(fmt::format("edges '{}': expected auto, list or one-pass", name));
+    if (name == "segments") return EdgePath::Segments;
+    throw Error(fmt::format("edges '{}': expected auto, list, one-pass or segments", name));
 }
 
 bool hasGpuPass(std::string_view method) {
@@ -480,7 +531,7 @@ struct AaPass::Impl {
     const MethodInfo* method = nullptr;
     AaParams params;
     Sampling sampling = Sampling::Model;
-    EdgePath edgePath = EdgePath::List;  // resolved: List or OnePass
+    EdgePath edgePath = EdgePath::List;  // resolved: List, OnePass or Segments
     bool deviceDecode = false;           // model: the probe found the device's decode of the input format exact
     bool srgb = false;                   // texture=srgb: sRGB input views (spec srgb)
     bool srgbDecodeTable = false;        // texture=srgb, model: the device's decoded values to levels by a table
@@ -510,7 +561,8 @@ struct AaPass::Impl {
     // (edgeGroupsFor).
     int edgeLoops = 0;
     std::uint32_t loopBudget = 0;
-    std::unique_ptr<vkx::ComputePipeline> onePass, onePassPairs;  // coordinate reads; ddaa2's pair reads
+    std::unique_ptr<vkx::ComputePipeline> onePass, onePassPairs;    // coordinate reads; ddaa2's pair reads
+    std::unique_ptr<vkx::ComputePipeline> segments, segmentsPairs;  // EdgePath::Segments, the same two
     detail::AaSpecialization spec{};
     vkx::Image scratch;  // ddaa2p: ddaa2's 2x output
     // Its storage view (unorm), and the view the resolve samples: the same for texture=unorm,
@@ -530,8 +582,9 @@ struct AaPass::Impl {
     double lastEdgeShare = -1;
 
     // What a dispatch's invocations cover: the output's pixels, the luma plane's texels (the
-    // luma and classify dispatches), or the edge list (indirect).
-    enum class Grid { Pixels, LumaTexels, EdgeList };
+    // luma and classify dispatches), the edge list (indirect), or row segments of
+    // SSFX_AA_SEGMENT pixels (EdgePath::Segments).
+    enum class Grid { Pixels, LumaTexels, EdgeList, Segments };
 
     // Records one dispatch of p over the output; `list`: the edge list (or, for a shader that
     // declares it without using it, a stand-in) at SSFX_AA_BINDING_EDGES, with the luma plane
@@ -560,25 +613,32 @@ struct AaPass::Impl {
         if (grid == Grid::EdgeList)
             p.dispatchPushedIndirect(cmd, used, &c, list, 0);
         else
-            p.dispatchPushed(cmd, used, &c,
-                             groups(grid == Grid::LumaTexels ? lumaPlaneWidth(c.width) : std::uint32_t(c.outWidth)),
-                             groups(std::uint32_t(c.outHeight)));
+            p.dispatchPushed(cmd, used, &c, groups(invocationsX(grid, c)), groups(std::uint32_t(c.outHeight)));
         if (timed) timer->end(cmd, std::uint32_t(stages.size()), vk::PipelineStageFlagBits::eComputeShader);
     }
 
+    static std::uint32_t invocationsX(Grid grid, const AaConstants& c) {
+        const auto w = std::uint32_t(c.outWidth);
+        if (grid == Grid::LumaTexels) return lumaPlaneWidth(c.width);
+        if (grid == Grid::Segments) return vkx::groupCount(w, SSFX_AA_SEGMENT);
+        return w;
+    }
+
     // Records the method's own shader (not ddaa2p's resolve) from `in` to `out`: for an
-    // edge-test method its three dispatches, or its one pass (EdgePath::OnePass, or an image
-    // whose list would not fit).
+    // edge-test method its three dispatches, its dispatch over row segments
+    // (EdgePath::Segments), or its one pass (EdgePath::OnePass, or an image whose list would
+    // not fit).
     void dispatchMethod(const vk::raii::CommandBuffer& cmd, vk::ImageView in, vk::ImageLayout inLayout,
                         vk::ImageView out, const AaConstants& c) {
-        if (!edgePass) {
+        if (!hasEdgePass(method->id)) {
             dispatch(*pipeline, cmd, in, inLayout, out, c);
             return;
         }
         const vk::DeviceSize pixels = vk::DeviceSize(c.outWidth) * vk::DeviceSize(c.outHeight);
-        if (edgePath == EdgePath::OnePass || pixels > maxListPixels) {
-            // Stand-ins for the list and the luma plane, which stage 0 declares but does not use
-            // (its lumas are in the work group's tile).
+        const bool segmented = edgePath == EdgePath::Segments;
+        if (segmented || edgePath == EdgePath::OnePass || pixels > maxListPixels) {
+            // Stand-ins for the list and the luma plane, which stage 0 and the segments declare
+            // but do not use (their lumas are in the work group's tile or fetched).
             // (The list's is a buffer of its own: the shader declares the list writable, so
             // binding the tables there would count as a write of them for synchronization.)
             if (!*luma.image) ensureLuma(1, 1);
@@ -586,8 +646,12 @@ struct AaPass::Impl {
                 listStandIn = ctx->createBuffer(16, vk::BufferUsageFlagBits::eStorageBuffer, false);
             cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eComputeShader,
                                 {}, {}, {}, lumaDiscarded());
-            dispatch(onePassPipeline(c.width, c.height), cmd, in, inLayout, out, c, *listStandIn.buffer, Grid::Pixels,
-                     "one pass");
+            if (segmented)
+                dispatch(stagePipeline(true, c.width, c.height), cmd, in, inLayout, out, c, *listStandIn.buffer,
+                         Grid::Segments, "segments");
+            else
+                dispatch(stagePipeline(false, c.width, c.height), cmd, in, inLayout, out, c, *listStandIn.buffer,
+                         Grid::Pixels, "one pass");
             return;
         }
         ensureEdges(pixels);
@@ -620,16 +684,17 @@ struct AaPass::Impl {
         listedOf = pixels;
     }
 
-    // Stage 0 (made when first needed), with ddaa2's pair reads where the edge pass would
-    // use them (edgePipeline).
-    const vkx::ComputePipeline& onePassPipeline(int w, int h) {
+    // Stage 0 or the segments stage (made when first needed), with ddaa2's pair reads where
+    // the edge pass would use them (edgePipeline).
+    const vkx::ComputePipeline& stagePipeline(bool seg, int w, int h) {
         const bool pairs = edgeSpec.pairReads != 0 &&
                            aa::ddaa2SearchReadsArePairReads(w, h, std::get<aa::Ddaa2Params>(params).searchRounds);
-        std::unique_ptr<vkx::ComputePipeline>& p = pairs ? onePassPairs : onePass;
+        std::unique_ptr<vkx::ComputePipeline>& p =
+            seg ? (pairs ? segmentsPairs : segments) : (pairs ? onePassPairs : onePass);
         if (!p) {
             detail::AaSpecialization s = spec;
             s.pairReads = pairs ? 1 : 0;
-            p = makePipeline(*ctx, shaderFor(method->id, sampling), s);
+            p = makePipeline(*ctx, shaderFor(method->id, sampling, seg), s);
         }
         return *p;
     }
@@ -746,6 +811,18 @@ AaPass::AaPass(std::shared_ptr<vkx::Context> ctx, std::string_view method, const
     detail::AaSpecialization spec = detail::aaSpecialization(m.params, sampling);
     vkx::Context& c = *m.ctx;
     const bool cpuDevice = c.physical.getProperties().deviceType == vk::PhysicalDeviceType::eCpu;
+    // The segments stage sums and shuffles across a subgroup (edge_list.glsl).
+    const auto subgroup =
+        c.physical.getProperties2<vk::PhysicalDeviceProperties2, vk::PhysicalDeviceSubgroupProperties>()
+            .get<vk::PhysicalDeviceSubgroupProperties>();
+    const auto needed = vk::SubgroupFeatureFlagBits::eArithmetic | vk::SubgroupFeatureFlagBits::eShuffle;
+    const bool segmentsRun = (subgroup.supportedStages & vk::ShaderStageFlagBits::eCompute) &&
+                             (subgroup.supportedOperations & needed) == needed;
+    if (hasEdgePass(m.method->id) && edges == EdgePath::Segments && !segmentsRun)
+        throw Error(
+            fmt::format("{}: edges=segments needs subgroup arithmetic and shuffles in compute shaders, which "
+                        "this device does not have (edges=list or one-pass run on it)",
+                        m.method->id));
     if (std::holds_alternative<aa::Ddaa2Params>(m.params)) {
         // ddaa2's batched search rounds: faster on lavapipe, slower on the H200 (ddaa2.comp).
         // SSFX_GPU_BATCHED_SEARCH=0|1 forces either, for tests and measurements (docs/gpu.md).
@@ -801,13 +878,19 @@ AaPass::AaPass(std::shared_ptr<vkx::Context> ctx, std::string_view method, const
             if (cpuDevice) first.edgeGroups = kCpuEdgeGroups;
             // Tests of the loop budget lower it (SSFX_GPU_EDGE_GROUPS; docs/gpu.md).
             if (const char* v = std::getenv("SSFX_GPU_EDGE_GROUPS")) first.edgeGroups = std::max(1, std::atoi(v));
-            // Auto: the list where a driver runs shaders as masked SIMD code on a CPU (it runs
-            // the edge computation for every lane group holding one edge pixel), one pass on a
-            // GPU (no atomics, no plane, no barriers between dispatches). docs/gpu.md gives the
-            // measurements behind both.
-            m.edgePath = edges != EdgePath::Auto ? edges : cpuDevice ? kCpuEdgePath : kGpuEdgePath;
+            // Auto: where a driver runs shaders as masked SIMD code on a CPU (it runs the edge
+            // computation for every lane group holding one edge pixel) the segments, which
+            // spread a subgroup's edge pixels over its lanes, or the list, which spreads the
+            // image's (cpuEdgePath); one pass on a GPU (no atomics, no plane, no barriers
+            // between dispatches). docs/gpu.md gives the measurements behind each.
+            m.edgePath = edges != EdgePath::Auto ? edges
+                         : cpuDevice             ? cpuEdgePath(m.method->id, sampling, segmentsRun)
+                                                 : kGpuEdgePath;
         }
-        m.pipeline = makePipeline(c, shaderFor(m.method->id, sampling), first);
+        // The list's three pipelines only for the list path (the others' one pipeline is made
+        // when first used): a pipeline takes lavapipe about a second to compile.
+        const bool list = hasEdgePass(m.method->id) && m.edgePath == EdgePath::List;
+        if (!hasEdgePass(m.method->id) || list) m.pipeline = makePipeline(c, shaderFor(m.method->id, sampling), first);
         if (hasEdgePass(m.method->id)) {
             m.spec = spec;
             const vk::DeviceSize range = c.physical.getProperties().limits.maxStorageBufferRange;
@@ -835,10 +918,12 @@ AaPass::AaPass(std::shared_ptr<vkx::Context> ctx, std::string_view method, const
             const bool pairs = !envChoice("SSFX_GPU_COORDINATE_READS", !(sampling == Sampling::Model || cpuDevice));
             second.pairReads = std::holds_alternative<aa::Ddaa2Params>(m.params) && pairs;
             m.edgeSpec = second;
-            m.edgePass = makePipeline(c, shaderFor(m.method->id, sampling), second);
-            detail::AaSpecialization lumaSpec = spec;
-            lumaSpec.stage = SSFX_AA_STAGE_LUMA;
-            m.lumaPass = makePipeline(c, shaderFor(m.method->id, sampling), lumaSpec);
+            if (list) {
+                m.edgePass = makePipeline(c, shaderFor(m.method->id, sampling), second);
+                detail::AaSpecialization lumaSpec = spec;
+                lumaSpec.stage = SSFX_AA_STAGE_LUMA;
+                m.lumaPass = makePipeline(c, shaderFor(m.method->id, sampling), lumaSpec);
+            }
         }
         aa::Ssaax2Params resolveParams;  // ddaa2p's resolve reads ddaa2's output in the pass's format
         resolveParams.texture = detail::textureOf(m.params);

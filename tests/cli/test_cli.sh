@@ -332,12 +332,12 @@ if "$SSFX" --help 2>/dev/null | grep -qE '^ +render '; then
     cmp -s "$OUT/ddaa2.png" "$OUT/ddaa2_vk.png" || { echo "FAIL aa_vulkan: not the cpu's bytes"; fail=1; }
     check aa_vulkan_hw 0 $VK "$SSFX" aa -m ddaa2 --backend vulkan -p sampling=hardware "$OUT/scene/scene.png" -o "$OUT/ddaa2_hw.png"
     # Both paths of the edge-test methods (issue #34): the cpu's bytes.
-    for path in list one-pass; do
+    for path in list one-pass segments; do
       check aa_vulkan_$path 0 $VK "$SSFX" aa -m ddaa2 --backend vulkan -p edges=$path "$OUT/scene/scene.png" -o "$OUT/ddaa2_$path.png" --preset high
       cmp -s "$OUT/ddaa2.png" "$OUT/ddaa2_$path.png" || { echo "FAIL aa_vulkan_$path: not the cpu's bytes"; fail=1; }
     done
     check aa_edges_bad 2 $VK "$SSFX" aa -m ddaa2 --backend vulkan -p edges=tiles "$OUT/scene/scene.png" -o "$OUT/x.png"
-    contains aa_edges_bad "$OUT/aa_edges_bad.err" "expected auto, list or one-pass"
+    contains aa_edges_bad "$OUT/aa_edges_bad.err" "expected auto, list, one-pass or segments"
     check aa_edges_cpu 2 "$SSFX" aa -m ddaa2 -p edges=list "$OUT/scene/scene.png" -o "$OUT/x.png"
     contains aa_edges_cpu "$OUT/aa_edges_cpu.err" "vulkan backend"
     check aa_vulkan_resolve 0 $VK "$SSFX" aa -m ssaax4 --backend vulkan "$OUT/scene/scenex4.png" -o "$OUT/ssaax4_vk.png"

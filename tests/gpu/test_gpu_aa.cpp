@@ -80,12 +80,16 @@ ImageRgba8 inputFor(const Case& c, int scale, unsigned seed) {
 
 class GpuModelParity : public ::testing::TestWithParam<const MethodInfo*> {};
 
-// Both paths of the edge-test methods (gpu::EdgePath: the list and one pass; Auto picks one
-// per kind of device) on every generated image.
+// The edge-test methods' paths (Auto picks one per kind of device and method).
+const gpu::EdgePath kEdgePaths[] = {gpu::EdgePath::List, gpu::EdgePath::OnePass, gpu::EdgePath::Segments};
+
+// Every path of the edge-test methods (gpu::EdgePath) on every generated image: half noise,
+// so that whole subgroups of segments hold nothing but edge pixels, and widths that end
+// inside a segment.
 TEST_P(GpuModelParity, GeneratedImagesGiveTheCpuBytes) {
     REQUIRE_DEVICE();
     const MethodInfo& m = *GetParam();
-    for (const gpu::EdgePath path : {gpu::EdgePath::List, gpu::EdgePath::OnePass}) {
+    for (const gpu::EdgePath path : kEdgePaths) {
         gpu::AaPass pass(context(), m.id, {}, gpu::Sampling::Model, path);
         if (pass.edgePath() != path) continue;  // no edge test: one path
         unsigned seed = 7;
@@ -109,7 +113,7 @@ TEST_P(GpuModelParity, ReferenceDrawingsGiveTheCpuBytes) {
     if (!dir) GTEST_SKIP() << "../shared/reference/ppaa is absent";
     const MethodInfo& m = *GetParam();
     const char* suffix = m.inputScale == 4 ? "x4" : m.inputScale == 2 ? "x2" : "";
-    for (const gpu::EdgePath path : {gpu::EdgePath::List, gpu::EdgePath::OnePass}) {
+    for (const gpu::EdgePath path : kEdgePaths) {
         gpu::AaPass pass(context(), m.id, {}, gpu::Sampling::Model, path);
         if (pass.edgePath() != path) continue;  // no edge test: one path
         for (const char* name : {"lines", "circles"}) {
@@ -134,7 +138,7 @@ TEST_P(GpuSrgbParity, SrgbTexturesGiveTheCpuBytes) {
     const MethodInfo& m = *GetParam();
     MethodSettings srgb;
     srgb.params = {{"texture", 1}};
-    for (const gpu::EdgePath path : {gpu::EdgePath::List, gpu::EdgePath::OnePass}) {
+    for (const gpu::EdgePath path : kEdgePaths) {
         gpu::AaPass pass(context(), m.id, srgb, gpu::Sampling::Model, path);
         if (pass.edgePath() != path) continue;  // no edge test: one path
         unsigned seed = 300;
@@ -161,7 +165,7 @@ void expectCpuBytesWith(const char* var, const char* value, std::initializer_lis
     ASSERT_EQ(setenv(var, value, 1), 0);
     for (const char* id : ids)
         for (const int texture : textures)
-            for (const gpu::EdgePath path : {gpu::EdgePath::List, gpu::EdgePath::OnePass}) {
+            for (const gpu::EdgePath path : kEdgePaths) {
                 const MethodInfo& m = methodById(id);
                 MethodSettings settings;
                 settings.params = {{"texture", texture}};
@@ -582,10 +586,22 @@ TEST(GpuAa, RunReportsItsDispatchesAndTheListedShare) {
         ASSERT_EQ(one.lastDispatches().size(), 1u) << id;
         EXPECT_EQ(one.lastDispatches()[0].stage, "one pass") << id;
         EXPECT_EQ(one.lastEdgeShare(), -1.0) << id;
+        // The segments: one dispatch, no list.
+        gpu::AaPass seg(context(), id, {}, gpu::Sampling::Model, gpu::EdgePath::Segments);
+        (void)seg.run(split.view());
+        ASSERT_EQ(seg.lastDispatches().size(), 1u) << id;
+        EXPECT_EQ(seg.lastDispatches()[0].stage, "segments") << id;
+        EXPECT_EQ(seg.lastEdgeShare(), -1.0) << id;
     }
-    // Auto: the list on a CPU device, one pass on a GPU.
+    // Auto: on a CPU device the segments for fxaa3c and ddaa1 in the hardware mode, else the
+    // list; one pass on a GPU.
     const bool cpuDevice = context()->physical.getProperties().deviceType == vk::PhysicalDeviceType::eCpu;
+    const auto hardware = [](const char* id) {
+        return gpu::AaPass(context(), id, {}, gpu::Sampling::Hardware).edgePath();
+    };
     EXPECT_EQ(gpu::AaPass(context(), "ddaa2").edgePath(), cpuDevice ? gpu::EdgePath::List : gpu::EdgePath::OnePass);
+    EXPECT_EQ(hardware("ddaa1"), cpuDevice ? gpu::EdgePath::Segments : gpu::EdgePath::OnePass);
+    EXPECT_EQ(hardware("ddaa2"), cpuDevice ? gpu::EdgePath::List : gpu::EdgePath::OnePass);
     gpu::AaPass blur(context(), "blur");
     (void)blur.run(split.view());
     ASSERT_EQ(blur.lastDispatches().size(), 1u);

@@ -28,8 +28,8 @@
 // model in the shader, so the output bytes equal the CPU's on any device; `hardware` is the
 // fast path an engine would enable: the device's texture unit (a linear sampler) and its
 // own arithmetic and conversions, exact only to the device's precision (docs/gpu.md gives
-// the measured agreement). The edge-test methods run on one of two paths (EdgePath), the
-// same bytes either way.
+// the measured agreement). The edge-test methods run on one of three paths (EdgePath), the
+// same bytes in any.
 #pragma once
 
 #include <memory>
@@ -52,13 +52,17 @@ std::string_view samplingName(Sampling s);
 Sampling parseSampling(std::string_view name);
 
 //! How the methods with an edge test (fxaa3c, fxaa3d, ddaa1, ddaa2 and ddaa2p's ddaa2) run
-//! (docs/gpu.md, "Two paths for the edge-test methods"). Both give the same bytes in `model`.
+//! (docs/gpu.md, "Paths for the edge-test methods"). All give the same bytes in `model`. They
+//! need subgroup arithmetic and shuffles in compute shaders (every desktop GPU and lavapipe
+//! have them; the pass says so where a device does not).
 enum class EdgePath {
-    Auto,     //!< the list on a CPU device (lavapipe), one pass on a GPU; one pass wherever the list would not fit
-    List,     //!< three dispatches: the luma plane, an edge list, the listed pixels
-    OnePass,  //!< one dispatch, every pixel's early exit in place, the lumas in a workgroup tile
+    Auto,      //!< on a CPU device (lavapipe) the segments for fxaa3c and ddaa1 in `hardware`, else the
+               //!< list; one pass on a GPU; one pass wherever the list would not fit
+    List,      //!< three dispatches: the luma plane, an edge list, the listed pixels
+    OnePass,   //!< one dispatch, every pixel's early exit in place, the lumas in a workgroup tile
+    Segments,  //!< one dispatch over 8-pixel row segments, a subgroup's edge pixels spread over its lanes
 };
-//! "auto", "list" or "one-pass"; parseEdgePath throws ssfx::Error for anything else.
+//! "auto", "list", "one-pass" or "segments"; parseEdgePath throws ssfx::Error for anything else.
 std::string_view edgePathName(EdgePath p);
 EdgePath parseEdgePath(std::string_view name);
 

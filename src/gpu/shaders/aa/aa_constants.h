@@ -61,7 +61,12 @@
 // dispatch over the list, computes the edge pixels over their copies.
 #define SSFX_AA_STAGE_CLASSIFY 1
 #define SSFX_AA_STAGE_EDGES 2
-#define SSFX_AA_STAGE_LUMA 3   // before CLASSIFY: the luma plane (SSFX_AA_BINDING_LUMA)
+#define SSFX_AA_STAGE_LUMA 3  // before CLASSIFY: the luma plane (SSFX_AA_BINDING_LUMA)
+// The edge methods in one dispatch over row segments (gpu::EdgePath::Segments, CPU devices;
+// edge_list.glsl, compiled with SSFX_AA_SEGMENTS_MODULE as modules of their own): one
+// invocation per SSFX_AA_SEGMENT pixels of a row, its subgroup's edge pixels spread over its
+// lanes.
+#define SSFX_AA_SEGMENT 8
 #define SSFX_AA_EDGE_GROUP 64  // edge pass: invocations per work group (1-D)
 // Edge pass: at most this many groups (Vulkan's minimum maxComputeWorkGroupCount); each
 // group loops over a contiguous run of the list (edge_list.glsl). The specialization constant

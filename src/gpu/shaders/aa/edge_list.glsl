@@ -17,6 +17,8 @@
 // list's order depends on the atomics, the output does not: each pixel is computed on its
 // own. Stage 0 is the same method in one pass, its lumas in the work group's tile, for images
 // with more pixels than a storage buffer's list can hold (the device's maxStorageBufferRange).
+// The segments stage is the method in one dispatch without a list or a plane, for CPU
+// devices (below; modules of their own).
 layout(set = 0, binding = SSFX_AA_BINDING_EDGES, std430) buffer EdgeList {
     uint groupsX, groupsY, groupsZ;  // the edge pass's VkDispatchIndirectCommand
     uint count;                      // edge pixels listed
@@ -58,6 +60,67 @@ LumaRow lumaRow(int q, int y) {
     return LumaRow(float[SSFX_AA_LUMA_PACK + 2](left, mid.x, mid.y, mid.z, mid.w, right));
 }
 
+#ifdef SSFX_AA_SEGMENTS_MODULE
+// The segments stage (gpu::EdgePath::Segments; the modules compiled with
+// SSFX_AA_SEGMENTS_MODULE): one invocation per SSFX_AA_SEGMENT pixels of a row, the method
+// whole in one dispatch. Each invocation fetches the three rows around its
+// pixels once (3 (S + 2) fetches for S pixels, where a pixel of the list path costs a plane
+// store, a classify and 9 plane loads), tests its pixels, copies the unchanged ones, and the
+// subgroup then computes its edge pixels spread over its lanes: in round j lane l takes the
+// subgroup's edge pixel j * size + l, in the lanes' order (an exclusive prefix sum of their
+// counts says whose it is). On a driver that runs shaders as masked SIMD code (lavapipe) the
+// edge computation then runs ceil(edges / lanes) times per subgroup, about as often as the
+// list's, without the luma plane, the classify dispatch or the list's scattered visits. Each
+// pixel is computed on its own, so the bytes are the other paths'. Every invocation, inside
+// the image or not, reaches the subgroup operations.
+void segments() {
+    const int xs = int(gl_GlobalInvocationID.x) * SSFX_AA_SEGMENT, y = int(gl_GlobalInvocationID.y);
+    const bool inside = xs < pc.width && y < pc.height;
+    // Lumas of columns xs - 1 .. xs + S of rows y - 1 (above), y and y + 1 (below), fetched
+    // clamped as the plane's; the row's own texels kept for the copies.
+    float above[SSFX_AA_SEGMENT + 2], row[SSFX_AA_SEGMENT + 2], below[SSFX_AA_SEGMENT + 2];
+    vec4 raw[SSFX_AA_SEGMENT];
+    for (int i = 0; i < SSFX_AA_SEGMENT + 2; ++i) {
+        const int x = xs - 1 + i;
+        above[i] = edgeLuma(fetchValue(x, y - 1));
+        below[i] = edgeLuma(fetchValue(x, y + 1));
+        const vec4 r = texelRaw(x, y);
+        if (i >= 1 && i <= SSFX_AA_SEGMENT) raw[i - 1] = r;
+        row[i] = edgeLuma(texelDecoded(r));
+    }
+    uint edge = 0u;  // bit i: pixel xs + i is an edge pixel
+    for (int i = 0; i < SSFX_AA_SEGMENT; ++i) {
+        if (!inside || xs + i >= pc.width) continue;
+        // Luma3x3 names: S is the row above, N the row below.
+        const Luma3x3 n = Luma3x3(row[i + 1], row[i], row[i + 2], above[i + 1], below[i + 1], above[i], below[i],
+                                  above[i + 2], below[i + 2]);
+        if (edgeAt(xs + i, y, n))
+            edge |= 1u << uint(i);
+        else
+            copyTexel(ivec2(xs + i, y), raw[i]);
+    }
+    const uint count = uint(bitCount(edge));
+    const uint first = subgroupExclusiveAdd(count), total = subgroupAdd(count);
+    const uint origin = uint(min(xs, 0xffff)) | (uint(min(y, 0xffff)) << 16u);
+    for (uint j = 0u; j < total; j += gl_SubgroupSize) {
+        const uint k = j + gl_SubgroupInvocationID;  // this lane's edge pixel of the subgroup's
+        // Its owner: the last lane whose first pixel is at most k (a lane with none has the
+        // next lane's first, so the last such lane has one).
+        uint owner = 0u;
+        for (uint l = 1u; l < gl_SubgroupSize; ++l)
+            if (subgroupShuffle(first, l) <= k) owner = l;
+        uint bits = subgroupShuffle(edge, owner);
+        const uint at = subgroupShuffle(origin, owner), rank = k - subgroupShuffle(first, owner);
+        if (k < total) {
+            for (uint r = 0u; r < rank; ++r) bits &= bits - 1u;  // drop the owner's earlier pixels
+            const ivec2 p = ivec2(int(at & 0xffffu) + findLSB(bits), int(at >> 16u));
+            store(p, edgeColour(p.x, p.y), alphaAt(p.x, p.y));
+        }
+    }
+}
+
+void main() { segments(); }
+#else
 void main() {
     if (spec_stage == SSFX_AA_STAGE_EDGES) {
         // Each group walks a contiguous run of the list (its lanes consecutive entries), not
@@ -132,3 +195,4 @@ void main() {
         store(q, edgeColour(q.x, q.y), alphaAt(q.x, q.y));
     }
 }
+#endif

@@ -18,6 +18,13 @@
 // the device's unorm decode and the output its float-to-unorm conversion. Its promise is
 // the device's precision, not the CPU's bytes (docs/gpu.md gives the measured agreement).
 #extension GL_GOOGLE_include_directive : require
+#ifdef SSFX_AA_SEGMENTS_MODULE
+// The edge methods' segments stage (edge_list.glsl) spreads a subgroup's edge pixels over its
+// lanes; aa_pass.cpp takes its modules only where the device has these in compute shaders.
+#extension GL_KHR_shader_subgroup_basic : require
+#extension GL_KHR_shader_subgroup_arithmetic : require
+#extension GL_KHR_shader_subgroup_shuffle : require
+#endif
 #include "aa_constants.h"
 
 #ifdef SSFX_DEVICE_ARITHMETIC
@@ -252,15 +259,20 @@ vec4 lumaTexel(int q, int y) {
     return imageLoad(lumaPlane, ivec2(clamp(q, 0, lumaPlaneWidth() - 1), clamp(y, 0, pc.height - 1)));
 }
 // The luma of texel (x, y), clamped to the image like a fetch: from the luma plane (the
-// classify and edge dispatches) or from the tile (stage 0: the group's pixels or their
-// border, whose texels were fetched clamped).
+// classify and edge dispatches), from the texel (the segments stage: an edge pixel's own
+// neighbourhood, the same value as the plane's) or from the tile (stage 0: the group's
+// pixels or their border, whose texels were fetched clamped).
 float lumaAt(int x, int y) {
+#ifdef SSFX_AA_SEGMENTS_MODULE
+    return edgeLuma(fetchValue(x, y));
+#else
     if (spec_stage == SSFX_AA_STAGE_EDGES || spec_stage == SSFX_AA_STAGE_CLASSIFY) {
         const int cx = clamp(x, 0, pc.width - 1);
         return lumaTexel(cx / SSFX_AA_LUMA_PACK, y)[cx % SSFX_AA_LUMA_PACK];
     }
     const ivec2 q = ivec2(x, y) - tileOrigin();
     return tileLuma[q.y * kTile + q.x];
+#endif
 }
 #else
 float lumaAt(int x, int y) { return edgeLuma(fetchValue(x, y)); }
