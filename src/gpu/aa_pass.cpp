@@ -460,11 +460,11 @@ std::uint32_t edgeGroupsFor(vk::DeviceSize pixels, int loopsPerPixel, std::uint3
 }
 // EdgePath::Auto's choice per kind of device, mode and method (docs/gpu.md: measured on
 // lavapipe and an H200). On a CPU device the segments for fxaa3c and ddaa1 in the hardware
-// mode (where the device has their subgroup operations: 0.63 to 1.07 of the list's time,
-// median about 0.75, three images); the list for fxaa3d and ddaa2, whose long searches ran
-// about as fast or slower from segments (ddaa2 on the rendered atrium 1.23 and 0.96), and in
-// the model, whose exact lumas the segments compute about five times a pixel (their rows'
-// and their edge pixels' own) where the list computes each once (1.1 to 2.0x the list's time).
+// mode (where the device has their subgroup operations: fxaa3c 0.71 to 0.95 of the list's
+// time, ddaa1 0.53 to 0.88, three images); the list for fxaa3d and ddaa2, whose long searches
+// ran as fast or slower from segments (1.00 to 1.47, 0.69 to 1.12), and in the model, whose
+// exact lumas the segments' rows compute 3.75 times a pixel where the list computes each once
+// (0.87 to 1.39x the list's time).
 EdgePath cpuEdgePath(std::string_view id, Sampling sampling, bool segmentsRun) {
     const bool segments = sampling == Sampling::Hardware && (id == "fxaa3c" || id == "ddaa1") && segmentsRun;
     return segments ? EdgePath::Segments : EdgePath::List;

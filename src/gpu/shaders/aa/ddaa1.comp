@@ -6,8 +6,7 @@
 #include "ddaa.glsl"
 
 bool edgeAt(int x, int y, Luma3x3 n) { return edgeAt3x3(n); }
-vec3 edgeColour(int x, int y) {
-    const Luma3x3 n = neighbourhood(x, y);
+vec3 edgeColour(int x, int y, Luma3x3 n) {
     return diffuse(x, y, diffusion(n, edgeSides(n)), 0.0, 0.0);
 }
 

@@ -127,8 +127,7 @@ float edgeSearchOffset(int x, int y, Luma3x3 n, EdgeSides s) {
 
 // The colour of an edge pixel: the diffusion, moved by the edge search's offset.
 bool edgeAt(int x, int y, Luma3x3 n) { return edgeAt3x3(n); }
-vec3 edgeColour(int x, int y) {
-    const Luma3x3 n = neighbourhood(x, y);
+vec3 edgeColour(int x, int y, Luma3x3 n) {
     const EdgeSides s = edgeSides(n);
     Diffusion d = diffusion(n, s);
     const float offset = edgeSearchOffset(x, y, n, s);

@@ -2,7 +2,8 @@
 // shared. Included last by a method's shader (with SSFX_TILE defined), which defines
 //   bool edgeAt(int x, int y, Luma3x3 n): the early-exit test says edge (spec ppaa.md
 //     section 1), n the pixel's 3x3 lumas, and
-//   vec3 edgeColour(int x, int y): the method's colour for an edge pixel.
+//   vec3 edgeColour(int x, int y, Luma3x3 n): the method's colour for an edge pixel, n its
+//     3x3 lumas.
 // LUMA writes the luma plane (each texel's edgeLuma once, four per plane texel: ppaa.glsl's
 // lumaAt reads it) and copies every pixel to the output unchanged; CLASSIFY lists the edge
 // pixels; EDGES (an indirect dispatch of 64 x 1 groups, each over a run of the list) computes
@@ -111,10 +112,25 @@ void segments() {
             if (subgroupShuffle(first, l) <= k) owner = l;
         uint bits = subgroupShuffle(edge, owner);
         const uint at = subgroupShuffle(origin, owner), rank = k - subgroupShuffle(first, owner);
+        for (uint r = 0u; r < rank; ++r) bits &= bits - 1u;  // drop the owner's earlier pixels
+        const int bit = findLSB(bits);
+        // The pixel's 3 x 3 lumas, from the owner's rows (columns bit .. bit + 2 of them).
+        float a[3], m[3], b[3];
+        for (int i = 0; i < SSFX_AA_SEGMENT + 2; ++i) {
+            const float ai = subgroupShuffle(above[i], owner), mi = subgroupShuffle(row[i], owner),
+                        bi = subgroupShuffle(below[i], owner);
+            for (int c = 0; c < 3; ++c) {
+                if (i == bit + c) {
+                    a[c] = ai;
+                    m[c] = mi;
+                    b[c] = bi;
+                }
+            }
+        }
         if (k < total) {
-            for (uint r = 0u; r < rank; ++r) bits &= bits - 1u;  // drop the owner's earlier pixels
-            const ivec2 p = ivec2(int(at & 0xffffu) + findLSB(bits), int(at >> 16u));
-            store(p, edgeColour(p.x, p.y), alphaAt(p.x, p.y));
+            const ivec2 p = ivec2(int(at & 0xffffu) + bit, int(at >> 16u));
+            const Luma3x3 n = Luma3x3(m[1], m[0], m[2], a[1], b[1], a[0], b[0], a[2], b[2]);
+            store(p, edgeColour(p.x, p.y, n), alphaAt(p.x, p.y));
         }
     }
 }
@@ -136,7 +152,7 @@ void main() {
         for (uint i = begin + gl_LocalInvocationID.x; i < end; i += lanes) {
             const uint e = edges.pixels[i];
             const ivec2 p = ivec2(e & 0xffffu, e >> 16u);
-            store(p, edgeColour(p.x, p.y), alphaAt(p.x, p.y));
+            store(p, edgeColour(p.x, p.y, neighbourhood(p.x, p.y)), alphaAt(p.x, p.y));
         }
         return;
     }
@@ -192,7 +208,7 @@ void main() {
     for (uint i = gl_LocalInvocationIndex; i < listed; i += size) {
         const uint e = groupEdges[i];
         const ivec2 q = ivec2(e & 0xffffu, e >> 16u);
-        store(q, edgeColour(q.x, q.y), alphaAt(q.x, q.y));
+        store(q, edgeColour(q.x, q.y, neighbourhood(q.x, q.y)), alphaAt(q.x, q.y));
     }
 }
 #endif

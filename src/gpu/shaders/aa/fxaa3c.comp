@@ -43,8 +43,8 @@ Lumas lumas(int x, int y, Luma3x3 n) {
 bool edgeAt(int x, int y, Luma3x3 n) { return lumas(x, y, n).edge; }
 
 // The colour of an edge pixel: two short and two long taps along the direction.
-vec3 edgeColour(int x, int y) {
-    const Lumas l = lumas(x, y, neighbourhood(x, y));
+vec3 edgeColour(int x, int y, Luma3x3 n) {
+    const Lumas l = lumas(x, y, n);
     EXACT float swMinusNe = l.SW - l.NE;
     EXACT float seMinusNw = l.SE - l.NW;
     EXACT float dirX = swMinusNe + seMinusNw;

@@ -19,8 +19,7 @@ float walkLuma(bool horizontal, float wu, float wv, float localAverage) {
 // The colour of an edge pixel: the edge search along it, then one read moved across it by
 // the larger of the search's offset and the sub-pixel term.
 bool edgeAt(int x, int y, Luma3x3 n) { return edgeAt3x3(n); }
-vec3 edgeColour(int x, int y) {
-    const Luma3x3 n = neighbourhood(x, y);
+vec3 edgeColour(int x, int y, Luma3x3 n) {
     float range;
     belowEdgeThreshold(n, range);
     const EdgeSides s = edgeSides(n);
