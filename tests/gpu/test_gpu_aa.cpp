@@ -130,7 +130,7 @@ TEST_P(GpuModelParity, ReferenceDrawingsGiveTheCpuBytes) {
 // light, decoding with the CPU's exact table and encoding to the nearest level. The model
 // recovers each texel's byte from the device's decode (the pass's probe checks it can) and
 // then computes as the CPU does: the CPU's texture=srgb bytes on every generated image, on
-// both edge paths.
+// every edge path.
 class GpuSrgbParity : public GpuModelParity {};  // the methods that read a texture (not noaa)
 
 TEST_P(GpuSrgbParity, SrgbTexturesGiveTheCpuBytes) {
@@ -157,7 +157,7 @@ TEST_P(GpuSrgbParity, SrgbTexturesGiveTheCpuBytes) {
 }
 
 // Runs `ids` on `cases` (random images, seeds from `seed`) with the environment variable
-// `var` set to `value` (read when a pass is made), on both edge paths and the `textures` the
+// `var` set to `value` (read when a pass is made), on every edge path and the `textures` the
 // variable concerns (0 unorm, 1 srgb; both by default): each output must be the CPU's bytes.
 void expectCpuBytesWith(const char* var, const char* value, std::initializer_list<const char*> ids,
                         std::initializer_list<Case> cases, unsigned seed,
@@ -245,7 +245,7 @@ TEST(GpuModelParityBatchedSearch, BothSearchOrdersGiveTheCpuBytes) {
 // device's decode of the input's format exact for all 256 values (gpu::AaPass::deviceDecode;
 // unorm: v / 255, lavapipe's is not: 254 decodes one ulp off; texture=srgb: the CPU's kSrgb8);
 // SSFX_GPU_DEVICE_DECODE=0 forces the computed levels. On a device whose decode is exact,
-// this and the other parity tests cover both paths.
+// this and the other parity tests cover every path.
 TEST(GpuModelParityDeviceDecode, ComputedLevelsGiveTheCpuBytes) {
     REQUIRE_DEVICE();
     expectCpuBytesWith("SSFX_GPU_DEVICE_DECODE", "0", {"blur", "fxaa3c", "fxaa3d", "ddaa1", "ddaa2", "ssaax4"},
