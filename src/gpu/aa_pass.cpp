@@ -646,12 +646,8 @@ struct AaPass::Impl {
                 listStandIn = ctx->createBuffer(16, vk::BufferUsageFlagBits::eStorageBuffer, false);
             cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eComputeShader,
                                 {}, {}, {}, lumaDiscarded());
-            if (segmented)
-                dispatch(stagePipeline(true, c.width, c.height), cmd, in, inLayout, out, c, *listStandIn.buffer,
-                         Grid::Segments, "segments");
-            else
-                dispatch(stagePipeline(false, c.width, c.height), cmd, in, inLayout, out, c, *listStandIn.buffer,
-                         Grid::Pixels, "one pass");
+            dispatch(stagePipeline(segmented, c.width, c.height), cmd, in, inLayout, out, c, *listStandIn.buffer,
+                     segmented ? Grid::Segments : Grid::Pixels, segmented ? "segments" : "one pass");
             return;
         }
         ensureEdges(pixels);
@@ -812,12 +808,8 @@ AaPass::AaPass(std::shared_ptr<vkx::Context> ctx, std::string_view method, const
     vkx::Context& c = *m.ctx;
     const bool cpuDevice = c.physical.getProperties().deviceType == vk::PhysicalDeviceType::eCpu;
     // The segments stage sums and shuffles across a subgroup (edge_list.glsl).
-    const auto subgroup =
-        c.physical.getProperties2<vk::PhysicalDeviceProperties2, vk::PhysicalDeviceSubgroupProperties>()
-            .get<vk::PhysicalDeviceSubgroupProperties>();
-    const auto needed = vk::SubgroupFeatureFlagBits::eArithmetic | vk::SubgroupFeatureFlagBits::eShuffle;
-    const bool segmentsRun = (subgroup.supportedStages & vk::ShaderStageFlagBits::eCompute) &&
-                             (subgroup.supportedOperations & needed) == needed;
+    const bool segmentsRun =
+        c.computeSubgroupOps(vk::SubgroupFeatureFlagBits::eArithmetic | vk::SubgroupFeatureFlagBits::eShuffle);
     if (hasEdgePass(m.method->id) && edges == EdgePath::Segments && !segmentsRun)
         throw Error(
             fmt::format("{}: edges=segments needs subgroup arithmetic and shuffles in compute shaders, which "

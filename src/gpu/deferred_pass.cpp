@@ -180,12 +180,7 @@ struct AdaptiveShading::Impl {
             throw Error(
                 "gpu::AdaptiveShading: the device has no VK_KHR_push_descriptor (the passes push their "
                 "descriptors)");
-        const auto subgroup =
-            c.physical.getProperties2<vk::PhysicalDeviceProperties2, vk::PhysicalDeviceSubgroupProperties>()
-                .get<vk::PhysicalDeviceSubgroupProperties>();
-        const auto needed = vk::SubgroupFeatureFlagBits::eArithmetic | vk::SubgroupFeatureFlagBits::eBallot;
-        if (!(subgroup.supportedStages & vk::ShaderStageFlagBits::eCompute) ||
-            (subgroup.supportedOperations & needed) != needed)
+        if (!c.computeSubgroupOps(vk::SubgroupFeatureFlagBits::eArithmetic | vk::SubgroupFeatureFlagBits::eBallot))
             throw Error(
                 "gpu::AdaptiveShading: the device has no subgroup arithmetic and ballot in compute shaders (the rest "
                 "pass counts its idle lanes with them; the sample list reserves its ranges with them)");

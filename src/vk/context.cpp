@@ -391,6 +391,13 @@ void Context::requireAttachmentFormat(vk::Format format, bool depth, const std::
         throw Error(fmt::format("Vulkan device '{}' cannot render {} as {}", info.name, what, vk::to_string(format)));
 }
 
+bool Context::computeSubgroupOps(vk::SubgroupFeatureFlags ops) const {
+    const auto subgroup = physical.getProperties2<vk::PhysicalDeviceProperties2, vk::PhysicalDeviceSubgroupProperties>()
+                              .get<vk::PhysicalDeviceSubgroupProperties>();
+    return (subgroup.supportedStages & vk::ShaderStageFlagBits::eCompute) &&
+           (subgroup.supportedOperations & ops) == ops;
+}
+
 void Context::requireImageSize(std::uint32_t width, std::uint32_t height, const std::string& what) const {
     const std::uint32_t limit = std::uint32_t(info.maxImageDimension2D);
     if (width > limit || height > limit)

@@ -93,6 +93,8 @@ public:
     void requireAttachmentFormat(vk::Format format, bool depth, const std::string& what) const;
     //! Throws ssfx::Error when width or height exceeds the device's 2-D image limit.
     void requireImageSize(std::uint32_t width, std::uint32_t height, const std::string& what) const;
+    //! Whether compute shaders on this device have every subgroup operation in `ops`.
+    bool computeSubgroupOps(vk::SubgroupFeatureFlags ops) const;
 
 private:
     struct BorrowTag {};
