@@ -94,6 +94,7 @@ Applier makeApplier(const BackendOptions& o, const MethodInfo& m, const MethodSe
                         return p;
                     }};
     applier.deviceDecode = pass->deviceDecode();
+    applier.edgePath = gpu::edgePathName(pass->edgePath());
     return applier;
 #else
     (void)settings;

@@ -53,6 +53,8 @@ struct Applier {
     std::function<DispatchProfile()> lastProfile = [] { return DispatchProfile{}; };
     //! vulkan, model: the device's unorm decode was probed exact and is used (gpu::AaPass::deviceDecode).
     bool deviceDecode = false;
+    //! vulkan: the pass's path (gpu::edgePathName of gpu::AaPass::edgePath); cpu: empty.
+    std::string edgePath{};
 };
 Applier makeApplier(const BackendOptions& o, const MethodInfo& m, const MethodSettings& settings, const Exec& exec);
 

@@ -91,26 +91,39 @@ std::vector<eval::TimingResult> timeOnBackend(const std::vector<eval::MethodVari
                                               const BenchOptions& o, const Exec& exec, std::string* device,
                                               bool* deviceDecode, const std::function<void(int, int)>& rounds,
                                               std::vector<MethodProfile>* profiles) {
+    // The rows: the variants on the chosen path; where the baseline (blur) runs on its segments
+    // (a CPU device's default), also blur one pixel an invocation (the form issue #34's
+    // comparison with the DDAA author's shaders measured), as BASELINE:one-pass in the same rounds.
+    std::vector<std::pair<eval::MethodVariant, BackendOptions>> rows;
+    rows.reserve(variants.size() + 1);  // (no reallocation while a row is read)
+    for (const auto& v : variants) rows.emplace_back(v, o.backend);
     std::vector<ImageRgba8> inputs(5);
     std::vector<eval::TimedMethod> timed;
     std::vector<Applier> appliers;
-    appliers.reserve(variants.size());
-    std::vector<std::vector<DispatchProfile>> perRound(variants.size());
-    for (const auto& v : variants) {
+    appliers.reserve(rows.size() + 1);
+    std::vector<std::vector<DispatchProfile>> perRound(rows.size() + 1);
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        const auto& [v, backend] = rows[i];
         const MethodInfo& m = methodById(v.id);
         if (inputs[std::size_t(m.inputScale)].width() == 0) inputs[std::size_t(m.inputScale)] = input(m.inputScale);
-        appliers.push_back(makeApplier(o.backend, m, v.settings, exec));
+        appliers.push_back(makeApplier(backend, m, v.settings, exec));
+        if (v.name == baseline && appliers.back().edgePath == "segments") {
+            BackendOptions onePass = backend;
+            onePass.edges = "one-pass";
+            rows.emplace_back(eval::MethodVariant{v.id, v.name + ":one-pass", v.settings}, onePass);
+        }
         *device = appliers.back().device;
         *deviceDecode = *deviceDecode || appliers.back().deviceDecode;
         const Applier* a = &appliers.back();
         const ImageRgba8* in = &inputs[std::size_t(m.inputScale)];
         auto* mine = &perRound[appliers.size() - 1];
-        timed.push_back({v.name, [a, in] { (void)a->apply(in->view()); },
+        timed.push_back({rows[i].first.name, [a, in] { (void)a->apply(in->view()); },
                          [a, mine] {
                              mine->push_back(a->lastProfile());  // (called for the timed rounds only)
                              return a->lastGpuMs();
                          }});
     }
+    perRound.resize(appliers.size());
     auto results = eval::timeInterleaved(timed, o.reps, o.warmup, baseline, rounds);
     for (const auto& r : perRound) profiles->push_back(profileOf(r));
     return results;
@@ -119,7 +132,7 @@ std::vector<eval::TimingResult> timeOnBackend(const std::vector<eval::MethodVari
 // The per-dispatch table: a column per stage (in the passes' order), "-" where a method has
 // no such dispatch; the share of pixels listed as edge pixels last.
 std::string profileTable(const std::vector<eval::TimingResult>& results, const std::vector<MethodProfile>& profiles) {
-    static constexpr const char* kOrder[] = {"luma", "classify", "edges", "method", "one pass", "resolve"};
+    static constexpr const char* kOrder[] = {"luma", "classify", "edges", "segments", "method", "one pass", "resolve"};
     std::vector<std::string> columns;
     for (const char* stage : kOrder)
         for (const auto& p : profiles)
@@ -199,7 +212,8 @@ void run(BenchOptions o) {
     else
         table += fmt::format("machine: {}, {} threads used of {}, SIMD target {}\n\n", mi.cpu, mi.threads,
                              mi.hardwareThreads, mi.simdTarget);
-    const std::size_t nameWidth = o.texture == "unorm" ? 8 : 13;
+    std::size_t nameWidth = 8;
+    for (const auto& r : results) nameWidth = std::max(nameWidth, r.id.size());
     table += fmt::format("{:<{}} {:>10} {:>12} {:>16}\n", "method", nameWidth, "median ms", "trimmed ms",
                          fmt::format("% of {}", baseline));
     for (const auto& r : results)
@@ -268,9 +282,12 @@ void addBenchCommand(CLI::App& app) {
         "CPU: wall-clock time of each method call. --backend vulkan: GPU timestamps around each pass's\n"
         "dispatches, one submit per method per round (upload and download are not timed), and a second\n"
         "table (and JSON 'dispatches', 'edge_share') with each dispatch's median time: luma, classify and\n"
-        "edges for the edge-test methods, resolve for ddaa2p's second step, method for a single dispatch;\n"
-        "edge share is the share of pixels the classify dispatch listed. scripts/bench_gpu.sh runs it on a\n"
-        "drawing, a photograph and a rendered scene.");
+        "edges for the edge-test methods' list, segments or one pass for their other paths, resolve for\n"
+        "ddaa2p's second step, method for a single dispatch; edge share is the share of pixels the classify\n"
+        "dispatch listed. Where blur runs on its segments (a CPU device's default), a row blur:one-pass\n"
+        "times it one pixel an invocation in the same rounds (the form the comparison with the DDAA author's\n"
+        "shaders measured; docs/gpu.md). scripts/bench_gpu.sh runs it on a drawing, a photograph and a\n"
+        "rendered scene.");
     cmd->callback([opts] { run(*opts); });
 }
 

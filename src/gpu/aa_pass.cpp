@@ -151,7 +151,13 @@ const std::uint32_t kBlur[] = {
 const std::uint32_t kBlurDevice[] = {
 #include "shaders/blur.comp.device.inc"
 };
-// The edge methods' segments stage (EdgePath::Segments), in modules of their own.
+// The segments stage (EdgePath::Segments) of blur and the edge methods, in modules of their own.
+const std::uint32_t kBlurSegments[] = {
+#include "shaders/blur.comp.segments.inc"
+};
+const std::uint32_t kBlurSegmentsDevice[] = {
+#include "shaders/blur.comp.segments.device.inc"
+};
 const std::uint32_t kFxaa3cSegments[] = {
 #include "shaders/fxaa3c.comp.segments.inc"
 };
@@ -216,11 +222,11 @@ const std::uint32_t kSsaax4Device[] = {
 struct Shader {
     std::string_view id;
     std::span<const std::uint32_t> model, device;
-    std::span<const std::uint32_t> segments = {}, segmentsDevice = {};  // the edge methods'
+    std::span<const std::uint32_t> segments = {}, segmentsDevice = {};  // blur's and the edge methods'
 };
 // ddaa2p is ddaa2's shader followed by ssaax2's (spec ppaa.md "ddaa2p").
 const Shader kShaders[] = {{"noaa", kNoaa, kNoaaDevice},
-                           {"blur", kBlur, kBlurDevice},
+                           {"blur", kBlur, kBlurDevice, kBlurSegments, kBlurSegmentsDevice},
                            {"fxaa3c", kFxaa3c, kFxaa3cDevice, kFxaa3cSegments, kFxaa3cSegmentsDevice},
                            {"fxaa3d", kFxaa3d, kFxaa3dDevice, kFxaa3dSegments, kFxaa3dSegmentsDevice},
                            {"ddaa1", kDdaa1, kDdaa1Device, kDdaa1Segments, kDdaa1SegmentsDevice},
@@ -471,6 +477,13 @@ EdgePath cpuEdgePath(std::string_view id, Sampling sampling, bool segmentsRun) {
 }
 constexpr EdgePath kGpuEdgePath = EdgePath::OnePass;
 
+// The methods with a segments module (EdgePath::Segments): blur and the edge-test methods.
+bool hasSegments(std::string_view id) {
+    for (const Shader& s : kShaders)
+        if (s.id == id) return !s.segments.empty();
+    return false;
+}
+
 // The methods whose shaders have an edge test and run as three dispatches (edge_list.glsl).
 bool hasEdgePass(std::string_view id) {
     return id == "fxaa3c" || id == "fxaa3d" || id == "ddaa1" || id == "ddaa2" || id == "ddaa2p";
@@ -631,7 +644,9 @@ struct AaPass::Impl {
     void dispatchMethod(const vk::raii::CommandBuffer& cmd, vk::ImageView in, vk::ImageLayout inLayout,
                         vk::ImageView out, const AaConstants& c) {
         if (!hasEdgePass(method->id)) {
-            dispatch(*pipeline, cmd, in, inLayout, out, c);
+            const bool segmented = edgePath == EdgePath::Segments;  // blur's rows
+            dispatch(*pipeline, cmd, in, inLayout, out, c, {}, segmented ? Grid::Segments : Grid::Pixels,
+                     segmented ? "segments" : "method");
             return;
         }
         const vk::DeviceSize pixels = vk::DeviceSize(c.outWidth) * vk::DeviceSize(c.outHeight);
@@ -878,11 +893,20 @@ AaPass::AaPass(std::shared_ptr<vkx::Context> ctx, std::string_view method, const
             m.edgePath = edges != EdgePath::Auto ? edges
                          : cpuDevice             ? cpuEdgePath(m.method->id, sampling, segmentsRun)
                                                  : kGpuEdgePath;
+        } else {
+            // blur: its segments (each texel of three rows fetched once for 8 pixels) on a CPU
+            // device, where an invocation and a fetch cost most (docs/gpu.md); a pixel an
+            // invocation on a GPU. The methods without a segments module: one pass.
+            const bool rows =
+                hasSegments(m.method->id) && (edges == EdgePath::Segments || (edges == EdgePath::Auto && cpuDevice));
+            m.edgePath = rows ? EdgePath::Segments : EdgePath::OnePass;
         }
         // The list's three pipelines only for the list path (the others' one pipeline is made
         // when first used): a pipeline takes lavapipe about a second to compile.
         const bool list = hasEdgePass(m.method->id) && m.edgePath == EdgePath::List;
-        if (!hasEdgePass(m.method->id) || list) m.pipeline = makePipeline(c, shaderFor(m.method->id, sampling), first);
+        if (!hasEdgePass(m.method->id) || list)
+            m.pipeline =
+                makePipeline(c, shaderFor(m.method->id, sampling, m.edgePath == EdgePath::Segments && !list), first);
         if (hasEdgePass(m.method->id)) {
             m.spec = spec;
             const vk::DeviceSize range = c.physical.getProperties().limits.maxStorageBufferRange;

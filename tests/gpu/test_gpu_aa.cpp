@@ -91,7 +91,7 @@ TEST_P(GpuModelParity, GeneratedImagesGiveTheCpuBytes) {
     const MethodInfo& m = *GetParam();
     for (const gpu::EdgePath path : kEdgePaths) {
         gpu::AaPass pass(context(), m.id, {}, gpu::Sampling::Model, path);
-        if (pass.edgePath() != path) continue;  // no edge test: one path
+        if (pass.edgePath() != path) continue;  // blur: two paths, the others without an edge test one
         unsigned seed = 7;
         for (const Case& c : kCases) {
             const ImageRgba8 in = inputFor(c, m.inputScale, seed++);
@@ -115,7 +115,7 @@ TEST_P(GpuModelParity, ReferenceDrawingsGiveTheCpuBytes) {
     const char* suffix = m.inputScale == 4 ? "x4" : m.inputScale == 2 ? "x2" : "";
     for (const gpu::EdgePath path : kEdgePaths) {
         gpu::AaPass pass(context(), m.id, {}, gpu::Sampling::Model, path);
-        if (pass.edgePath() != path) continue;  // no edge test: one path
+        if (pass.edgePath() != path) continue;  // blur: two paths, the others without an edge test one
         for (const char* name : {"lines", "circles"}) {
             const ImageRgba8 in = io::readPng(fmt::format("{}/{}{}.png", *dir, name, suffix));
             const Diff d = compare(pass.run(in.view()), m.run(in.view(), {}, Exec{}));
@@ -140,7 +140,7 @@ TEST_P(GpuSrgbParity, SrgbTexturesGiveTheCpuBytes) {
     srgb.params = {{"texture", 1}};
     for (const gpu::EdgePath path : kEdgePaths) {
         gpu::AaPass pass(context(), m.id, srgb, gpu::Sampling::Model, path);
-        if (pass.edgePath() != path) continue;  // no edge test: one path
+        if (pass.edgePath() != path) continue;  // blur: two paths, the others without an edge test one
         unsigned seed = 300;
         for (const Case& c : kCases) {
             const ImageRgba8 in = inputFor(c, m.inputScale, seed++);
@@ -369,48 +369,58 @@ TEST(GpuAa, HardwareSamplingAgreesWithinTheDevicePrecision) {
             // pairs; the other methods run once, as they are.
             const std::vector<const char*> searchReads =
                 searches ? std::vector<const char*>{"1", "0"} : std::vector<const char*>{nullptr};
-            for (const char* coordinates : searchReads) {
-                if (coordinates) {
-                    ASSERT_EQ(setenv("SSFX_GPU_COORDINATE_READS", coordinates, 1), 0);
+            // blur on both its paths (a pixel an invocation, its segments); the others as they are.
+            const std::vector<gpu::EdgePath> paths = m.id == "blur"
+                                                         ? std::vector{gpu::EdgePath::OnePass, gpu::EdgePath::Segments}
+                                                         : std::vector{gpu::EdgePath::Auto};
+            for (const gpu::EdgePath path : paths)
+                for (const char* coordinates : searchReads) {
+                    if (coordinates) {
+                        ASSERT_EQ(setenv("SSFX_GPU_COORDINATE_READS", coordinates, 1), 0);
+                    }
+                    gpu::AaPass pass(context(), m.id, settings, gpu::Sampling::Hardware, path);
+                    unsetenv("SSFX_GPU_COORDINATE_READS");
+                    const std::string label =
+                        std::string(m.id) +
+                        (path == gpu::EdgePath::Auto ? "" : fmt::format(" {}", gpu::edgePathName(path))) +
+                        (!coordinates          ? ""
+                         : *coordinates == '1' ? ", filtered search reads"
+                                               : ", pair search reads");
+                    for (std::size_t i = 0; i < inputs.size(); ++i) {
+                        const auto& [name, in] = inputs[i];
+                        const double delta =
+                            0.01 + (m.id == "ssaax2" ? 2.5 * 0x1p-24 * in.width() * 255.0 * 1.159 : 0.0);
+                        const double decode = texture ? 0.5 : 0.0;
+                        const int within = int(std::floor(1.0 + decode +
+                                                          (texelsOnly         ? 0.0
+                                                           : m.id == "ssaax2" ? 1.159 * e
+                                                                              : e) +
+                                                          delta));
+                        const ImageRgba8& cpu = cpuOutputs[i];
+                        const ImageRgba8 gpu = pass.run(in.view());
+                        std::int64_t identical = 0, close = 0;
+                        int largest = 0;
+                        for (int y = 0; y < cpu.height(); ++y)
+                            for (int x = 0; x < cpu.width(); ++x) {
+                                const Rgba8 p = cpu(x, y), q = gpu(x, y);
+                                const int d = std::max({std::abs(p.r - q.r), std::abs(p.g - q.g), std::abs(p.b - q.b)});
+                                identical += d == 0;
+                                close += d <= within;
+                                largest = std::max(largest, d);
+                            }
+                        const double n = double(cpu.pixelCount());
+                        std::printf(
+                            "hardware %-7s %-5s %-8s: %.3f %% identical, %.3f %% within %d levels, largest difference "
+                            "%d "
+                            "(%d-bit sub-texel precision)\n",
+                            label.c_str(), texture ? "srgb" : "unorm", name.c_str(), 100.0 * double(identical) / n,
+                            100.0 * double(close) / n, within, largest, bits);
+                        if (bounded)
+                            EXPECT_LE(largest, within) << label << " on " << name;
+                        else
+                            EXPECT_GE(double(close) / n, 0.99) << label << " on " << name;
+                    }
                 }
-                gpu::AaPass pass(context(), m.id, settings, gpu::Sampling::Hardware);
-                unsetenv("SSFX_GPU_COORDINATE_READS");
-                const std::string label = std::string(m.id) + (!coordinates          ? ""
-                                                               : *coordinates == '1' ? ", filtered search reads"
-                                                                                     : ", pair search reads");
-                for (std::size_t i = 0; i < inputs.size(); ++i) {
-                    const auto& [name, in] = inputs[i];
-                    const double delta = 0.01 + (m.id == "ssaax2" ? 2.5 * 0x1p-24 * in.width() * 255.0 * 1.159 : 0.0);
-                    const double decode = texture ? 0.5 : 0.0;
-                    const int within = int(std::floor(1.0 + decode +
-                                                      (texelsOnly         ? 0.0
-                                                       : m.id == "ssaax2" ? 1.159 * e
-                                                                          : e) +
-                                                      delta));
-                    const ImageRgba8& cpu = cpuOutputs[i];
-                    const ImageRgba8 gpu = pass.run(in.view());
-                    std::int64_t identical = 0, close = 0;
-                    int largest = 0;
-                    for (int y = 0; y < cpu.height(); ++y)
-                        for (int x = 0; x < cpu.width(); ++x) {
-                            const Rgba8 p = cpu(x, y), q = gpu(x, y);
-                            const int d = std::max({std::abs(p.r - q.r), std::abs(p.g - q.g), std::abs(p.b - q.b)});
-                            identical += d == 0;
-                            close += d <= within;
-                            largest = std::max(largest, d);
-                        }
-                    const double n = double(cpu.pixelCount());
-                    std::printf(
-                        "hardware %-7s %-5s %-8s: %.3f %% identical, %.3f %% within %d levels, largest difference %d "
-                        "(%d-bit sub-texel precision)\n",
-                        label.c_str(), texture ? "srgb" : "unorm", name.c_str(), 100.0 * double(identical) / n,
-                        100.0 * double(close) / n, within, largest, bits);
-                    if (bounded)
-                        EXPECT_LE(largest, within) << label << " on " << name;
-                    else
-                        EXPECT_GE(double(close) / n, 0.99) << label << " on " << name;
-                }
-            }
         }
     expectNoValidationMessages();
 }
@@ -602,11 +612,24 @@ TEST(GpuAa, RunReportsItsDispatchesAndTheListedShare) {
     EXPECT_EQ(gpu::AaPass(context(), "ddaa2").edgePath(), cpuDevice ? gpu::EdgePath::List : gpu::EdgePath::OnePass);
     EXPECT_EQ(hardware("ddaa1"), cpuDevice ? gpu::EdgePath::Segments : gpu::EdgePath::OnePass);
     EXPECT_EQ(hardware("ddaa2"), cpuDevice ? gpu::EdgePath::List : gpu::EdgePath::OnePass);
+    // blur: one dispatch, no list; its segments on a CPU device (auto), one pixel an invocation
+    // on a GPU or with one-pass (or list, which it has not).
     gpu::AaPass blur(context(), "blur");
+    EXPECT_EQ(blur.edgePath(), cpuDevice ? gpu::EdgePath::Segments : gpu::EdgePath::OnePass);
     (void)blur.run(split.view());
     ASSERT_EQ(blur.lastDispatches().size(), 1u);
-    EXPECT_EQ(blur.lastDispatches()[0].stage, "method");
+    EXPECT_EQ(blur.lastDispatches()[0].stage, cpuDevice ? "segments" : "method");
     EXPECT_EQ(blur.lastEdgeShare(), -1.0);
+    for (const gpu::EdgePath path : {gpu::EdgePath::List, gpu::EdgePath::OnePass}) {
+        gpu::AaPass perPixel(context(), "blur", {}, gpu::Sampling::Model, path);
+        EXPECT_EQ(perPixel.edgePath(), gpu::EdgePath::OnePass);
+        (void)perPixel.run(split.view());
+        ASSERT_EQ(perPixel.lastDispatches().size(), 1u);
+        EXPECT_EQ(perPixel.lastDispatches()[0].stage, "method");
+    }
+    // noaa has no segments: one pass on any path.
+    EXPECT_EQ(gpu::AaPass(context(), "noaa", {}, gpu::Sampling::Model, gpu::EdgePath::Segments).edgePath(),
+              gpu::EdgePath::OnePass);
     ImageRgba8 split2(64, 16);
     for (int y = 0; y < 16; ++y)
         for (int x = 0; x < 64; ++x) split2(x, y) = x < 32 ? Rgba8{0, 0, 0, 255} : Rgba8{255, 255, 255, 255};

@@ -51,13 +51,16 @@ enum class Sampling {
 std::string_view samplingName(Sampling s);
 Sampling parseSampling(std::string_view name);
 
-//! How the methods with an edge test (fxaa3c, fxaa3d, ddaa1, ddaa2 and ddaa2p's ddaa2) run
-//! (docs/gpu.md, "Paths for the edge-test methods"). All give the same bytes in `model`. They
-//! need subgroup arithmetic and shuffles in compute shaders (every desktop GPU and lavapipe
-//! have them; the pass says so where a device does not).
+//! How the methods with an edge test (fxaa3c, fxaa3d, ddaa1, ddaa2 and ddaa2p's ddaa2) run,
+//! and blur (docs/gpu.md, "Workgroups, workgroup memory and the paths of the edge-test
+//! methods"). All give the same bytes in `model`. The edge methods' segments need subgroup
+//! arithmetic and shuffles in compute shaders (every desktop GPU and lavapipe have them; the
+//! pass says so where a device does not). blur has two paths: Segments (each texel of three
+//! rows fetched once for 8 pixels) and one pixel an invocation (OnePass; List asks for it
+//! too); the other methods without an edge test one (OnePass), whatever is asked.
 enum class EdgePath {
-    Auto,      //!< on a CPU device (lavapipe) the segments for fxaa3c and ddaa1 in `hardware`, else the
-               //!< list; one pass on a GPU; one pass wherever the list would not fit
+    Auto,      //!< on a CPU device (lavapipe) the segments for fxaa3c and ddaa1 in `hardware` and for
+               //!< blur, else the list; one pass on a GPU; one pass wherever the list would not fit
     List,      //!< three dispatches: the luma plane, an edge list, the listed pixels
     OnePass,   //!< one dispatch, every pixel's early exit in place, the lumas in a workgroup tile
     Segments,  //!< one dispatch over 8-pixel row segments, a subgroup's edge pixels spread over its lanes
@@ -91,8 +94,9 @@ public:
 
     const MethodInfo& method() const;
     Sampling sampling() const;
-    //! The path the edge-test methods take on this device (never Auto; List for a method
-    //! without an edge test). An image too large for the list runs in one pass regardless.
+    //! The path the pass takes on this device (never Auto; OnePass or Segments for blur,
+    //! OnePass for the other methods without an edge test). An image too large for the list
+    //! runs in one pass regardless.
     EdgePath edgePath() const;
     //! Model mode: whether the device's decode of every 8-bit value in the input's format was
     //! found to be the CPU's level (unorm: v / 255 correctly rounded; texture=srgb: kSrgb8) by
