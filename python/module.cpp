@@ -571,7 +571,8 @@ std::string methodsDoc() {
         "out: an array of the output's shape to write into; **params: the method's parameters.\n"
         "backend: 'cpu' (default) or 'vulkan' (the Vulkan compute pass, on one context per process made when first\n"
         "needed: the CPU's bytes with sampling='model', the default; sampling='hardware': the device's filtering\n"
-        "and arithmetic; edges='list'|'one-pass'|'segments': the path of blur and the edge methods, default 'auto'); device: with "
+        "and arithmetic; edges='list'|'one-pass'|'segments': the path of blur and the edge methods, default 'auto'); "
+        "device: with "
         "'vulkan',\n"
         "a device index or part of its name, as the CLI's --device (default: a GPU, else lavapipe).\n\nMethods:\n";
     for (const MethodInfo& m : methods()) {
