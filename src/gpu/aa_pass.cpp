@@ -368,6 +368,38 @@ bool decodeIsExact(vkx::Context& c, const vk::raii::Sampler& sampler, TextureFor
     });
 }
 
+const std::uint32_t kSubgroupProbe[] = {
+#include "shaders/subgroup_probe.comp.inc"
+};
+
+// Whether the device's subgroups in a 16 x 16 work group are runs of consecutive invocations:
+// every invocation's subgroup invocation id is its local invocation index modulo a subgroup
+// size of 2 or more, a power of two, the same for all (subgroup_probe.comp). Vulkan does not
+// promise this layout; blur's segments, which take the rows above and below from the
+// neighbouring lanes, run only where the probe found it (once per device and driver).
+bool subgroupsAreConsecutive(vkx::Context& c) {
+    return probedOnce(c, "consecutive subgroups", [&] {
+        constexpr std::uint32_t kInvocations = SSFX_AA_GROUP * SSFX_AA_GROUP;
+        const vkx::ComputePipeline probe(c, kSubgroupProbe, {{vk::DescriptorType::eStorageBuffer}}, 0, nullptr, true);
+        const vkx::Buffer out = c.createBuffer(2 * kInvocations * 4, vk::BufferUsageFlagBits::eStorageBuffer, true);
+        c.submit([&](const vk::raii::CommandBuffer& cmd) {
+            const vk::DescriptorBufferInfo outInfo(*out.buffer, 0, VK_WHOLE_SIZE);
+            const vk::WriteDescriptorSet writes[] = {{{}, 0, 0, vk::DescriptorType::eStorageBuffer, {}, outInfo}};
+            probe.dispatchPushed(cmd, writes, nullptr, 1);
+            const vk::MemoryBarrier toHost(vk::AccessFlagBits::eShaderWrite, vk::AccessFlagBits::eHostRead);
+            cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eHost, {}, toHost,
+                                {}, {});
+        });
+        std::array<std::uint32_t, 2 * kInvocations> lanes{};
+        std::memcpy(lanes.data(), out.mapped, sizeof lanes);
+        const std::uint32_t size = lanes[1];
+        if (size < 2 || !std::has_single_bit(size)) return false;
+        for (std::uint32_t i = 0; i < kInvocations; ++i)
+            if (lanes[2 * i] != i % size || lanes[2 * i + 1] != size) return false;
+        return true;
+    });
+}
+
 // texture=srgb: whether the passes recover every texel's byte from the device's decode
 // through an sRGB view (srgb.glsl's srgbLevelsDevice, in both sRGB formats). The model needs
 // the bytes (devices' sRGB decodes are approximate: it decodes them with the CPU's table);
@@ -824,7 +856,8 @@ AaPass::AaPass(std::shared_ptr<vkx::Context> ctx, std::string_view method, const
     const bool cpuDevice = c.physical.getProperties().deviceType == vk::PhysicalDeviceType::eCpu;
     // The segments stage sums and shuffles across a subgroup (edge_list.glsl).
     const bool segmentsRun =
-        c.computeSubgroupOps(vk::SubgroupFeatureFlagBits::eArithmetic | vk::SubgroupFeatureFlagBits::eShuffle);
+        c.computeSubgroupOps(vk::SubgroupFeatureFlagBits::eBasic | vk::SubgroupFeatureFlagBits::eArithmetic |
+                             vk::SubgroupFeatureFlagBits::eShuffle);
     if (hasEdgePass(m.method->id) && edges == EdgePath::Segments && !segmentsRun)
         throw Error(
             fmt::format("{}: edges=segments needs subgroup arithmetic and shuffles in compute shaders, which "
@@ -894,11 +927,19 @@ AaPass::AaPass(std::shared_ptr<vkx::Context> ctx, std::string_view method, const
                          : cpuDevice             ? cpuEdgePath(m.method->id, sampling, segmentsRun)
                                                  : kGpuEdgePath;
         } else {
-            // blur: its segments (each texel of three rows fetched once for 8 pixels) on a CPU
-            // device, where an invocation and a fetch cost most (docs/gpu.md); a pixel an
+            // blur: its segments (a texel fetched 2.5 times a pixel, not 9) on a CPU device,
+            // where an invocation and a fetch cost most (docs/gpu.md), where its subgroups are
+            // runs of consecutive invocations (the segments' lanes share rows); a pixel an
             // invocation on a GPU. The methods without a segments module: one pass.
-            const bool rows =
+            const bool wanted =
                 hasSegments(m.method->id) && (edges == EdgePath::Segments || (edges == EdgePath::Auto && cpuDevice));
+            const bool rows = wanted && segmentsRun && subgroupsAreConsecutive(c);
+            if (wanted && edges == EdgePath::Segments && !rows)
+                throw Error(fmt::format(
+                    "{}: edges=segments needs subgroup shuffles in compute shaders, with a subgroup's lanes "
+                    "consecutive invocations of the work group, which this device does not have (edges=one-pass "
+                    "runs on it)",
+                    m.method->id));
             m.edgePath = rows ? EdgePath::Segments : EdgePath::OnePass;
         }
         // The list's three pipelines only for the list path (the others' one pipeline is made

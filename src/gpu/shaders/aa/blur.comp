@@ -17,26 +17,40 @@ vec3 blurred(vec3 c, vec3 w, vec3 e, vec3 aw, vec3 a, vec3 ae, vec3 bw, vec3 b, 
 
 #ifdef SSFX_AA_SEGMENTS_MODULE
 // The segments path (gpu::EdgePath::Segments, CPU devices): one invocation per SSFX_AA_SEGMENT
-// pixels of a row, each texel of the three rows fetched and decoded once (3 (S + 2) fetches
-// for S pixels against 9 S), three columns live at a time. The same values in the same sums,
-// so the same bytes.
+// pixels of a row, and a subgroup's lanes on consecutive rows of one column of segments (the
+// work group transposed: local x is the row, local y the segment; aa_pass.cpp makes this path
+// only where its probe found a subgroup's lanes to be consecutive invocations of the group).
+// Each lane fetches and decodes the 10 texels of its own row around its pixels and of one more
+// row, and takes the rows above and below from its neighbouring lanes (subgroupShuffle): the
+// first lane of a run fetches the row above, every other lane the row below, which only the
+// last lane of a run uses. So 2 (S + 2) fetches for S pixels (2.5 a pixel; 9 one pixel an
+// invocation), the same values in the same sums: the same bytes. Every invocation reaches
+// the shuffles.
 void main() {
-    const int xs = int(gl_GlobalInvocationID.x) * SSFX_AA_SEGMENT, y = int(gl_GlobalInvocationID.y);
-    if (xs >= pc.outWidth || y >= pc.outHeight) return;
-    // Columns x - 1, x, x + 1 of the rows above (a), the pixel's (m) and below (b).
-    vec3 a0 = texelValue(xs - 1, y - 1), m0 = texelValue(xs - 1, y), b0 = texelValue(xs - 1, y + 1);
-    vec3 a1 = texelValue(xs, y - 1), b1 = texelValue(xs, y + 1);
-    vec4 r1 = texelRaw(xs, y);
-    vec3 m1 = texelDecoded(r1);
-    for (int i = 0; i < SSFX_AA_SEGMENT; ++i) {
-        const int x = xs + i;
-        const vec3 a2 = texelValue(x + 1, y - 1), b2 = texelValue(x + 1, y + 1);
-        const vec4 r2 = texelRaw(x + 1, y);
-        const vec3 m2 = texelDecoded(r2);
-        if (x < pc.outWidth) store(ivec2(x, y), blurred(m1, m0, m2, a0, a1, a2, b0, b1, b2), uint(round(r1.a * 255.0)));
-        a0 = a1, m0 = m1, b0 = b1;
-        a1 = a2, m1 = m2, b1 = b2, r1 = r2;
+    const int xs = int(gl_WorkGroupID.x * SSFX_AA_GROUP + gl_LocalInvocationID.y) * SSFX_AA_SEGMENT;
+    const int y = int(gl_WorkGroupID.y * SSFX_AA_GROUP + gl_LocalInvocationID.x);
+    const uint lane = gl_SubgroupInvocationID;
+    // The neighbouring lanes hold the rows y - 1 and y + 1 of the same segments, within the group.
+    const bool haveAbove = lane > 0u && gl_LocalInvocationID.x > 0u;
+    const bool haveBelow = lane + 1u < gl_SubgroupSize && gl_LocalInvocationID.x + 1u < SSFX_AA_GROUP;
+    const int extraY = haveAbove ? y + 1 : y - 1;  // (a lane has one of them at least: the probe)
+    // Columns xs - 1 .. xs + S of the rows above (a), the pixel's (m) and below (b).
+    vec3 a[SSFX_AA_SEGMENT + 2], m[SSFX_AA_SEGMENT + 2], b[SSFX_AA_SEGMENT + 2];
+    float alpha[SSFX_AA_SEGMENT];
+    for (int i = 0; i < SSFX_AA_SEGMENT + 2; ++i) {
+        const vec4 r = texelRaw(xs - 1 + i, y);
+        m[i] = texelDecoded(r);
+        if (i >= 1 && i <= SSFX_AA_SEGMENT) alpha[i - 1] = r.a;
+        const vec3 extra = texelValue(xs - 1 + i, extraY);
+        const vec3 above = subgroupShuffle(m[i], lane - 1u), below = subgroupShuffle(m[i], lane + 1u);
+        a[i] = haveAbove ? above : extra;
+        b[i] = haveBelow ? below : extra;
     }
+    if (xs >= pc.outWidth || y >= pc.outHeight) return;
+    for (int i = 0; i < SSFX_AA_SEGMENT; ++i)
+        if (xs + i < pc.outWidth)
+            store(ivec2(xs + i, y), blurred(m[i + 1], m[i], m[i + 2], a[i], a[i + 1], a[i + 2], b[i], b[i + 1], b[i + 2]),
+                  uint(round(alpha[i] * 255.0)));
 }
 #else
 void main() {
