@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdlib>
 #include <cstring>
+#include <functional>
 #include <iterator>
 #include <map>
 #include <mutex>
@@ -497,14 +498,15 @@ std::uint32_t edgeGroupsFor(vk::DeviceSize pixels, int loopsPerPixel, std::uint3
     return std::uint32_t(std::min<vk::DeviceSize>((pixels + perGroup - 1) / perGroup, SSFX_AA_EDGE_MAX_GROUPS));
 }
 // EdgePath::Auto's choice per kind of device, mode and method (docs/gpu.md: measured on
-// lavapipe and an H200). On a CPU device the segments for fxaa3c and ddaa1 in the hardware
-// mode (where the device has their subgroup operations: fxaa3c 0.71 to 0.95 of the list's
-// time, ddaa1 0.53 to 0.88, three images); the list for fxaa3d and ddaa2, whose long searches
-// ran as fast or slower from segments (1.00 to 1.47, 0.69 to 1.12), and in the model, whose
-// exact lumas the segments' rows compute 3.75 times a pixel where the list computes each once
-// (0.87 to 1.39x the list's time).
-EdgePath cpuEdgePath(std::string_view id, Sampling sampling, bool segmentsRun) {
-    const bool segments = sampling == Sampling::Hardware && (id == "fxaa3c" || id == "ddaa1") && segmentsRun;
+// lavapipe and an H200). On a CPU device, where the device has the segments' subgroup
+// operations and layout, the segments (their rows shared across the subgroup) for fxaa3c and
+// ddaa1 in both modes (segments / list on three images, two rounds: hardware 0.5 to 0.7,
+// model 0.77 to 0.96 in 10 of 12 pairs) and for ddaa2 in the hardware mode (0.67 to 0.88);
+// the list for fxaa3d (hardware 0.82 to 1.05) and for ddaa2 in the model (0.85 to 1.40), whose
+// long searches gain least from the segments' shared rows.
+EdgePath cpuEdgePath(std::string_view id, Sampling sampling, const std::function<bool()>& segmentsRun) {
+    const bool hardware = sampling == Sampling::Hardware;
+    const bool segments = (id == "fxaa3c" || id == "ddaa1" || (hardware && id == "ddaa2")) && segmentsRun();
     return segments ? EdgePath::Segments : EdgePath::List;
 }
 constexpr EdgePath kGpuEdgePath = EdgePath::OnePass;
@@ -854,15 +856,20 @@ AaPass::AaPass(std::shared_ptr<vkx::Context> ctx, std::string_view method, const
     detail::AaSpecialization spec = detail::aaSpecialization(m.params, sampling);
     vkx::Context& c = *m.ctx;
     const bool cpuDevice = c.physical.getProperties().deviceType == vk::PhysicalDeviceType::eCpu;
-    // The segments stage sums and shuffles across a subgroup (edge_list.glsl).
-    const bool segmentsRun =
+    // The segments (blur.comp, edge_list.glsl) sum and shuffle across a subgroup, whose lanes
+    // must be consecutive invocations of the work group (they share rows): a probe, made when
+    // the segments are first wanted on a device.
+    const bool subgroupOps =
         c.computeSubgroupOps(vk::SubgroupFeatureFlagBits::eBasic | vk::SubgroupFeatureFlagBits::eArithmetic |
                              vk::SubgroupFeatureFlagBits::eShuffle);
-    if (hasEdgePass(m.method->id) && edges == EdgePath::Segments && !segmentsRun)
-        throw Error(
-            fmt::format("{}: edges=segments needs subgroup arithmetic and shuffles in compute shaders, which "
-                        "this device does not have (edges=list or one-pass run on it)",
-                        m.method->id));
+    const auto segmentsRun = [&] { return subgroupOps && subgroupsAreConsecutive(c); };
+    const auto noSegments = [&] {
+        return Error(
+            fmt::format("{}: edges=segments needs subgroup arithmetic and shuffles in compute shaders, with a "
+                        "subgroup's lanes consecutive invocations of the work group, which this device does not "
+                        "have ({} run on it)",
+                        m.method->id, hasEdgePass(m.method->id) ? "edges=list or one-pass" : "edges=one-pass"));
+    };
     if (std::holds_alternative<aa::Ddaa2Params>(m.params)) {
         // ddaa2's batched search rounds: faster on lavapipe, slower on the H200 (ddaa2.comp).
         // SSFX_GPU_BATCHED_SEARCH=0|1 forces either, for tests and measurements (docs/gpu.md).
@@ -926,6 +933,7 @@ AaPass::AaPass(std::shared_ptr<vkx::Context> ctx, std::string_view method, const
             m.edgePath = edges != EdgePath::Auto ? edges
                          : cpuDevice             ? cpuEdgePath(m.method->id, sampling, segmentsRun)
                                                  : kGpuEdgePath;
+            if (m.edgePath == EdgePath::Segments && edges == EdgePath::Segments && !segmentsRun()) throw noSegments();
         } else {
             // blur: its segments (a texel fetched 2.5 times a pixel, not 9) on a CPU device,
             // where an invocation and a fetch cost most (docs/gpu.md), where its subgroups are
@@ -933,13 +941,8 @@ AaPass::AaPass(std::shared_ptr<vkx::Context> ctx, std::string_view method, const
             // invocation on a GPU. The methods without a segments module: one pass.
             const bool wanted =
                 hasSegments(m.method->id) && (edges == EdgePath::Segments || (edges == EdgePath::Auto && cpuDevice));
-            const bool rows = wanted && segmentsRun && subgroupsAreConsecutive(c);
-            if (wanted && edges == EdgePath::Segments && !rows)
-                throw Error(fmt::format(
-                    "{}: edges=segments needs subgroup shuffles in compute shaders, with a subgroup's lanes "
-                    "consecutive invocations of the work group, which this device does not have (edges=one-pass "
-                    "runs on it)",
-                    m.method->id));
+            const bool rows = wanted && segmentsRun();
+            if (wanted && edges == EdgePath::Segments && !rows) throw noSegments();
             m.edgePath = rows ? EdgePath::Segments : EdgePath::OnePass;
         }
         // The list's three pipelines only for the list path (the others' one pipeline is made

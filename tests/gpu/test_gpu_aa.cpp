@@ -603,15 +603,18 @@ TEST(GpuAa, RunReportsItsDispatchesAndTheListedShare) {
         EXPECT_EQ(seg.lastDispatches()[0].stage, "segments") << id;
         EXPECT_EQ(seg.lastEdgeShare(), -1.0) << id;
     }
-    // Auto: on a CPU device the segments for fxaa3c and ddaa1 in the hardware mode, else the
-    // list; one pass on a GPU.
+    // Auto: on a CPU device the segments for fxaa3c and ddaa1, and for ddaa2 in the hardware
+    // mode, else the list; one pass on a GPU.
     const bool cpuDevice = context()->physical.getProperties().deviceType == vk::PhysicalDeviceType::eCpu;
     const auto hardware = [](const char* id) {
         return gpu::AaPass(context(), id, {}, gpu::Sampling::Hardware).edgePath();
     };
     EXPECT_EQ(gpu::AaPass(context(), "ddaa2").edgePath(), cpuDevice ? gpu::EdgePath::List : gpu::EdgePath::OnePass);
+    EXPECT_EQ(gpu::AaPass(context(), "fxaa3c").edgePath(),
+              cpuDevice ? gpu::EdgePath::Segments : gpu::EdgePath::OnePass);
     EXPECT_EQ(hardware("ddaa1"), cpuDevice ? gpu::EdgePath::Segments : gpu::EdgePath::OnePass);
-    EXPECT_EQ(hardware("ddaa2"), cpuDevice ? gpu::EdgePath::List : gpu::EdgePath::OnePass);
+    EXPECT_EQ(hardware("ddaa2"), cpuDevice ? gpu::EdgePath::Segments : gpu::EdgePath::OnePass);
+    EXPECT_EQ(hardware("fxaa3d"), cpuDevice ? gpu::EdgePath::List : gpu::EdgePath::OnePass);
     // blur: one dispatch, no list; its segments on a CPU device (auto), one pixel an invocation
     // on a GPU or with one-pass (or list, which it has not).
     gpu::AaPass blur(context(), "blur");

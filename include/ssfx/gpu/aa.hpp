@@ -53,17 +53,19 @@ Sampling parseSampling(std::string_view name);
 
 //! How the methods with an edge test (fxaa3c, fxaa3d, ddaa1, ddaa2 and ddaa2p's ddaa2) run,
 //! and blur (docs/gpu.md, "Workgroups, workgroup memory and the paths of the edge-test
-//! methods"). All give the same bytes in `model`. The edge methods' segments need subgroup
-//! arithmetic and shuffles in compute shaders (every desktop GPU and lavapipe have them; the
-//! pass says so where a device does not). blur has two paths: Segments (each texel of three
-//! rows fetched once for 8 pixels) and one pixel an invocation (OnePass; List asks for it
-//! too); the other methods without an edge test one (OnePass), whatever is asked.
+//! methods"). All give the same bytes in `model`. The segments need subgroup arithmetic and
+//! shuffles in compute shaders, and a subgroup's lanes consecutive invocations of the work
+//! group, as the lanes share rows (every desktop GPU and lavapipe have them; a probe checks
+//! the layout, and the pass says so where a device does not). blur has two paths: Segments
+//! (each texel fetched 2.5 times a pixel) and one pixel an invocation (OnePass; List asks for
+//! it too); the other methods without an edge test one (OnePass), whatever is asked.
 enum class EdgePath {
-    Auto,      //!< on a CPU device (lavapipe) the segments for fxaa3c and ddaa1 in `hardware` and for
-               //!< blur, else the list; one pass on a GPU; one pass wherever the list would not fit
+    Auto,      //!< on a CPU device (lavapipe) the segments for blur, fxaa3c and ddaa1, and for ddaa2 in
+               //!< `hardware`, else the list; one pass on a GPU; one pass wherever the list would not fit
     List,      //!< three dispatches: the luma plane, an edge list, the listed pixels
     OnePass,   //!< one dispatch, every pixel's early exit in place, the lumas in a workgroup tile
-    Segments,  //!< one dispatch over 8-pixel row segments, a subgroup's edge pixels spread over its lanes
+    Segments,  //!< one dispatch over 8-pixel row segments, rows shared by a subgroup's lanes, its edge
+               //!< pixels spread over them
 };
 //! "auto", "list", "one-pass" or "segments"; parseEdgePath throws ssfx::Error for anything else.
 std::string_view edgePathName(EdgePath p);
