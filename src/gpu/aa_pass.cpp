@@ -933,7 +933,7 @@ AaPass::AaPass(std::shared_ptr<vkx::Context> ctx, std::string_view method, const
             m.edgePath = edges != EdgePath::Auto ? edges
                          : cpuDevice             ? cpuEdgePath(m.method->id, sampling, segmentsRun)
                                                  : kGpuEdgePath;
-            if (m.edgePath == EdgePath::Segments && edges == EdgePath::Segments && !segmentsRun()) throw noSegments();
+            if (edges == EdgePath::Segments && !segmentsRun()) throw noSegments();
         } else {
             // blur: its segments (a texel fetched 2.5 times a pixel, not 9) on a CPU device,
             // where an invocation and a fetch cost most (docs/gpu.md), where its subgroups are
@@ -949,8 +949,7 @@ AaPass::AaPass(std::shared_ptr<vkx::Context> ctx, std::string_view method, const
         // when first used): a pipeline takes lavapipe about a second to compile.
         const bool list = hasEdgePass(m.method->id) && m.edgePath == EdgePath::List;
         if (!hasEdgePass(m.method->id) || list)
-            m.pipeline =
-                makePipeline(c, shaderFor(m.method->id, sampling, m.edgePath == EdgePath::Segments && !list), first);
+            m.pipeline = makePipeline(c, shaderFor(m.method->id, sampling, m.edgePath == EdgePath::Segments), first);
         if (hasEdgePass(m.method->id)) {
             m.spec = spec;
             const vk::DeviceSize range = c.physical.getProperties().limits.maxStorageBufferRange;

@@ -16,24 +16,15 @@ vec3 blurred(vec3 c, vec3 w, vec3 e, vec3 aw, vec3 a, vec3 ae, vec3 bw, vec3 b, 
 }
 
 #ifdef SSFX_AA_SEGMENTS_MODULE
-// The segments path (gpu::EdgePath::Segments, CPU devices): one invocation per SSFX_AA_SEGMENT
-// pixels of a row, and a subgroup's lanes on consecutive rows of one column of segments (the
-// work group transposed: local x is the row, local y the segment; aa_pass.cpp makes this path
-// only where its probe found a subgroup's lanes to be consecutive invocations of the group).
-// Each lane fetches and decodes the 10 texels of its own row around its pixels and of one more
-// row, and takes the rows above and below from its neighbouring lanes (subgroupShuffle): the
-// first lane of a run fetches the row above, every other lane the row below, which only the
-// last lane of a run uses. So 2 (S + 2) fetches for S pixels (2.5 a pixel; 9 one pixel an
-// invocation), the same values in the same sums: the same bytes. Every invocation reaches
-// the shuffles.
+// The segments path (gpu::EdgePath::Segments, CPU devices; ppaa.glsl's segmentLane): each lane
+// fetches and decodes the 10 texels of its own row around its pixels and of one more row, and
+// takes the rows above and below from its neighbouring lanes (subgroupShuffle): 2 (S + 2)
+// fetches for S pixels (2.5 a pixel; 9 one pixel an invocation), the same values in the same
+// sums: the same bytes. Every invocation reaches the shuffles.
 void main() {
-    const int xs = int(gl_WorkGroupID.x * SSFX_AA_GROUP + gl_LocalInvocationID.y) * SSFX_AA_SEGMENT;
-    const int y = int(gl_WorkGroupID.y * SSFX_AA_GROUP + gl_LocalInvocationID.x);
+    const SegmentLane s = segmentLane();
+    const int xs = s.xs, y = s.y;
     const uint lane = gl_SubgroupInvocationID;
-    // The neighbouring lanes hold the rows y - 1 and y + 1 of the same segments, within the group.
-    const bool haveAbove = lane > 0u && gl_LocalInvocationID.x > 0u;
-    const bool haveBelow = lane + 1u < gl_SubgroupSize && gl_LocalInvocationID.x + 1u < SSFX_AA_GROUP;
-    const int extraY = haveAbove ? y + 1 : y - 1;  // (a lane has one of them at least: the probe)
     // Columns xs - 1 .. xs + S of the rows above (a), the pixel's (m) and below (b).
     vec3 a[SSFX_AA_SEGMENT + 2], m[SSFX_AA_SEGMENT + 2], b[SSFX_AA_SEGMENT + 2];
     float alpha[SSFX_AA_SEGMENT];
@@ -41,10 +32,10 @@ void main() {
         const vec4 r = texelRaw(xs - 1 + i, y);
         m[i] = texelDecoded(r);
         if (i >= 1 && i <= SSFX_AA_SEGMENT) alpha[i - 1] = r.a;
-        const vec3 extra = texelValue(xs - 1 + i, extraY);
+        const vec3 extra = texelValue(xs - 1 + i, s.extraY);
         const vec3 above = subgroupShuffle(m[i], lane - 1u), below = subgroupShuffle(m[i], lane + 1u);
-        a[i] = haveAbove ? above : extra;
-        b[i] = haveBelow ? below : extra;
+        a[i] = s.haveAbove ? above : extra;
+        b[i] = s.haveBelow ? below : extra;
     }
     if (xs >= pc.outWidth || y >= pc.outHeight) return;
     for (int i = 0; i < SSFX_AA_SEGMENT; ++i)

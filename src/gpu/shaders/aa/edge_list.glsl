@@ -75,22 +75,15 @@ LumaRow lumaRow(int q, int y) {
 // pixel is computed on its own, so the bytes are the other paths'. Every invocation, inside
 // the image or not, reaches the subgroup operations.
 void segments() {
-    // The work group transposed (local x is the row, local y the segment), so that a
-    // subgroup's lanes lie on consecutive rows of one column of segments (aa_pass.cpp makes
-    // this path only where its probe found a subgroup's lanes to be consecutive invocations).
-    const int xs = int(gl_WorkGroupID.x * SSFX_AA_GROUP + gl_LocalInvocationID.y) * SSFX_AA_SEGMENT;
-    const int y = int(gl_WorkGroupID.y * SSFX_AA_GROUP + gl_LocalInvocationID.x);
-    const bool inside = xs < pc.width && y < pc.height;
     // Lumas of columns xs - 1 .. xs + S of rows y - 1 (above), y and y + 1 (below), fetched
     // clamped as the plane's; the row's own texels kept for the copies. Each lane computes its
     // own row's and one more, and takes the rows above and below from its neighbouring lanes
-    // (the first lane of a run computes the row above, the others the row below, which only
-    // the last uses): 2 (S + 2) lumas for S pixels (2.5 a pixel, where each lane computing its
-    // three rows took 3.75).
+    // (ppaa.glsl's segmentLane): 2 (S + 2) lumas for S pixels (2.5 a pixel, where each lane
+    // computing its three rows took 3.75).
+    const SegmentLane s = segmentLane();
+    const int xs = s.xs, y = s.y;
+    const bool inside = xs < pc.width && y < pc.height;
     const uint lane = gl_SubgroupInvocationID;
-    const bool haveAbove = lane > 0u && gl_LocalInvocationID.x > 0u;
-    const bool haveBelow = lane + 1u < gl_SubgroupSize && gl_LocalInvocationID.x + 1u < SSFX_AA_GROUP;
-    const int extraY = haveAbove ? y + 1 : y - 1;  // (a lane has one of them at least: the probe)
     float above[SSFX_AA_SEGMENT + 2], row[SSFX_AA_SEGMENT + 2], below[SSFX_AA_SEGMENT + 2];
     vec4 raw[SSFX_AA_SEGMENT];
     for (int i = 0; i < SSFX_AA_SEGMENT + 2; ++i) {
@@ -98,10 +91,10 @@ void segments() {
         const vec4 r = texelRaw(x, y);
         if (i >= 1 && i <= SSFX_AA_SEGMENT) raw[i - 1] = r;
         row[i] = edgeLuma(texelDecoded(r));
-        const float extra = edgeLuma(fetchValue(x, extraY));
+        const float extra = edgeLuma(fetchValue(x, s.extraY));
         const float up = subgroupShuffle(row[i], lane - 1u), down = subgroupShuffle(row[i], lane + 1u);
-        above[i] = haveAbove ? up : extra;
-        below[i] = haveBelow ? down : extra;
+        above[i] = s.haveAbove ? up : extra;
+        below[i] = s.haveBelow ? down : extra;
     }
     uint edge = 0u;  // bit i: pixel xs + i is an edge pixel
     for (int i = 0; i < SSFX_AA_SEGMENT; ++i) {

@@ -278,6 +278,31 @@ float lumaAt(int x, int y) {
 float lumaAt(int x, int y) { return edgeLuma(fetchValue(x, y)); }
 #endif
 
+#ifdef SSFX_AA_SEGMENTS_MODULE
+// The segments' layout (blur.comp, edge_list.glsl): one invocation per SSFX_AA_SEGMENT pixels
+// of a row, the work group transposed (local x is the row, local y the segment) so that a
+// subgroup's lanes lie on consecutive rows of one column of segments (aa_pass.cpp makes the
+// segments only where its probe found a subgroup's lanes to be consecutive invocations of the
+// group). A lane takes the rows above and below from its neighbouring lanes where they hold
+// them, and fetches one more row itself: the row above for the first lane of a run, else the
+// row below, which only the last lane uses (every lane lacks one of them at most: the probe).
+struct SegmentLane {
+    int xs, y;                   // the segment's first pixel
+    bool haveAbove, haveBelow;   // the neighbouring lanes hold rows y - 1 and y + 1 of these segments
+    int extraY;                  // the row this lane fetches besides its own
+};
+SegmentLane segmentLane() {
+    SegmentLane s;
+    s.xs = int(gl_WorkGroupID.x * SSFX_AA_GROUP + gl_LocalInvocationID.y) * SSFX_AA_SEGMENT;
+    s.y = int(gl_WorkGroupID.y * SSFX_AA_GROUP + gl_LocalInvocationID.x);
+    const uint lane = gl_SubgroupInvocationID;
+    s.haveAbove = lane > 0u && gl_LocalInvocationID.x > 0u;
+    s.haveBelow = lane + 1u < gl_SubgroupSize && gl_LocalInvocationID.x + 1u < SSFX_AA_GROUP;
+    s.extraY = s.haveAbove ? s.y + 1 : s.y - 1;
+    return s;
+}
+#endif
+
 // The output pixel: the colour quantised exactly (model) or by the device (hardware), alpha
 // from `alpha` (an 8-bit value). texture=srgb: encoded back to sRGB levels (the output is a
 // unorm image holding the sRGB bytes, as the CPU's output).
