@@ -208,9 +208,10 @@ TEST(GpuModelParityCoordinateReads, SearchReadsAtCoordinatesGiveTheCpuBytes) {
 // iterations (vkx::Context::maxShaderLoopIterations), without an error. The edge pass's
 // invocations loop over the list, so the pass gives it enough work groups that the method's
 // own loops fit (edgeGroupsFor). SSFX_GPU_EDGE_GROUPS=1 leaves a single group of 64
-// invocations to that rule: on these stripes (every pixel an edge, every fxaa3d walk its 11
-// steps) each invocation would run 8192 list entries, about 98 000 loop iterations, where
-// fxaa3d lost the entries past the budget (before the rule: 260 096 of the 524 288 pixels differed).
+// invocations to that rule: on these stripes (every pixel an edge, every fxaa3d walk its ten
+// reads a side, 20 loop iterations one side a step as on a CPU device) each invocation would
+// run 8192 list entries, about 172 000 loop iterations, where fxaa3d lost the entries past the
+// budget (before the rule, with 11 iterations a walk: 260 096 of the 524 288 pixels differed).
 // The budget is llvmpipe's; elsewhere the test checks the same bytes with one group.
 TEST(GpuModelParityLoopBudget, OneGroupOverAnEdgeDenseImageGivesTheCpuBytes) {
     REQUIRE_DEVICE();
@@ -219,7 +220,7 @@ TEST(GpuModelParityLoopBudget, OneGroupOverAnEdgeDenseImageGivesTheCpuBytes) {
         for (int x = 0; x < in.width(); ++x)
             in(x, y) = (y / 2) % 2 ? Rgba8{220, 210, 200, 255} : Rgba8{30, 40, 50, 255};
     ASSERT_EQ(setenv("SSFX_GPU_EDGE_GROUPS", "1", 1), 0);
-    for (const char* id : {"fxaa3d", "ddaa2"}) {
+    for (const char* id : {"fxaa3c", "fxaa3d", "ddaa1", "ddaa2"}) {
         const MethodInfo& m = methodById(id);
         gpu::AaPass pass(context(), m.id, {}, gpu::Sampling::Model, gpu::EdgePath::List);
         const ImageRgba8 cpu = m.run(in.view(), {}, Exec{});
@@ -239,6 +240,18 @@ TEST(GpuModelParityBatchedSearch, BothSearchOrdersGiveTheCpuBytes) {
     for (const char* mode : {"0", "1"})
         expectCpuBytesWith("SSFX_GPU_BATCHED_SEARCH", mode, {"ddaa2", "ddaa2p"},
                            {Case{"random 64x48", 64, 48}, Case{"random 37x23", 37, 23}}, 80);
+}
+
+// fxaa3d's walk moves one side a step on a CPU device and both sides a step, as the paper's
+// shader, on a GPU (spec sideWalk); SSFX_GPU_SIDE_WALK forces either: the same bytes. The
+// inputs' hard-edged half gives walks of every length; the stripes of
+// GpuModelParityLoopBudget, every walk its ten reads a side.
+TEST(GpuModelParitySideWalk, BothWalkOrdersGiveTheCpuBytes) {
+    REQUIRE_DEVICE();
+    for (const char* mode : {"0", "1"})
+        expectCpuBytesWith("SSFX_GPU_SIDE_WALK", mode, {"fxaa3d"},
+                           {Case{"random 64x48", 64, 48}, Case{"random 37x23", 37, 23}, Case{"odd 131x67", 131, 67}},
+                           90);
 }
 
 // The model takes fetched values as the texels' levels where the pass's probe found the
@@ -603,8 +616,8 @@ TEST(GpuAa, RunReportsItsDispatchesAndTheListedShare) {
         EXPECT_EQ(seg.lastDispatches()[0].stage, "segments") << id;
         EXPECT_EQ(seg.lastEdgeShare(), -1.0) << id;
     }
-    // Auto: on a CPU device the segments for fxaa3c and ddaa1, and for ddaa2 in the hardware
-    // mode, else the list; one pass on a GPU.
+    // Auto: on a CPU device the segments for fxaa3c and ddaa1, and for fxaa3d and ddaa2 in the
+    // hardware mode, else the list; one pass on a GPU.
     const bool cpuDevice = context()->physical.getProperties().deviceType == vk::PhysicalDeviceType::eCpu;
     const auto hardware = [](const char* id) {
         return gpu::AaPass(context(), id, {}, gpu::Sampling::Hardware).edgePath();
@@ -614,7 +627,8 @@ TEST(GpuAa, RunReportsItsDispatchesAndTheListedShare) {
               cpuDevice ? gpu::EdgePath::Segments : gpu::EdgePath::OnePass);
     EXPECT_EQ(hardware("ddaa1"), cpuDevice ? gpu::EdgePath::Segments : gpu::EdgePath::OnePass);
     EXPECT_EQ(hardware("ddaa2"), cpuDevice ? gpu::EdgePath::Segments : gpu::EdgePath::OnePass);
-    EXPECT_EQ(hardware("fxaa3d"), cpuDevice ? gpu::EdgePath::List : gpu::EdgePath::OnePass);
+    EXPECT_EQ(hardware("fxaa3d"), cpuDevice ? gpu::EdgePath::Segments : gpu::EdgePath::OnePass);
+    EXPECT_EQ(gpu::AaPass(context(), "fxaa3d").edgePath(), cpuDevice ? gpu::EdgePath::List : gpu::EdgePath::OnePass);
     // blur: one dispatch, no list; its segments on a CPU device (auto), one pixel an invocation
     // on a GPU or with one-pass (or list, which it has not).
     gpu::AaPass blur(context(), "blur");

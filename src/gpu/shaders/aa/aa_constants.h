@@ -53,7 +53,8 @@
     X(8, batchedSearch, 0)    /* ddaa2: a round's reads issued before they are tested (aa_pass.cpp) */    \
     X(9, deviceDecode, 0)     /* model: the device's decode of the input format is exact (aa_pass.cpp) */ \
     X(10, srgb, 0)            /* texture=srgb: an sRGB view, decoded, filtered in linear, encoded back */ \
-    X(11, srgbDecodeTable, 0) /* texture=srgb, model: levels from the device's decode by a table */
+    X(11, srgbDecodeTable, 0) /* texture=srgb, model: levels from the device's decode by a table */       \
+    X(12, sideWalk, 0)        /* fxaa3d: the walk moves one side a step (aa_pass.cpp) */
 
 // The three dispatches of the methods with an edge test (fxaa3c, fxaa3d, ddaa1, ddaa2;
 // edge_list.glsl): the first writes the luma plane and copies every pixel to the output; the
