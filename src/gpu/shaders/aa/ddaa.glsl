@@ -32,11 +32,13 @@ Diffusion diffusion(Luma3x3 n, EdgeSides s) {
 }
 
 // Average of two bilinear reads at centre -/+ step (+ offset), step = dir * maxDiffusion *
-// strength pixels; (offU, offV) is the edge-search offset in texture units.
-vec3 diffuse(int x, int y, Diffusion d, float offU, float offV) {
+// strength pixels; centre is the pixel's centre (centreU, centreV: its caller's, so that ddaa2
+// divides once for the search and the diffusion), (offU, offV) the edge-search offset in
+// texture units.
+vec3 diffuse(vec2 centre, Diffusion d, float offU, float offV) {
     EXACT float sx = d.dirX * pc.maxDiffusion * d.strength;
     EXACT float sy = d.dirY * pc.maxDiffusion * d.strength;
-    const float u = centreU(x), v = centreV(y);
+    const float u = centre.x, v = centre.y;
     EXACT float du = sx * pc.invW;
     EXACT float dv = sy * pc.invH;
     EXACT float au = u - du + offU;

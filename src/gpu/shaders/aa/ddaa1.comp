@@ -7,7 +7,7 @@
 
 bool edgeAt(int x, int y, Luma3x3 n) { return edgeAt3x3(n); }
 vec3 edgeColour(int x, int y, Luma3x3 n) {
-    return diffuse(x, y, diffusion(n, edgeSides(n)), 0.0, 0.0);
+    return diffuse(vec2(centreU(x), centreV(y)), diffusion(n, edgeSides(n)), 0.0, 0.0);
 }
 
 #include "edge_list.glsl"

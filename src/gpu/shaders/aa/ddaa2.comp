@@ -37,8 +37,9 @@ float searchDelta(int x, int y, int a0, int along, bool horizontal, float cu, fl
 // coordinate move and texel offset: round 0 reads positions 2 and 3 (position 1 is free),
 // round r > 0 moves c by 3 r + 2 pixels and reads offsets -1, 0, +1 around it.
 int roundPosition(int r, int k) { return r == 0 ? k + 2 : kBatch * r + 2 + (k - 1); }
-// Offset across the edge, in pixels, signed towards the steep side.
-float edgeSearchOffset(int x, int y, Luma3x3 n, EdgeSides s) {
+// Offset across the edge, in pixels, signed towards the steep side; centre: the pixel's centre
+// (centreU, centreV).
+float edgeSearchOffset(int x, int y, vec2 centre, Luma3x3 n, EdgeSides s) {
     const bool steep2 = abs(s.g2) > abs(s.g1);  // ties go to side 1
     const float lumaSteep = steep2 ? s.luma2 : s.luma1;
     EXACT float gradientScaled = 0.25 * maxf(abs(s.g1), abs(s.g2));
@@ -56,8 +57,8 @@ float edgeSearchOffset(int x, int y, Luma3x3 n, EdgeSides s) {
         first2 = (n.N + (steep2 ? n.NE : n.NW)) * 0.5;
     }
     // c: the centre moved half a pixel across, towards the steep side.
-    EXACT float cu = centreU(x);
-    EXACT float cv = centreV(y);
+    EXACT float cu = centre.x;
+    EXACT float cv = centre.y;
     if (s.horizontal)
         cv += float(across) * 0.5 * pc.invH;
     else
@@ -130,7 +131,8 @@ bool edgeAt(int x, int y, Luma3x3 n) { return edgeAt3x3(n); }
 vec3 edgeColour(int x, int y, Luma3x3 n) {
     const EdgeSides s = edgeSides(n);
     Diffusion d = diffusion(n, s);
-    const float offset = edgeSearchOffset(x, y, n, s);
+    const vec2 centre = vec2(centreU(x), centreV(y));
+    const float offset = edgeSearchOffset(x, y, centre, n, s);
     // Combination (section 2.3): the search offset moves both diffusion reads, and a large
     // offset (near an edge's end) weakens the diffusion.
     EXACT float edgeStrength = minf(1.0, 2.0 * abs(offset));
@@ -138,7 +140,7 @@ vec3 edgeColour(int x, int y, Luma3x3 n) {
     d.strength = st;
     EXACT float offU = s.horizontal ? 0.0 : offset * pc.invW;
     EXACT float offV = s.horizontal ? offset * pc.invH : 0.0;
-    return diffuse(x, y, d, offU, offV);
+    return diffuse(centre, d, offU, offV);
 }
 
 #include "edge_list.glsl"
