@@ -134,14 +134,14 @@ aa_all() {
             --image "$SCRATCH/photo.png" --json "$R/aa-photo-$size-$sampling-$path.json" | tail -8
         done
       done
-      # fxaa3d's walk: both sides a step (the GPU's default, the paper's loop) against one side
-      # a step (a CPU device's, docs/gpu.md), both modes, same run.
+      # fxaa3d's walk and ddaa2's search: both sides a step (the GPU's default, the paper's)
+      # against one side a step (a CPU device's, docs/gpu.md), both modes, same run.
       for walk in 0 1; do
         for sampling in model hardware; do
-          echo "== photo-$size, $sampling, SSFX_GPU_SIDE_WALK=$walk"
-          SSFX_GPU_SIDE_WALK=$walk "$S" bench --backend vulkan $DEVOPT -p "sampling=$sampling" \
-            --methods blur fxaa3d --reps "$reps" --warmup "$warmup" --image "$SCRATCH/photo.png" \
-            --json "$R/aa-photo-$size-$sampling-sidewalk$walk.json" | tail -4
+          echo "== photo-$size, $sampling, SSFX_GPU_SIDE_SEARCH=$walk"
+          SSFX_GPU_SIDE_SEARCH=$walk "$S" bench --backend vulkan $DEVOPT -p "sampling=$sampling" \
+            --methods blur fxaa3d ddaa2 --reps "$reps" --warmup "$warmup" --image "$SCRATCH/photo.png" \
+            --json "$R/aa-photo-$size-$sampling-sidesearch$walk.json" | tail -4
         done
       done
       # ddaa2's search reads in the hardware mode: the GPU's default (the device's filtered

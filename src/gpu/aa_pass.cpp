@@ -478,10 +478,12 @@ constexpr std::int32_t kCpuEdgeGroups = 256;
 // The loop iterations one edge pixel's computation may run beyond the edge pass's own loop
 // over the list. llvmpipe counts every pass of every loop that its compiler keeps, the pass
 // that ends a loop included, so each is counted at its most:
-//  - fxaa3d's walk (fxaa3d.comp): one side a step (spec sideWalk) 2 x 10 steps with a read and
+//  - fxaa3d's walk (fxaa3d.comp): one side a step (spec sideSearch) 2 x 10 steps with a read and
 //    the pass that ends the loop; both sides a step 11;
-//  - ddaa2's search (ddaa2.comp): searchRounds rounds and the ending pass, each round with its
-//    two loops over kBatch = 3 reads (and their ending passes) as if not unrolled;
+//  - ddaa2's search (ddaa2.comp): both sides a round, searchRounds rounds and the ending pass,
+//    each round with its two loops over kBatch = 3 reads (and their ending passes) as if not
+//    unrolled; one side a step (spec sideSearch), 2 x (2 + 3 (searchRounds - 1)) reads and
+//    the ending pass; the larger;
 //  - each division of the model (exact.glsl's correctlyRounded: at most 4 passes and the one
 //    that ends its loop), as the shaders write them (centreU and centreV one each): fxaa3c 14
 //    (8 of them its diagonals' off the pixel centres), fxaa3d 4, ddaa1 4, ddaa2 7.
@@ -490,11 +492,13 @@ constexpr std::int32_t kCpuEdgeGroups = 256;
 // divisions of one pass.)
 int edgeLoopIterations(const AaParams& params) {
     constexpr int kDivision = 4 + 1;
-    const auto batchedLoops = [](int rounds) { return (rounds + 1) * (1 + 2 * (3 + 1)); };
+    const auto searchLoops = [](int rounds) {
+        return std::max((rounds + 1) * (1 + 2 * (3 + 1)), 2 * (2 + 3 * std::max(rounds - 1, 0)) + 1);
+    };
     if (std::holds_alternative<aa::Fxaa3cParams>(params)) return 14 * kDivision;
     if (std::holds_alternative<aa::Fxaa3dParams>(params)) return 2 * 10 + 1 + 4 * kDivision;
     if (std::holds_alternative<aa::Ddaa1Params>(params)) return 4 * kDivision;
-    if (const auto* p = std::get_if<aa::Ddaa2Params>(&params)) return batchedLoops(p->searchRounds) + 7 * kDivision;
+    if (const auto* p = std::get_if<aa::Ddaa2Params>(&params)) return searchLoops(p->searchRounds) + 7 * kDivision;
     return 0;
 }
 
@@ -516,8 +520,9 @@ std::uint32_t edgeGroupsFor(vk::DeviceSize pixels, int loopsPerPixel, std::uint3
 // ddaa1 in both modes (segments / list on three images, two rounds: hardware 0.5 to 0.7,
 // model 0.77 to 0.96 in 10 of 12 pairs) and for fxaa3d and ddaa2 in the hardware mode (fxaa3d
 // with its walk one side a step 0.66 to 0.93, ddaa2 0.67 to 0.88); the list for fxaa3d and
-// ddaa2 in the model (fxaa3d 0.86 to 1.18, ddaa2 0.85 to 1.40), whose long searches gain least
-// from the segments' shared rows.
+// ddaa2 in the model (fxaa3d 0.86 to 1.18, ddaa2 0.91 to 1.19 with their searches one side a
+// step; the atrium the slower each time), whose long searches gain least from the segments'
+// shared rows.
 EdgePath cpuEdgePath(std::string_view id, Sampling sampling, const std::function<bool()>& segmentsRun) {
     const bool hardware = sampling == Sampling::Hardware;
     const bool segments =
@@ -890,11 +895,17 @@ AaPass::AaPass(std::shared_ptr<vkx::Context> ctx, std::string_view method, const
         // SSFX_GPU_BATCHED_SEARCH=0|1 forces either, for tests and measurements (docs/gpu.md).
         spec.batchedSearch = envChoice("SSFX_GPU_BATCHED_SEARCH", cpuDevice) ? 1 : 0;
     }
-    if (std::holds_alternative<aa::Fxaa3dParams>(m.params)) {
-        // fxaa3d's walk one side a step on a CPU device (fxaa3d.comp; lavapipe, the photograph:
-        // 0.70 to 0.75 of the time on its segments), both sides a step, as the paper's shader,
-        // on a GPU (unmeasured there). SSFX_GPU_SIDE_WALK=0|1 forces either (docs/gpu.md).
-        spec.sideWalk = envChoice("SSFX_GPU_SIDE_WALK", cpuDevice) ? 1 : 0;
+    {
+        // fxaa3d's walk one side a step on a CPU device, and ddaa2's search there in the model
+        // (fxaa3d.comp, ddaa2.comp): fewer reads a SIMD lane group, but more loop passes, which
+        // cost ddaa2's cheap reads of the hardware mode more than they save (lavapipe, paired
+        // runs; docs/gpu.md). Both sides a step, as the paper's shaders, on a GPU (unmeasured
+        // there). SSFX_GPU_SIDE_SEARCH=0|1 forces either (docs/gpu.md).
+        const bool fxaa3d = std::holds_alternative<aa::Fxaa3dParams>(m.params);
+        const bool ddaa2 = std::holds_alternative<aa::Ddaa2Params>(m.params);
+        if (fxaa3d || ddaa2)
+            spec.sideSearch =
+                envChoice("SSFX_GPU_SIDE_SEARCH", cpuDevice && (fxaa3d || sampling == Sampling::Model)) ? 1 : 0;
     }
     vkx::guarded("creating the GPU pass", [&] {
         m.sampler = vk::raii::Sampler(

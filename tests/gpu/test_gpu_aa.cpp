@@ -233,23 +233,27 @@ TEST(GpuModelParityLoopBudget, OneGroupOverAnEdgeDenseImageGivesTheCpuBytes) {
     expectNoValidationMessages();
 }
 
-// ddaa2's search issues a round's reads before testing them on a CPU device and one at a
-// time on a GPU (spec batchedSearch); SSFX_GPU_BATCHED_SEARCH forces either: the same bytes.
+// ddaa2's search by rounds, both sides in step, issues a round's reads before testing them on
+// a CPU device and one at a time on a GPU (spec batchedSearch); SSFX_GPU_BATCHED_SEARCH forces
+// either: the same bytes. (The rounds, not the model's one side a step on a CPU device:
+// SSFX_GPU_SIDE_SEARCH=0.)
 TEST(GpuModelParityBatchedSearch, BothSearchOrdersGiveTheCpuBytes) {
     REQUIRE_DEVICE();
+    ASSERT_EQ(setenv("SSFX_GPU_SIDE_SEARCH", "0", 1), 0);
     for (const char* mode : {"0", "1"})
         expectCpuBytesWith("SSFX_GPU_BATCHED_SEARCH", mode, {"ddaa2", "ddaa2p"},
                            {Case{"random 64x48", 64, 48}, Case{"random 37x23", 37, 23}}, 80);
+    unsetenv("SSFX_GPU_SIDE_SEARCH");
 }
 
-// fxaa3d's walk moves one side a step on a CPU device and both sides a step, as the paper's
-// shader, on a GPU (spec sideWalk); SSFX_GPU_SIDE_WALK forces either: the same bytes. The
-// inputs' hard-edged half gives walks of every length; the stripes of
-// GpuModelParityLoopBudget, every walk its ten reads a side.
-TEST(GpuModelParitySideWalk, BothWalkOrdersGiveTheCpuBytes) {
+// fxaa3d's walk moves one side a step on a CPU device, and ddaa2's search there in the model;
+// both sides a step, as the paper's shaders, elsewhere (spec sideSearch); SSFX_GPU_SIDE_SEARCH
+// forces either: the same bytes. The inputs' hard-edged half gives walks and searches of every
+// length; the stripes of GpuModelParityLoopBudget, every one its longest.
+TEST(GpuModelParitySideSearch, BothSearchOrdersGiveTheCpuBytes) {
     REQUIRE_DEVICE();
     for (const char* mode : {"0", "1"})
-        expectCpuBytesWith("SSFX_GPU_SIDE_WALK", mode, {"fxaa3d"},
+        expectCpuBytesWith("SSFX_GPU_SIDE_SEARCH", mode, {"fxaa3d", "ddaa2", "ddaa2p"},
                            {Case{"random 64x48", 64, 48}, Case{"random 37x23", 37, 23}, Case{"odd 131x67", 131, 67}},
                            90);
 }

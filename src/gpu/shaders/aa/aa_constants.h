@@ -54,7 +54,7 @@
     X(9, deviceDecode, 0)     /* model: the device's decode of the input format is exact (aa_pass.cpp) */ \
     X(10, srgb, 0)            /* texture=srgb: an sRGB view, decoded, filtered in linear, encoded back */ \
     X(11, srgbDecodeTable, 0) /* texture=srgb, model: levels from the device's decode by a table */       \
-    X(12, sideWalk, 0)        /* fxaa3d: the walk moves one side a step (aa_pass.cpp) */
+    X(12, sideSearch, 0)      /* fxaa3d's walk, ddaa2's search: one side a step (aa_pass.cpp) */
 
 // The three dispatches of the methods with an edge test (fxaa3c, fxaa3d, ddaa1, ddaa2;
 // edge_list.glsl): the first writes the luma plane and copies every pixel to the output; the

@@ -77,38 +77,78 @@ float edgeSearchOffset(int x, int y, vec2 centre, Luma3x3 n, EdgeSides s) {
     EXACT float delta2 = first2 - localAverage;
     bool done1 = abs(delta1) >= gradientScaled, done2 = abs(delta2) >= gradientScaled;
     float d1 = 1.0, d2 = 1.0;
-    for (int r = 0; r < pc.searchRounds && !(done1 && done2); ++r) {
-        const int moved = r == 0 ? 0 : kBatch * r + 2;  // pixels
-        EXACT float move = float(moved) * invAlong;
-        // Fixed trip counts (read 0 of round 0 is skipped inside), so the arrays stay in registers.
-        float read1[kBatch], read2[kBatch];
-        for (int k = 0; k < kBatch && spec_batchedSearch != 0; ++k) {
-            const int offset = r == 0 ? k + 1 : k - 1;
-            const bool read = r > 0 || k > 0;
-            read1[k] = read && !done1 ? searchDelta(x, y, a0, -(moved + offset), s.horizontal, cu, cv, -move, -offset,
-                                                    localAverage)
-                                      : 0.0;
-            read2[k] = read && !done2
-                           ? searchDelta(x, y, a0, moved + offset, s.horizontal, cu, cv, move, offset, localAverage)
-                           : 0.0;
-        }
-        for (int k = 0; k < kBatch; ++k) {
-            if (r == 0 && k == 0) continue;
-            const int offset = r == 0 ? k + 1 : k - 1;  // texel offset from the round's coordinate
-            const float position = float(roundPosition(r, r == 0 ? k - 1 : k));
-            if (!done1) {
-                delta1 = spec_batchedSearch != 0 ? read1[k]
-                                                 : searchDelta(x, y, a0, -(moved + offset), s.horizontal, cu, cv,
-                                                               -move, -offset, localAverage);
-                done1 = abs(delta1) >= gradientScaled;
-                d1 = done1 ? position : d1;
+    if (spec_sideSearch != 0) {
+        // One read a step, one side at a time (a CPU device's choice, aa_pass.cpp): each
+        // iteration reads side 1 while it searches, then side 2. Read j of a side is at
+        // position j + 2, the rounds' positions in order (round 0: 2, 3; round r: 3 r + 1 ..
+        // 3 r + 3), with its round's coordinate move and texel offset, so each side's reads,
+        // tests and end are the loop's below; but a SIMD lane group runs as many reads as its
+        // longest pixel's two sides together, where the rounds of both sides in step run six
+        // a round until its longest side ends (a simulation of the search over 8 consecutive
+        // edge pixels: the photograph 14.6 -> 7.7 reads, the atrium 23.7 -> 16.4; docs/gpu.md).
+        const int reads = pc.searchRounds > 0 ? 2 + kBatch * (pc.searchRounds - 1) : 0;  // a side's
+        int j1 = 0, j2 = 0;  // each side's next read
+        bool search1 = !done1 && reads > 0, search2 = !done2 && reads > 0;
+        while (search1 || search2) {
+            const bool side1 = search1;
+            const int j = side1 ? j1 : j2;
+            const int position = j + 2;
+            const int r = (position - 1) / kBatch;  // its round
+            const int moved = r == 0 ? 0 : kBatch * r + 2;  // pixels
+            const int offset = position - moved;             // texel offset from the round's coordinate
+            EXACT float move = float(moved) * invAlong;
+            EXACT float signedMove = side1 ? -move : move;
+            const float delta = searchDelta(x, y, a0, side1 ? -position : position, s.horizontal, cu, cv, signedMove,
+                                            side1 ? -offset : offset, localAverage);
+            const bool done = abs(delta) >= gradientScaled;
+            if (side1) {
+                delta1 = delta;
+                done1 = done;
+                d1 = done ? float(position) : d1;
+                j1 = j + 1;
+                search1 = !done && j1 < reads;
+            } else {
+                delta2 = delta;
+                done2 = done;
+                d2 = done ? float(position) : d2;
+                j2 = j + 1;
+                search2 = !done && j2 < reads;
             }
-            if (!done2) {
-                delta2 = spec_batchedSearch != 0
-                             ? read2[k]
-                             : searchDelta(x, y, a0, moved + offset, s.horizontal, cu, cv, move, offset, localAverage);
-                done2 = abs(delta2) >= gradientScaled;
-                d2 = done2 ? position : d2;
+        }
+    } else {
+        for (int r = 0; r < pc.searchRounds && !(done1 && done2); ++r) {
+            const int moved = r == 0 ? 0 : kBatch * r + 2;  // pixels
+            EXACT float move = float(moved) * invAlong;
+            // Fixed trip counts (read 0 of round 0 is skipped inside), so the arrays stay in registers.
+            float read1[kBatch], read2[kBatch];
+            for (int k = 0; k < kBatch && spec_batchedSearch != 0; ++k) {
+                const int offset = r == 0 ? k + 1 : k - 1;
+                const bool read = r > 0 || k > 0;
+                read1[k] = read && !done1 ? searchDelta(x, y, a0, -(moved + offset), s.horizontal, cu, cv, -move, -offset,
+                                                        localAverage)
+                                          : 0.0;
+                read2[k] = read && !done2
+                               ? searchDelta(x, y, a0, moved + offset, s.horizontal, cu, cv, move, offset, localAverage)
+                               : 0.0;
+            }
+            for (int k = 0; k < kBatch; ++k) {
+                if (r == 0 && k == 0) continue;
+                const int offset = r == 0 ? k + 1 : k - 1;  // texel offset from the round's coordinate
+                const float position = float(roundPosition(r, r == 0 ? k - 1 : k));
+                if (!done1) {
+                    delta1 = spec_batchedSearch != 0 ? read1[k]
+                                                     : searchDelta(x, y, a0, -(moved + offset), s.horizontal, cu, cv,
+                                                                   -move, -offset, localAverage);
+                    done1 = abs(delta1) >= gradientScaled;
+                    d1 = done1 ? position : d1;
+                }
+                if (!done2) {
+                    delta2 = spec_batchedSearch != 0
+                                 ? read2[k]
+                                 : searchDelta(x, y, a0, moved + offset, s.horizontal, cu, cv, move, offset, localAverage);
+                    done2 = abs(delta2) >= gradientScaled;
+                    d2 = done2 ? position : d2;
+                }
             }
         }
     }

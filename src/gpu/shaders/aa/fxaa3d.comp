@@ -46,7 +46,7 @@ vec3 edgeColour(int x, int y, Luma3x3 n) {
     EXACT float endP = walkLuma(s.horizontal, pU, pV, localAverage);
     bool doneN = abs(endN) >= gradientScaled;
     bool doneP = abs(endP) >= gradientScaled;
-    if (spec_sideWalk != 0) {
+    if (spec_sideSearch != 0) {
         // One side a step (a CPU device's choice, aa_pass.cpp): each iteration moves and reads
         // side N while it searches, then side P. The sides are independent (each its own
         // positions, reads and end), so each gets the same operations as in the loop below,
