@@ -368,8 +368,9 @@ void addAaCommand(CLI::App& app) {
         "GPU: --backend vulkan runs the method as a Vulkan compute pass (docs/gpu.md); with the default\n"
         "-p sampling=model the output bytes are the CPU's, -p sampling=hardware uses the device's filtering\n"
         "and arithmetic (the fast path, exact to the device's precision). -p edges=list|one-pass|segments\n"
-        "chooses how the edge-test methods run (default auto: on a CPU device the list, or the segments\n"
-        "for fxaa3c and ddaa1 with sampling=hardware; one pass on a GPU).\n"
+        "chooses how blur and the edge-test methods run (default auto: on a CPU device the segments for\n"
+        "blur, fxaa3c and ddaa1, and for fxaa3d and ddaa2 with sampling=hardware, else the list; one pass\n"
+        "on a GPU).\n"
         "  ssfx aa -m ddaa2 --backend vulkan in.png -o out.png");
     cmd->callback([opts] { run(*opts); });
 }

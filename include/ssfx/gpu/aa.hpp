@@ -60,8 +60,9 @@ Sampling parseSampling(std::string_view name);
 //! (each texel fetched 2.5 times a pixel) and one pixel an invocation (OnePass; List asks for
 //! it too); the other methods without an edge test one (OnePass), whatever is asked.
 enum class EdgePath {
-    Auto,      //!< on a CPU device (lavapipe) the segments for blur, fxaa3c and ddaa1, and for ddaa2 in
-               //!< `hardware`, else the list; one pass on a GPU; one pass wherever the list would not fit
+    Auto,      //!< on a CPU device (lavapipe) the segments for blur, fxaa3c and ddaa1, and for fxaa3d and
+               //!< ddaa2 in `hardware`, else the list; one pass on a GPU; one pass wherever the list would
+               //!< not fit
     List,      //!< three dispatches: the luma plane, an edge list, the listed pixels
     OnePass,   //!< one dispatch, every pixel's early exit in place, the lumas in a workgroup tile
     Segments,  //!< one dispatch over 8-pixel row segments, rows shared by a subgroup's lanes, its edge
